@@ -1,0 +1,21 @@
+# MPFR, MPFI, GMP, QD and libquadmath ship no CMake or pkg-config files we can
+# rely on (MPFI has neither), so find them by hand and expose appell::deps.
+include(FindPackageHandleStandardArgs)
+find_path(APPELL_MPFR_INCLUDE mpfr.h)
+find_path(APPELL_MPFI_INCLUDE mpfi.h)
+find_path(APPELL_QD_INCLUDE qd/dd_real.h)
+find_library(APPELL_MPFR_LIB mpfr)
+find_library(APPELL_MPFI_LIB mpfi)
+find_library(APPELL_GMP_LIB gmp)
+find_library(APPELL_QD_LIB qd)
+find_library(APPELL_QUADMATH_LIB NAMES quadmath libquadmath.so.0
+  HINTS /usr/lib/gcc/x86_64-linux-gnu/12 /usr/lib/x86_64-linux-gnu)
+find_package_handle_standard_args(AppellDeps REQUIRED_VARS
+  APPELL_MPFR_INCLUDE APPELL_MPFI_INCLUDE APPELL_QD_INCLUDE
+  APPELL_MPFR_LIB APPELL_MPFI_LIB APPELL_GMP_LIB APPELL_QD_LIB APPELL_QUADMATH_LIB)
+if(AppellDeps_FOUND AND NOT TARGET appell::deps)
+  add_library(appell::deps INTERFACE IMPORTED)
+  set_target_properties(appell::deps PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES "${APPELL_MPFR_INCLUDE};${APPELL_MPFI_INCLUDE};${APPELL_QD_INCLUDE}"
+    INTERFACE_LINK_LIBRARIES "${APPELL_MPFI_LIB};${APPELL_MPFR_LIB};${APPELL_GMP_LIB};${APPELL_QD_LIB};${APPELL_QUADMATH_LIB}")
+endif()

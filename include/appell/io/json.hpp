@@ -1,0 +1,64 @@
+// appell/io/json.hpp -- a JSON tree that keeps every number as its decimal text.
+//
+// Scene numbers are exact decimals (SCENES.md): a JSON number is taken by its
+// text, never through a double.  Parsing is done by nlohmann::json's SAX
+// interface (which hands over the text of each number); duplicate keys are an error.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace appell {
+
+/// Bad input, naming the field (exit status 2 of the `appell` tool).
+struct input_error : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+struct json_value {
+  enum class kind { null, boolean, number, string, array, object };
+  kind type = kind::null;
+  bool boolean = false;
+  std::string text;  ///< a number's decimal text, or a string
+  std::vector<json_value> items;
+  std::vector<std::pair<std::string, json_value>> members;
+
+  const json_value* find(const std::string& key) const {
+    for (const auto& [k, v] : members)
+      if (k == key) return &v;
+    return nullptr;
+  }
+};
+
+/// Parses JSON text; throws input_error with the position of a syntax error.
+json_value parse_json(const std::string& text);
+
+/// Reads an object field by field and rejects what it was not asked for.
+class object_reader {
+ public:
+  object_reader(const json_value& v, std::string path);
+  /// A required number (JSON number or decimal string): its exact decimal text.
+  std::string number(const std::string& key);
+  /// A required list of exactly n numbers.
+  std::vector<std::string> numbers(const std::string& key, std::size_t n);
+  std::string string(const std::string& key);
+  object_reader object(const std::string& key);
+  bool has(const std::string& key) const { return v_->find(key) != nullptr; }
+  const json_value& raw(const std::string& key);
+  /// Throws input_error naming the first key that was never read.
+  void finish() const;
+  std::string path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+ private:
+  const json_value& required(const std::string& key);
+  const json_value* v_;
+  std::string path_;
+  std::vector<std::string> used_;
+};
+
+/// The decimal text of a number node (JSON number or string); throws input_error.
+std::string decimal_text(const json_value& v, const std::string& path);
+
+}  // namespace appell

@@ -1,0 +1,147 @@
+// appell/io/scene.hpp -- scene files (../shared/SCENES.md) and their evaluation.
+//
+// read_scene() validates a scene once, on the exact decimals, independently of
+// the scalar (so "A + B >= C" is decided exactly, not after rounding).
+// evaluate<T>() then runs the model in scalar T; format_json<T>() prints it.
+// evaluate/format are instantiated once per standard scalar in src/instantiate/.
+#pragma once
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "appell/io/json.hpp"
+#include "appell/scalar/decimal.hpp"
+#include "appell/scalar/format.hpp"
+#include "appell/scenes/euler_body.hpp"
+
+namespace appell {
+
+struct euler_body_input {
+  std::vector<std::string> inertia;  // A, B, C
+  std::vector<std::string> torque;   // L, M, N
+  std::vector<std::string> omega;    // p, q, r
+};
+
+struct scene_input {
+  std::string model;
+  std::variant<euler_body_input> input;
+};
+
+/// Validates a parsed scene; throws input_error naming the field.
+scene_input read_scene(const json_value& root);
+/// Reads and validates a scene file; throws input_error.
+scene_input read_scene_file(const std::string& path);
+
+template <Scalar T>
+struct named_result {
+  std::string name;
+  std::vector<T> values;
+  bool is_vector = false;
+};
+
+template <Scalar T>
+struct evaluation {
+  std::vector<named_result<T>> results;
+  std::vector<named_result<T>> checks;
+  const named_result<T>& result(const std::string& name) const {
+    for (const auto& r : results)
+      if (r.name == name) return r;
+    throw std::out_of_range("no result named " + name);
+  }
+};
+
+namespace detail {
+template <Scalar T>
+vec3<T> vec3_from_decimals(const std::vector<std::string>& d) {
+  return vec3<T>(from_decimal<T>(d[0]), from_decimal<T>(d[1]), from_decimal<T>(d[2]));
+}
+template <Scalar T>
+named_result<T> vector_result(std::string name, const vec3<T>& v) {
+  return {std::move(name), {v(0), v(1), v(2)}, true};
+}
+template <Scalar T>
+named_result<T> scalar_result(std::string name, const T& v) {
+  return {std::move(name), {v}, false};
+}
+
+template <Scalar T>
+evaluation<T> evaluate_model(const euler_body_input& in) {
+  euler_body<T> body{vec3_from_decimals<T>(in.inertia), vec3_from_decimals<T>(in.torque)};
+  const vec3<T> omega = vec3_from_decimals<T>(in.omega);
+  const vec3<T> omega_dot = euler_omega_dot(body, omega);
+  evaluation<T> e;
+  e.results.push_back(vector_result("omega_dot", omega_dot));
+  e.checks.push_back(scalar_result("power_balance", euler_power_residual(body, omega, omega_dot)));
+  return e;
+}
+}  // namespace detail
+
+/// The scene's results in scalar T (mpfr/mpfi at the current mp precision).
+template <Scalar T>
+evaluation<T> evaluate(const scene_input& scene) {
+  return std::visit([](const auto& in) { return detail::evaluate_model<T>(in); }, scene.input);
+}
+
+/// The `appell eval` JSON document (SCENES.md).
+template <Scalar T>
+std::string format_json(const scene_input& scene, const evaluation<T>& e) {
+  auto number = [](const T& x) {
+    if constexpr (scalar_traits<T>::is_interval)
+      return "{\"lo\": \"" + lower_string(x) + "\", \"hi\": \"" + upper_string(x) + "\"}";
+    else
+      return "{\"value\": \"" + to_string(x) + "\"}";
+  };
+  auto group = [&](const std::vector<named_result<T>>& items) {
+    std::string s = "{";
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      s += (i ? ",\n    \"" : "\n    \"") + items[i].name + "\": ";
+      if (items[i].is_vector) {
+        s += "[";
+        for (std::size_t j = 0; j < items[i].values.size(); ++j) s += (j ? ", " : "") + number(items[i].values[j]);
+        s += "]";
+      } else {
+        s += number(items[i].values[0]);
+      }
+    }
+    return s + "}";
+  };
+  return "{\"model\": \"" + scene.model + "\", \"scalar\": \"" + scalar_traits<T>::name +
+         "\", \"bits\": " + std::to_string(scalar_traits<T>::precision_bits()) +
+         ", \"rigorous\": " + (scalar_traits<T>::is_rigorous ? "true" : "false") +
+         ",\n  \"results\": " + group(e.results) + ",\n  \"checks\": " + group(e.checks) + "}\n";
+}
+
+/// A human-readable rendering of the same numbers.
+template <Scalar T>
+std::string format_text(const scene_input& scene, const evaluation<T>& e) {
+  std::string s = scene.model + " in " + scalar_traits<T>::name + " (" +
+                  std::to_string(scalar_traits<T>::precision_bits()) + " bits, " +
+                  (scalar_traits<T>::is_rigorous ? "rigorous enclosures" : "point values") + ")\n";
+  auto lines = [&](const std::vector<named_result<T>>& items, const char* heading) {
+    s += heading;
+    for (const auto& r : items)
+      for (std::size_t j = 0; j < r.values.size(); ++j)
+        s += "  " + r.name + (r.is_vector ? "[" + std::to_string(j) + "]" : "") + " = " +
+             to_string(r.values[j]) + "\n";
+  };
+  lines(e.results, "results:\n");
+  lines(e.checks, "checks (0 if consistent):\n");
+  return s;
+}
+
+// Instantiated once per standard scalar in src/instantiate/*.cpp.
+#define APPELL_EXTERN_SCENE(T)                                                         \
+  extern template evaluation<T> evaluate<T>(const scene_input&);                       \
+  extern template std::string format_json<T>(const scene_input&, const evaluation<T>&); \
+  extern template std::string format_text<T>(const scene_input&, const evaluation<T>&);
+APPELL_EXTERN_SCENE(double)
+APPELL_EXTERN_SCENE(long double)
+APPELL_EXTERN_SCENE(dd)
+APPELL_EXTERN_SCENE(float128)
+APPELL_EXTERN_SCENE(mpfr)
+APPELL_EXTERN_SCENE(interval)
+APPELL_EXTERN_SCENE(mpfi)
+#undef APPELL_EXTERN_SCENE
+
+}  // namespace appell

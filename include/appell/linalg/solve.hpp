@@ -1,0 +1,174 @@
+// appell/linalg/solve.hpp -- linear solves for every scalar.
+//
+//   solve_spd(A, b)   A symmetric positive definite (the mass matrix M of
+//                     Appell's equations M u' + b = Q).  Point types: Cholesky.
+//   solve(A, b)       general A.  Point types: LU with partial pivoting.
+// Interval types go, for both, to verified_solve: Krawczyk's operator with a
+// midpoint-inverse preconditioner and epsilon-inflation (Rump 1983).  With
+// R ~ mid(A)^-1, x~ ~ R mid(b), z = R (b - A x~) and C = I - R A (both in
+// interval arithmetic), if  z + C Y  lies in the interior of Y then every
+// A in [A] is nonsingular and every solution of A x = b, b in [b], lies in
+// x~ + (z + C Y).  Eigen never pivots on interval values here: R and x~ are
+// computed on midpoints, in the bound type.  When the inclusion cannot be
+// established (a singular matrix in [A], or one too ill-conditioned for the
+// precision) the solve refuses with certification_error; it never returns a
+// box it has not proved.
+#pragma once
+
+#include <Eigen/Dense>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "appell/scalar/eigen.hpp"
+
+namespace appell {
+
+/// A result that could not be certified (exit status 3 of the `appell` tool).
+struct certification_error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+namespace detail {
+
+template <class I>
+I thin(const bound_t<I>& p) {
+  if constexpr (std::is_same_v<I, interval>) return interval(p);
+  else return mpfi_from_bounds(p, p);
+}
+
+template <class I>
+I intersect(const I& a, const I& b) {
+  if constexpr (std::is_same_v<I, interval>) {
+    return boost::numeric::intersect(a, b);
+  } else {
+    I r;
+    mpfi_intersect(r.backend().data(), a.backend().data(), b.backend().data());
+    return r;
+  }
+}
+
+// a lies in the interior of b.
+template <class I>
+bool in_interior(const I& a, const I& b) {
+  return lower(b) < lower(a) && upper(a) < upper(b);
+}
+
+template <class M>
+void check_square(const M& A, Eigen::Index rhs_rows) {
+  if (A.rows() != A.cols() || A.rows() != rhs_rows)
+    throw std::invalid_argument("solve: matrix is " + std::to_string(A.rows()) + "x" +
+                                std::to_string(A.cols()) + ", right-hand side has " +
+                                std::to_string(rhs_rows) + " rows");
+}
+
+}  // namespace detail
+
+/// Every solution of A x = b for A in [A], b in [b], enclosed; or certification_error.
+template <Scalar I>
+  requires(scalar_traits<I>::is_interval)
+vector_t<I> verified_solve(const matrix_t<I>& A, const vector_t<I>& b) {
+  using P = bound_t<I>;
+  detail::check_square(A, b.rows());
+  const Eigen::Index n = A.rows();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (!is_finite(b(i))) throw certification_error("verified solve: right-hand side is not finite");
+    for (Eigen::Index j = 0; j < n; ++j)
+      if (!is_finite(A(i, j))) throw certification_error("verified solve: matrix is not finite");
+  }
+  // Midpoint system, in the bound type.
+  matrix_t<P> Am(n, n);
+  vector_t<P> bm(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    bm(i) = mid(b(i));
+    for (Eigen::Index j = 0; j < n; ++j) Am(i, j) = mid(A(i, j));
+  }
+  Eigen::PartialPivLU<matrix_t<P>> lu(Am);
+  using std::abs;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (!(abs(lu.matrixLU()(i, i)) > 0))
+      throw certification_error("verified solve: the midpoint matrix is singular");
+  const matrix_t<P> R = lu.inverse();
+  if (!R.allFinite()) throw certification_error("verified solve: the midpoint matrix is singular");
+  vector_t<P> xt = R * bm;
+  xt += R * (bm - Am * xt);  // one refinement step: a better centre, a thinner box
+
+  // Krawczyk operator in interval arithmetic.
+  const matrix_t<I> RI = R.unaryExpr([](const P& p) { return detail::thin<I>(p); });
+  const vector_t<I> xI = xt.unaryExpr([](const P& p) { return detail::thin<I>(p); });
+  const vector_t<I> z = RI * (b - A * xI);
+  matrix_t<I> C = -(RI * A);
+  for (Eigen::Index i = 0; i < n; ++i) C(i, i) += I(1);
+
+  const I inflate = scalar_traits<I>::from_bounds(P(-0.1), P(0.1));  // Rump's epsilon-inflation
+  const I tiny = scalar_traits<I>::from_bounds(-std::numeric_limits<double>::min(),
+                                               std::numeric_limits<double>::min());
+  vector_t<I> Y = z;
+  for (int iteration = 0; iteration < 15; ++iteration) {
+    for (Eigen::Index i = 0; i < n; ++i) Y(i) = Y(i) + inflate * Y(i) + tiny;
+    vector_t<I> Ynew = z + C * Y;
+    bool inside = true;
+    for (Eigen::Index i = 0; i < n && inside; ++i) inside = detail::in_interior(Ynew(i), Y(i));
+    if (inside) {
+      // Proved.  A few contractions Y <- (z + C Y) /\ Y only tighten the box.
+      for (int k = 0; k < 3; ++k) {
+        vector_t<I> Yk = z + C * Ynew;
+        for (Eigen::Index i = 0; i < n; ++i) Ynew(i) = detail::intersect(Yk(i), Ynew(i));
+      }
+      return xI + Ynew;
+    }
+    Y = Ynew;
+  }
+  // Refuse, with an estimate of why.
+  P cond = P(0);
+  {
+    using std::abs;
+    P norm_a = P(0), norm_r = P(0);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      P ra = P(0), rr = P(0);
+      for (Eigen::Index j = 0; j < n; ++j) {
+        ra += abs(Am(i, j));
+        rr += abs(R(i, j));
+      }
+      if (ra > norm_a) norm_a = ra;
+      if (rr > norm_r) norm_r = rr;
+    }
+    cond = norm_a * norm_r;
+  }
+  std::ostringstream why;
+  why << "verified solve: cannot certify the " << n << "x" << n
+      << " system (the interval matrix may contain a singular one; estimated condition number "
+      << static_cast<double>(cond) << " at " << scalar_traits<I>::precision_bits() << " bits)";
+  throw certification_error(why.str());
+}
+
+/// A x = b for a symmetric positive definite A.
+template <Scalar T>
+vector_t<T> solve_spd(const matrix_t<T>& A, const vector_t<T>& b) {
+  if constexpr (scalar_traits<T>::is_interval) {
+    return verified_solve(A, b);
+  } else {
+    detail::check_square(A, b.rows());
+    Eigen::LLT<matrix_t<T>> llt(A);
+    if (llt.info() != Eigen::Success)
+      throw certification_error("Cholesky: the matrix is not positive definite");
+    return llt.solve(b);
+  }
+}
+
+/// A x = b for a general square A.
+template <Scalar T>
+vector_t<T> solve(const matrix_t<T>& A, const vector_t<T>& b) {
+  if constexpr (scalar_traits<T>::is_interval) {
+    return verified_solve(A, b);
+  } else {
+    detail::check_square(A, b.rows());
+    Eigen::PartialPivLU<matrix_t<T>> lu(A);
+    using std::abs;
+    for (Eigen::Index i = 0; i < A.rows(); ++i)
+      if (!(abs(lu.matrixLU()(i, i)) > 0)) throw certification_error("LU: the matrix is singular");
+    return lu.solve(b);
+  }
+}
+
+}  // namespace appell

@@ -1,0 +1,235 @@
+// appell/scalar/traits.hpp -- one trait per scalar: what library code may ask
+// of a number without knowing its type.
+//
+//   scalar_traits<T>::name          CLI name ("double", "interval", ...)
+//   is_interval / is_rigorous       whether T is a set that encloses the truth
+//   bound_type                      type of lower()/upper()/mid() (double for
+//                                   interval, mpfr for mpfi, T for point types)
+//   lower upper mid width           width rounded up; 0 for point types
+//   hull                            smallest T holding both (point: undefined -> interval only)
+//   precision_bits()                significand bits of a value made now
+//   to_mpfr(x, lo, hi)              the bounds of x, exactly, as MPFR numbers
+//   from_mpfr(v)                    v rounded to nearest (point) / enclosed (interval)
+//   from_mpfr_bounds(lo, hi)        interval types: the enclosure of [lo, hi]
+//
+// Library code never compares interval values with < or ==: MPFI aborts the
+// process on an undecided comparison.  It uses the predicates at the end of
+// this file (certainly_positive, possibly_zero, ...), which are decided on the
+// bounds and therefore safe for every scalar.
+#pragma once
+
+#include <mpfr.h>
+
+#include <string>
+#include <type_traits>
+
+#include "appell/scalar/types.hpp"
+
+namespace appell {
+
+template <class T>
+struct scalar_traits;  // specialised below for the seven standard scalars
+
+template <class T>
+concept Scalar = requires { scalar_traits<T>::name; };
+
+/// An owned mpfr_t (RAII), used at the seams to MPFR.
+class mpfr_value {
+ public:
+  explicit mpfr_value(mpfr_prec_t prec = 53) { mpfr_init2(v_, prec); }
+  ~mpfr_value() { mpfr_clear(v_); }
+  mpfr_value(const mpfr_value& o) {
+    mpfr_init2(v_, mpfr_get_prec(o.v_));
+    mpfr_set(v_, o.v_, MPFR_RNDN);
+  }
+  mpfr_value& operator=(const mpfr_value& o) {
+    if (this != &o) {
+      mpfr_set_prec(v_, mpfr_get_prec(o.v_));
+      mpfr_set(v_, o.v_, MPFR_RNDN);
+    }
+    return *this;
+  }
+  mpfr_ptr get() { return v_; }
+  mpfr_srcptr get() const { return v_; }
+  operator mpfr_ptr() { return v_; }
+  operator mpfr_srcptr() const { return v_; }
+
+ private:
+  mpfr_t v_;
+};
+
+// --- exact bridges to MPFR (src/scalar/decimal.cpp) -------------------------
+// to_mpfr_exact: sets `out` (its precision adjusted as needed) to x exactly.
+void to_mpfr_exact(double x, mpfr_value& out);
+void to_mpfr_exact(long double x, mpfr_value& out);
+void to_mpfr_exact(const dd& x, mpfr_value& out);
+void to_mpfr_exact(const float128& x, mpfr_value& out);
+void to_mpfr_exact(const mpfr& x, mpfr_value& out);
+// round_to_*: v rounded to the format in direction rnd (IEEE subnormals honoured).
+double round_to_double(mpfr_srcptr v, mpfr_rnd_t rnd);
+long double round_to_long_double(mpfr_srcptr v, mpfr_rnd_t rnd);
+dd round_to_dd(mpfr_srcptr v, mpfr_rnd_t rnd);
+float128 round_to_float128(mpfr_srcptr v, mpfr_rnd_t rnd);
+mpfr round_to_mpfr(mpfr_srcptr v, mpfr_rnd_t rnd);  // at the current mp precision
+
+// --- point types ------------------------------------------------------------
+template <class T>
+struct point_traits_base {
+  static constexpr bool is_interval = false;
+  static constexpr bool is_rigorous = false;
+  using bound_type = T;
+  static T lower(const T& x) { return x; }
+  static T upper(const T& x) { return x; }
+  static T mid(const T& x) { return x; }
+  static T width(const T&) { return T(0); }
+  static void to_mpfr(const T& x, mpfr_value& lo, mpfr_value& hi) {
+    to_mpfr_exact(x, lo);
+    hi = lo;
+  }
+};
+
+template <>
+struct scalar_traits<double> : point_traits_base<double> {
+  static constexpr const char* name = "double";
+  static unsigned precision_bits() { return 53; }
+  static double from_mpfr(mpfr_srcptr v) { return round_to_double(v, MPFR_RNDN); }
+};
+
+template <>
+struct scalar_traits<long double> : point_traits_base<long double> {
+  static constexpr const char* name = "long-double";
+  static unsigned precision_bits() { return 64; }
+  static long double from_mpfr(mpfr_srcptr v) { return round_to_long_double(v, MPFR_RNDN); }
+};
+
+template <>
+struct scalar_traits<dd> : point_traits_base<dd> {
+  static constexpr const char* name = "dd";
+  static unsigned precision_bits() { return 106; }  // hi + lo, each 53 bits
+  static dd from_mpfr(mpfr_srcptr v) { return round_to_dd(v, MPFR_RNDN); }
+};
+
+template <>
+struct scalar_traits<float128> : point_traits_base<float128> {
+  static constexpr const char* name = "float128";
+  static unsigned precision_bits() { return 113; }
+  static float128 from_mpfr(mpfr_srcptr v) { return round_to_float128(v, MPFR_RNDN); }
+};
+
+template <>
+struct scalar_traits<mpfr> : point_traits_base<mpfr> {
+  static constexpr const char* name = "mpfr";
+  static unsigned precision_bits() { return mp_precision_bits(); }
+  static mpfr from_mpfr(mpfr_srcptr v) { return round_to_mpfr(v, MPFR_RNDN); }
+};
+
+// --- interval types ---------------------------------------------------------
+template <>
+struct scalar_traits<interval> {
+  static constexpr const char* name = "interval";
+  static constexpr bool is_interval = true;
+  static constexpr bool is_rigorous = true;
+  using bound_type = double;
+  static unsigned precision_bits() { return 53; }
+  static double lower(const interval& x) { return x.lower(); }
+  static double upper(const interval& x) { return x.upper(); }
+  static double mid(const interval& x) { return boost::numeric::median(x); }
+  static double width(const interval& x) { return boost::numeric::width(x); }  // rounded up
+  static interval hull(const interval& a, const interval& b) { return boost::numeric::hull(a, b); }
+  static interval from_bounds(double lo, double hi) { return interval(lo, hi); }
+  static void to_mpfr(const interval& x, mpfr_value& lo, mpfr_value& hi) {
+    to_mpfr_exact(x.lower(), lo);
+    to_mpfr_exact(x.upper(), hi);
+  }
+  static interval from_mpfr(mpfr_srcptr v) {
+    return interval(round_to_double(v, MPFR_RNDD), round_to_double(v, MPFR_RNDU));
+  }
+  static interval from_mpfr_bounds(mpfr_srcptr lo, mpfr_srcptr hi) {
+    return interval(round_to_double(lo, MPFR_RNDD), round_to_double(hi, MPFR_RNDU));
+  }
+};
+
+/// The bounds of an mpfi value as mpfr numbers at the value's own precision.
+mpfr mpfi_lower(const mpfi& x);
+mpfr mpfi_upper(const mpfi& x);
+mpfr mpfi_mid(const mpfi& x);
+mpfr mpfi_width(const mpfi& x);  // rounded up
+mpfi mpfi_from_bounds(const mpfr& lo, const mpfr& hi);
+mpfi mpfi_from_mpfr_bounds(mpfr_srcptr lo, mpfr_srcptr hi);
+
+template <>
+struct scalar_traits<mpfi> {
+  static constexpr const char* name = "mpfi";
+  static constexpr bool is_interval = true;
+  static constexpr bool is_rigorous = true;
+  using bound_type = mpfr;
+  static unsigned precision_bits() { return mp_precision_bits(); }
+  static mpfr lower(const mpfi& x) { return mpfi_lower(x); }
+  static mpfr upper(const mpfi& x) { return mpfi_upper(x); }
+  static mpfr mid(const mpfi& x) { return mpfi_mid(x); }
+  static mpfr width(const mpfi& x) { return mpfi_width(x); }
+  static mpfi hull(const mpfi& a, const mpfi& b) {
+    mpfi r;
+    mpfi_union(r.backend().data(), a.backend().data(), b.backend().data());
+    return r;
+  }
+  static mpfi from_bounds(const mpfr& lo, const mpfr& hi) { return mpfi_from_bounds(lo, hi); }
+  static void to_mpfr(const mpfi& x, mpfr_value& lo, mpfr_value& hi) {
+    mpfr_set_prec(lo, mpfi_get_prec(x.backend().data()));
+    mpfr_set_prec(hi, mpfi_get_prec(x.backend().data()));
+    mpfi_get_left(lo, x.backend().data());   // exact: same precision
+    mpfi_get_right(hi, x.backend().data());
+  }
+  static mpfi from_mpfr(mpfr_srcptr v) { return mpfi_from_mpfr_bounds(v, v); }
+  static mpfi from_mpfr_bounds(mpfr_srcptr lo, mpfr_srcptr hi) {
+    return mpfi_from_mpfr_bounds(lo, hi);
+  }
+};
+
+template <class T>
+inline constexpr bool is_interval_v = scalar_traits<T>::is_interval;
+
+template <class T>
+using bound_t = typename scalar_traits<T>::bound_type;
+
+// --- accessors as free functions --------------------------------------------
+template <Scalar T> bound_t<T> lower(const T& x) { return scalar_traits<T>::lower(x); }
+template <Scalar T> bound_t<T> upper(const T& x) { return scalar_traits<T>::upper(x); }
+template <Scalar T> bound_t<T> mid(const T& x) { return scalar_traits<T>::mid(x); }
+template <Scalar T> bound_t<T> width(const T& x) { return scalar_traits<T>::width(x); }
+
+// --- predicates: decided on bounds, safe for every scalar ---------------------
+template <Scalar T> bool certainly_positive(const T& x) { return lower(x) > 0; }
+template <Scalar T> bool certainly_negative(const T& x) { return upper(x) < 0; }
+template <Scalar T> bool certainly_nonnegative(const T& x) { return lower(x) >= 0; }
+template <Scalar T> bool certainly_nonpositive(const T& x) { return upper(x) <= 0; }
+template <Scalar T> bool possibly_zero(const T& x) { return lower(x) <= 0 && upper(x) >= 0; }
+template <Scalar T> bool possibly_positive(const T& x) { return upper(x) > 0; }
+template <Scalar T> bool possibly_negative(const T& x) { return lower(x) < 0; }
+template <Scalar T> bool certainly_less(const T& a, const T& b) { return upper(a) < lower(b); }
+template <Scalar T> bool certainly_less_equal(const T& a, const T& b) { return upper(a) <= lower(b); }
+template <Scalar T> bool possibly_less(const T& a, const T& b) { return lower(a) < upper(b); }
+/// Both bounds finite (point types: the value is finite).
+template <Scalar T> bool is_finite(const T& x) {
+  using std::isfinite;
+  if constexpr (std::is_same_v<T, dd>) return x.isfinite();
+  else if constexpr (std::is_same_v<T, mpfi>) {
+    return mpfi_bounded_p(x.backend().data()) != 0;
+  } else if constexpr (std::is_same_v<bound_t<T>, mpfr>) {
+    return mpfr_number_p(lower(x).backend().data()) && mpfr_number_p(upper(x).backend().data());
+  } else if constexpr (std::is_same_v<bound_t<T>, float128>) {
+    return boost::multiprecision::isfinite(lower(x)) && boost::multiprecision::isfinite(upper(x));
+  } else {
+    return isfinite(lower(x)) && isfinite(upper(x));
+  }
+}
+
+/// x contains the real number v (given exactly as an MPFR value).
+template <Scalar T>
+bool contains(const T& x, mpfr_srcptr v) {
+  mpfr_value lo, hi;
+  scalar_traits<T>::to_mpfr(x, lo, hi);
+  return mpfr_lessequal_p(lo, v) && mpfr_lessequal_p(v, hi);
+}
+
+}  // namespace appell

@@ -1,0 +1,54 @@
+// appell/scalar/types.hpp -- the seven standard scalars of appell, by name.
+//
+//  CLI name     C++ type                  kind
+//  double       double                    point, 53 bits
+//  long-double  long double               point, 64 bits (x87)
+//  dd           dd_real (QD)              point, ~106 bits (double-double)
+//  float128     appell::float128          point, 113 bits (libquadmath)
+//  mpfr         appell::mpfr              point, bits chosen at run time
+//  interval     appell::interval          rigorous, 53-bit bounds
+//  mpfi         appell::mpfi              rigorous, bits chosen at run time
+//
+// The Boost.Multiprecision types are used without expression templates
+// (et_off): Eigen's own expression templates do not compose with Boost's.
+#pragma once
+
+#include <boost/multiprecision/float128.hpp>
+#include <boost/multiprecision/mpfr.hpp>
+#include <boost/multiprecision/mpfi.hpp>
+#include <qd/dd_real.h>
+
+#include "appell/scalar/interval.hpp"
+
+namespace appell {
+
+using float128 = boost::multiprecision::float128;
+using mpfr = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>,
+                                           boost::multiprecision::et_off>;
+using mpfi = boost::multiprecision::number<boost::multiprecision::mpfi_float_backend<0>,
+                                           boost::multiprecision::et_off>;
+using dd = ::dd_real;
+
+/// Sets the working precision of `mpfr` and `mpfi` (for values created after the
+/// call, on this thread and others).  Boost 1.74 counts precision in decimal
+/// digits; the precision actually set is the smallest one of at least `bits`
+/// bits, and is returned.
+unsigned set_mp_precision_bits(unsigned bits);
+/// The precision, in bits, that new `mpfr` and `mpfi` values get.
+unsigned mp_precision_bits();
+
+/// RAII: sets the mp precision for a scope and restores it.
+class mp_precision_scope {
+ public:
+  explicit mp_precision_scope(unsigned bits);
+  ~mp_precision_scope();
+  mp_precision_scope(const mp_precision_scope&) = delete;
+  mp_precision_scope& operator=(const mp_precision_scope&) = delete;
+  unsigned bits() const { return bits_; }
+
+ private:
+  unsigned saved_digits10_;
+  unsigned bits_;
+};
+
+}  // namespace appell

@@ -1,0 +1,43 @@
+// appell/scenes/euler_body.hpp -- paper sec. 3: Euler's equations.
+//
+// A rigid body turns about a fixed point that is its centre of mass; body
+// axes are principal, with moments A, B, C; speeds p, q, r are the components
+// of the angular velocity on those axes; L, M, N the applied torque.
+// Appell's S = 1/2 (A p'^2 + B q'^2 + C r'^2) + (C - B) q r p' + (A - C) r p q'
+//            + (B - A) p q r' + ..., and dS/dp' = L etc. give
+//   A p' = (B - C) q r + L,   B q' = (C - A) r p + M,   C r' = (A - B) p q + N.
+// Written directly here; the generic Gibbs-Appell path reproduces it.
+#pragma once
+
+#include "appell/scalar/eigen.hpp"
+
+namespace appell {
+
+template <Scalar T>
+struct euler_body {
+  vec3<T> inertia;  ///< principal moments A, B, C
+  vec3<T> torque;   ///< L, M, N on the body axes
+};
+
+/// (p', q', r') at angular velocity omega = (p, q, r).
+template <Scalar T>
+vec3<T> euler_omega_dot(const euler_body<T>& body, const vec3<T>& omega) {
+  const T &A = body.inertia(0), &B = body.inertia(1), &C = body.inertia(2);
+  const T &p = omega(0), &q = omega(1), &r = omega(2);
+  return vec3<T>(((B - C) * q * r + body.torque(0)) / A,
+                 ((C - A) * r * p + body.torque(1)) / B,
+                 ((A - B) * p * q + body.torque(2)) / C);
+}
+
+/// The power balance dT/dt - omega . torque = omega . (I omega') - omega . torque,
+/// which vanishes on every motion (the gyroscopic couple does no work): an
+/// independent check of omega', 0 (point) or an interval holding 0.
+template <Scalar T>
+T euler_power_residual(const euler_body<T>& body, const vec3<T>& omega, const vec3<T>& omega_dot) {
+  T residual = T(0);
+  for (int i = 0; i < 3; ++i)
+    residual += omega(i) * (body.inertia(i) * omega_dot(i) - body.torque(i));
+  return residual;
+}
+
+}  // namespace appell

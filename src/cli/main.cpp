@@ -1,0 +1,113 @@
+// appell -- the command-line tool.  `appell eval SCENE [--scalar NAME] [--bits N]
+// [--format json|text]` evaluates a scene (../shared/SCENES.md).
+// Exit status: 0 done; 1 usage; 2 bad input; 3 a result could not be certified.
+// Output is assembled in full before anything is written to stdout.
+#include <cstring>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "appell/io/scene.hpp"
+#include "appell/linalg/solve.hpp"
+
+namespace {
+
+constexpr const char* usage_text =
+    "usage: appell eval SCENE [--scalar NAME] [--bits N] [--format json|text]\n"
+    "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
+    "  --bits N: precision of mpfr and mpfi (default 256)\n";
+
+struct options {
+  std::string scene;
+  std::string scalar = "double";
+  std::optional<unsigned> bits;
+  std::string format = "json";
+};
+
+int usage(const std::string& why) {
+  std::cerr << "appell: " << why << "\n" << usage_text;
+  return 1;
+}
+
+template <class T>
+std::string run(const appell::scene_input& scene, const std::string& format) {
+  const appell::evaluation<T> e = appell::evaluate<T>(scene);
+  return format == "json" ? appell::format_json<T>(scene, e) : appell::format_text<T>(scene, e);
+}
+
+std::string dispatch(const appell::scene_input& scene, const options& o) {
+  using namespace appell;
+  if (o.scalar == "double") return run<double>(scene, o.format);
+  if (o.scalar == "long-double") return run<long double>(scene, o.format);
+  if (o.scalar == "dd") return run<dd>(scene, o.format);
+  if (o.scalar == "float128") return run<float128>(scene, o.format);
+  if (o.scalar == "mpfr") return run<mpfr>(scene, o.format);
+  if (o.scalar == "interval") return run<interval>(scene, o.format);
+  if (o.scalar == "mpfi") return run<mpfi>(scene, o.format);
+  throw appell::input_error("--scalar: unknown scalar '" + o.scalar + "'");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) return usage("no command");
+  const std::string command = argv[1];
+  if (command == "--help" || command == "-h" || command == "help") {
+    std::cout << usage_text;
+    return 0;
+  }
+  if (command != "eval") return usage("unknown command '" + command + "'");
+  options o;
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&](const char* name) -> std::string {
+      if (i + 1 >= argc) throw appell::input_error(std::string(name) + ": missing value");
+      return argv[++i];
+    };
+    try {
+      if (a == "--scalar") o.scalar = value("--scalar");
+      else if (a == "--format") o.format = value("--format");
+      else if (a == "--bits") {
+        const std::string b = value("--bits");
+        if (b.empty() || b.find_first_not_of("0123456789") != std::string::npos || b.size() > 6 ||
+            std::stoul(b) < 2 || std::stoul(b) > 100000)
+          throw appell::input_error("--bits: expected an integer from 2 to 100000, got '" + b + "'");
+        o.bits = static_cast<unsigned>(std::stoul(b));
+      } else if (!a.empty() && a[0] == '-') return usage("unknown option '" + a + "'");
+      else if (o.scene.empty()) o.scene = a;
+      else return usage("more than one scene given");
+    } catch (const appell::input_error& e) {
+      std::cerr << "appell: " << e.what() << "\n";
+      return 2;
+    }
+  }
+  if (o.scene.empty()) return usage("no scene given");
+  try {
+    if (o.format != "json" && o.format != "text")
+      throw appell::input_error("--format: expected json or text, got '" + o.format + "'");
+    if (o.bits && o.scalar != "mpfr" && o.scalar != "mpfi")
+      throw appell::input_error("--bits: applies to mpfr and mpfi only (" + o.scalar +
+                                " has a fixed precision)");
+    appell::set_mp_precision_bits(o.bits.value_or(256));
+    const appell::scene_input scene = appell::read_scene_file(o.scene);
+    const std::string out = dispatch(scene, o);
+    std::cout << out;
+    std::cout.flush();
+    return std::cout ? 0 : 1;
+  } catch (const appell::input_error& e) {
+    std::cerr << "appell: " << e.what() << "\n";
+    return 2;
+  } catch (const appell::parse_error& e) {
+    std::cerr << "appell: " << e.what() << "\n";
+    return 2;
+  } catch (const appell::certification_error& e) {
+    std::cerr << "appell: cannot certify: " << e.what() << "\n";
+    return 3;
+  } catch (const appell::domain_error& e) {
+    std::cerr << "appell: cannot certify: " << e.what() << "\n";
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "appell: internal error: " << e.what() << "\n";
+    return 4;
+  }
+}

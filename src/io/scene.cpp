@@ -1,0 +1,58 @@
+// Scene validation on exact decimals (SCENES.md).
+#include "appell/io/scene.hpp"
+
+#include <fstream>
+#include <sstream>
+
+namespace appell {
+namespace {
+
+euler_body_input read_euler_body(object_reader& scene) {
+  euler_body_input in;
+  object_reader inertia = scene.object("inertia");
+  in.inertia = {inertia.number("A"), inertia.number("B"), inertia.number("C")};
+  inertia.finish();
+  const char* names[3] = {"A", "B", "C"};
+  for (int i = 0; i < 3; ++i)
+    if (decimal_sign_of_sum({{1, in.inertia[i]}}) <= 0)
+      throw input_error(inertia.path(names[i]) + ": a principal moment must be positive, got " +
+                        in.inertia[i]);
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;  // moment k must not exceed the sum of the others
+    if (decimal_sign_of_sum({{1, in.inertia[i]}, {1, in.inertia[j]}, {-1, in.inertia[k]}}) < 0)
+      throw input_error(inertia.path(names[k]) + ": violates the triangle inequality " + names[i] +
+                        " + " + names[j] + " >= " + names[k] + " (" + in.inertia[i] + " + " +
+                        in.inertia[j] + " < " + in.inertia[k] + ")");
+  }
+  in.torque = scene.has("torque") ? scene.numbers("torque", 3)
+                                  : std::vector<std::string>{"0", "0", "0"};
+  object_reader state = scene.object("state");
+  in.omega = state.numbers("omega", 3);
+  state.finish();
+  return in;
+}
+
+}  // namespace
+
+scene_input read_scene(const json_value& root) {
+  object_reader scene(root, "");
+  scene_input out;
+  out.model = scene.string("model");
+  if (out.model == "euler_body") {
+    out.input = read_euler_body(scene);
+  } else {
+    throw input_error("model: unknown model '" + out.model + "' (known: euler_body)");
+  }
+  scene.finish();
+  return out;
+}
+
+scene_input read_scene_file(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) throw input_error(path + ": cannot read the scene file");
+  std::ostringstream text;
+  text << file.rdbuf();
+  return read_scene(parse_json(text.str()));
+}
+
+}  // namespace appell

@@ -1,0 +1,337 @@
+// Exact bridges between the scalars and MPFR, and correctly rounded inputs.
+// IEEE formats are emulated in MPFR by restricting the exponent range and
+// calling mpfr_subnormalize (MPFR manual, "Exception Related Functions"), so a
+// value rounded here is exactly representable in the target format.
+#define MPFR_WANT_FLOAT128 1
+#include <mpfr.h>
+#include <mpfi.h>
+#include <gmp.h>
+
+#include "appell/scalar/decimal.hpp"
+
+#include <boost/multiprecision/detail/digits.hpp>
+
+#include <cctype>
+#include <cmath>
+#include <initializer_list>
+
+namespace appell {
+
+// --- mp precision ---------------------------------------------------------
+unsigned set_mp_precision_bits(unsigned bits) {
+  if (bits < 2) throw parse_error("precision must be at least 2 bits");
+  unsigned d10 = 1;
+  while (boost::multiprecision::detail::digits10_2_2(d10) < bits) ++d10;
+  mpfr::default_precision(d10);
+  mpfi::default_precision(d10);
+  return mp_precision_bits();
+}
+
+unsigned mp_precision_bits() {
+  return boost::multiprecision::detail::digits10_2_2(mpfr::default_precision());
+}
+
+mp_precision_scope::mp_precision_scope(unsigned bits)
+    : saved_digits10_(mpfr::default_precision()), bits_(set_mp_precision_bits(bits)) {}
+
+mp_precision_scope::~mp_precision_scope() {
+  mpfr::default_precision(saved_digits10_);
+  mpfi::default_precision(saved_digits10_);
+}
+
+namespace {
+
+struct ieee_format {
+  mpfr_prec_t prec;
+  mpfr_exp_t emin, emax;  // MPFR convention: x = m 2^e, 1/2 <= m < 1
+};
+constexpr ieee_format binary64{53, -1073, 1024};
+constexpr ieee_format x87_extended{64, -16444, 16384};
+constexpr ieee_format binary128{113, -16493, 16384};
+
+// Restricts MPFR's exponent range for a scope (thread-local in MPFR).
+class exponent_range {
+ public:
+  explicit exponent_range(const ieee_format& f) : emin_(mpfr_get_emin()), emax_(mpfr_get_emax()) {
+    mpfr_set_emin(f.emin);
+    mpfr_set_emax(f.emax);
+  }
+  ~exponent_range() {
+    mpfr_set_emin(emin_);
+    mpfr_set_emax(emax_);
+  }
+
+ private:
+  mpfr_exp_t emin_, emax_;
+};
+
+// Rounds into `out` (precision f.prec) so that out is a number of format f.
+void produce_in(const ieee_format& f, const mpfr_producer& p, mpfr_rnd_t rnd, mpfr_value& out) {
+  mpfr_set_prec(out, f.prec);
+  exponent_range range(f);
+  int t = p(out, rnd);
+  t = mpfr_check_range(out, t, rnd);
+  mpfr_subnormalize(out, t, rnd);
+}
+
+// Rounds an arbitrary MPFR value into format f.
+void round_in(const ieee_format& f, mpfr_srcptr v, mpfr_rnd_t rnd, mpfr_value& out) {
+  produce_in(f, [v](mpfr_ptr o, mpfr_rnd_t r) { return mpfr_set(o, v, r); }, rnd, out);
+}
+
+}  // namespace
+
+// --- exact conversions to MPFR ---------------------------------------------
+void to_mpfr_exact(double x, mpfr_value& out) {
+  mpfr_set_prec(out, 53);
+  mpfr_set_d(out, x, MPFR_RNDN);
+}
+void to_mpfr_exact(long double x, mpfr_value& out) {
+  mpfr_set_prec(out, 64);
+  mpfr_set_ld(out, x, MPFR_RNDN);
+}
+void to_mpfr_exact(const dd& x, mpfr_value& out) {
+  const double hi = x.x[0], lo = x.x[1];
+  mpfr_prec_t prec = 53;
+  if (lo != 0 && std::isfinite(hi) && hi != 0) {
+    int ehi, elo;
+    std::frexp(hi, &ehi);
+    std::frexp(lo, &elo);
+    prec = std::max<mpfr_prec_t>(53, (ehi - elo) + 53 + 1);
+  } else if (hi == 0) {
+    prec = 53;
+  }
+  mpfr_set_prec(out, prec);
+  mpfr_set_d(out, hi, MPFR_RNDN);
+  if (hi == 0) mpfr_set_d(out, lo, MPFR_RNDN);
+  else mpfr_add_d(out, out, lo, MPFR_RNDN);  // exact at this precision
+}
+void to_mpfr_exact(const float128& x, mpfr_value& out) {
+  mpfr_set_prec(out, 113);
+  mpfr_set_float128(out, x.backend().value(), MPFR_RNDN);
+}
+void to_mpfr_exact(const mpfr& x, mpfr_value& out) {
+  mpfr_set_prec(out, mpfr_get_prec(x.backend().data()));
+  mpfr_set(out, x.backend().data(), MPFR_RNDN);
+}
+
+// --- rounding from MPFR into each format -----------------------------------
+double round_to_double(mpfr_srcptr v, mpfr_rnd_t rnd) {
+  mpfr_value r;
+  round_in(binary64, v, rnd, r);
+  return mpfr_get_d(r, rnd);
+}
+long double round_to_long_double(mpfr_srcptr v, mpfr_rnd_t rnd) {
+  mpfr_value r;
+  round_in(x87_extended, v, rnd, r);
+  return mpfr_get_ld(r, rnd);
+}
+float128 round_to_float128(mpfr_srcptr v, mpfr_rnd_t rnd) {
+  mpfr_value r;
+  round_in(binary128, v, rnd, r);
+  return float128(mpfr_get_float128(r, rnd));
+}
+dd round_to_dd(mpfr_srcptr v, mpfr_rnd_t /*rnd: dd has round-to-nearest only*/) {
+  return produce_dd([v](mpfr_ptr o, mpfr_rnd_t r) { return mpfr_set(o, v, r); });
+}
+mpfr round_to_mpfr(mpfr_srcptr v, mpfr_rnd_t rnd) {
+  mpfr r;
+  mpfr_set(r.backend().data(), v, rnd);
+  return r;
+}
+
+// --- producers -------------------------------------------------------------
+double produce_double(const mpfr_producer& f, mpfr_rnd_t rnd) {
+  mpfr_value r;
+  produce_in(binary64, f, rnd, r);
+  return mpfr_get_d(r, rnd);
+}
+long double produce_long_double(const mpfr_producer& f, mpfr_rnd_t rnd) {
+  mpfr_value r;
+  produce_in(x87_extended, f, rnd, r);
+  return mpfr_get_ld(r, rnd);
+}
+float128 produce_float128(const mpfr_producer& f, mpfr_rnd_t rnd) {
+  mpfr_value r;
+  produce_in(binary128, f, rnd, r);
+  return float128(mpfr_get_float128(r, rnd));
+}
+dd produce_dd(const mpfr_producer& f) {
+  // hi = RN53(x); lo = RN53(x - hi) with x - hi computed from a 600-bit value
+  // of x (exact subtraction at that precision).
+  const double hi = produce_double(f, MPFR_RNDN);
+  if (!std::isfinite(hi)) return dd(hi, 0.0);
+  mpfr_value x(600);
+  f(x, MPFR_RNDN);
+  mpfr_sub_d(x, x, hi, MPFR_RNDN);
+  const double lo = round_to_double(x, MPFR_RNDN);
+  return dd(hi, lo);
+}
+mpfr produce_mpfr(const mpfr_producer& f, mpfr_rnd_t rnd) {
+  mpfr r;
+  f(r.backend().data(), rnd);
+  return r;
+}
+mpfi produce_mpfi(const mpfr_producer& f) {
+  const mpfr_prec_t prec = static_cast<mpfr_prec_t>(mp_precision_bits());
+  mpfr_value lo(prec), hi(prec);
+  f(lo, MPFR_RNDD);
+  f(hi, MPFR_RNDU);
+  return mpfi_from_mpfr_bounds(lo, hi);
+}
+
+// --- decimal syntax and exact values ---------------------------------------
+bool is_decimal_literal(std::string_view s) {
+  std::size_t i = 0, n = s.size();
+  auto digits = [&] {
+    std::size_t start = i;
+    while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+    return i - start;
+  };
+  if (i < n && (s[i] == '+' || s[i] == '-')) ++i;
+  std::size_t int_digits = digits(), frac_digits = 0;
+  if (i < n && s[i] == '.') {
+    ++i;
+    frac_digits = digits();
+  }
+  if (int_digits + frac_digits == 0) return false;
+  if (i < n && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < n && (s[i] == '+' || s[i] == '-')) ++i;
+    std::size_t exp_digits = digits();
+    if (exp_digits == 0 || exp_digits > 7) return false;  // |exponent| < 10^7
+  }
+  return i == n;
+}
+
+mpfr_producer decimal_producer(std::string_view s) {
+  if (!is_decimal_literal(s)) throw parse_error("'" + std::string(s) + "' is not a decimal number");
+  std::string text(s);
+  return [text](mpfr_ptr out, mpfr_rnd_t rnd) {
+    char* end = nullptr;
+    int t = mpfr_strtofr(out, text.c_str(), &end, 10, rnd);
+    return t;
+  };
+}
+
+mpfr_producer rational_producer(long p, long q) {
+  if (q == 0) throw parse_error("rational with zero denominator");
+  return [p, q](mpfr_ptr out, mpfr_rnd_t rnd) {
+    mpq_t r;
+    mpq_init(r);
+    mpq_set_si(r, p, 1);
+    mpq_t d;
+    mpq_init(d);
+    mpq_set_si(d, q, 1);
+    mpq_div(r, r, d);
+    int t = mpfr_set_q(out, r, rnd);
+    mpq_clear(d);
+    mpq_clear(r);
+    return t;
+  };
+}
+
+mpfr_producer pi_producer() {
+  return [](mpfr_ptr out, mpfr_rnd_t rnd) { return mpfr_const_pi(out, rnd); };
+}
+
+void decimal_to_mpfr(std::string_view s, mpfr_value& out, mpfr_rnd_t rnd) {
+  decimal_producer(s)(out, rnd);
+}
+
+namespace {
+// The exact rational value of a decimal literal.
+void decimal_to_mpq(std::string_view s, mpq_t out) {
+  if (!is_decimal_literal(s)) throw parse_error("'" + std::string(s) + "' is not a decimal number");
+  std::string digits;
+  long exponent = 0;
+  bool negative = false;
+  std::size_t i = 0;
+  if (s[i] == '+' || s[i] == '-') negative = s[i++] == '-';
+  for (; i < s.size() && s[i] != 'e' && s[i] != 'E'; ++i) {
+    if (s[i] == '.') continue;
+    digits.push_back(s[i]);
+  }
+  std::size_t dot = s.find('.');
+  std::size_t epos = s.find_first_of("eE");
+  if (dot != std::string_view::npos) {
+    std::size_t frac_end = epos == std::string_view::npos ? s.size() : epos;
+    exponent -= static_cast<long>(frac_end - dot - 1);
+  }
+  if (epos != std::string_view::npos) exponent += std::stol(std::string(s.substr(epos + 1)));
+  mpz_t num, pow10;
+  mpz_init_set_str(num, digits.c_str(), 10);
+  mpz_init(pow10);
+  mpz_ui_pow_ui(pow10, 10, static_cast<unsigned long>(exponent < 0 ? -exponent : exponent));
+  if (negative) mpz_neg(num, num);
+  if (exponent >= 0) {
+    mpz_mul(num, num, pow10);
+    mpq_set_z(out, num);
+  } else {
+    mpq_set_num(out, num);
+    mpq_set_den(out, pow10);
+    mpq_canonicalize(out);
+  }
+  mpz_clear(num);
+  mpz_clear(pow10);
+}
+}  // namespace
+
+int decimal_sign_of_sum(std::initializer_list<std::pair<int, std::string_view>> terms) {
+  mpq_t sum, term;
+  mpq_init(sum);
+  mpq_init(term);
+  for (const auto& [coefficient, text] : terms) {
+    decimal_to_mpq(text, term);
+    mpq_t c;
+    mpq_init(c);
+    mpq_set_si(c, coefficient, 1);
+    mpq_mul(term, term, c);
+    mpq_add(sum, sum, term);
+    mpq_clear(c);
+  }
+  int sign = mpq_sgn(sum);
+  mpq_clear(term);
+  mpq_clear(sum);
+  return sign;
+}
+
+// --- mpfi helpers ------------------------------------------------------------
+namespace {
+mpfr mpfr_at_prec(mpfr_prec_t prec) {
+  mpfr r;
+  mpfr_set_prec(r.backend().data(), prec);
+  return r;
+}
+}  // namespace
+
+mpfr mpfi_lower(const mpfi& x) {
+  mpfr r = mpfr_at_prec(mpfi_get_prec(x.backend().data()));
+  mpfi_get_left(r.backend().data(), x.backend().data());
+  return r;
+}
+mpfr mpfi_upper(const mpfi& x) {
+  mpfr r = mpfr_at_prec(mpfi_get_prec(x.backend().data()));
+  mpfi_get_right(r.backend().data(), x.backend().data());
+  return r;
+}
+mpfr mpfi_mid(const mpfi& x) {
+  mpfr r = mpfr_at_prec(mpfi_get_prec(x.backend().data()));
+  mpfi_mid(r.backend().data(), x.backend().data());
+  return r;
+}
+mpfr mpfi_width(const mpfi& x) {
+  mpfr r = mpfr_at_prec(mpfi_get_prec(x.backend().data()));
+  mpfi_diam_abs(r.backend().data(), x.backend().data());
+  return r;
+}
+mpfi mpfi_from_bounds(const mpfr& lo, const mpfr& hi) {
+  return mpfi_from_mpfr_bounds(lo.backend().data(), hi.backend().data());
+}
+mpfi mpfi_from_mpfr_bounds(mpfr_srcptr lo, mpfr_srcptr hi) {
+  mpfi r;
+  mpfi_interv_fr(r.backend().data(), lo, hi);  // rounded outward to r's precision
+  return r;
+}
+
+}  // namespace appell
