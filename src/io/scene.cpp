@@ -14,18 +14,18 @@ euler_body_input read_euler_body(object_reader& scene) {
   inertia.finish();
   const char* names[3] = {"A", "B", "C"};
   for (int i = 0; i < 3; ++i)
-    if (decimal_sign_of_sum({{1, in.inertia[i]}}) <= 0)
+    if (decimal_sign_of_sum({{1, in.inertia[i].text}}) <= 0)
       throw input_error(inertia.path(names[i]) + ": a principal moment must be positive, got " +
-                        in.inertia[i]);
+                        in.inertia[i].text);
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;  // moment k must not exceed the sum of the others
-    if (decimal_sign_of_sum({{1, in.inertia[i]}, {1, in.inertia[j]}, {-1, in.inertia[k]}}) < 0)
+    if (decimal_sign_of_sum({{1, in.inertia[i].text}, {1, in.inertia[j].text}, {-1, in.inertia[k].text}}) < 0)
       throw input_error(inertia.path(names[k]) + ": violates the triangle inequality " + names[i] +
-                        " + " + names[j] + " >= " + names[k] + " (" + in.inertia[i] + " + " +
-                        in.inertia[j] + " < " + in.inertia[k] + ")");
+                        " + " + names[j] + " >= " + names[k] + " (" + in.inertia[i].text + " + " +
+                        in.inertia[j].text + " < " + in.inertia[k].text + ")");
   }
   in.torque = scene.has("torque") ? scene.numbers("torque", 3)
-                                  : std::vector<std::string>{"0", "0", "0"};
+                                  : std::vector<decimal_field>{{"0", "torque[0]"}, {"0", "torque[1]"}, {"0", "torque[2]"}};
   object_reader state = scene.object("state");
   in.omega = state.numbers("omega", 3);
   state.finish();

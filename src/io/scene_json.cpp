@@ -113,12 +113,12 @@ json_value parse_json(const std::string& text) {
   return root;
 }
 
-std::string decimal_text(const json_value& v, const std::string& path) {
+decimal_field decimal_text(const json_value& v, const std::string& path) {
   if (v.type != json_value::kind::number && v.type != json_value::kind::string)
     throw input_error(path + ": expected a number, got " + kind_name(v.type));
   if (!is_decimal_literal(v.text))
     throw input_error(path + ": '" + v.text + "' is not a decimal number");
-  return v.text;
+  return {v.text, path};
 }
 
 object_reader::object_reader(const json_value& v, std::string path) : v_(&v), path_(std::move(path)) {
@@ -136,9 +136,9 @@ const json_value& object_reader::required(const std::string& key) {
 
 const json_value& object_reader::raw(const std::string& key) { return required(key); }
 
-std::string object_reader::number(const std::string& key) { return decimal_text(required(key), path(key)); }
+decimal_field object_reader::number(const std::string& key) { return decimal_text(required(key), path(key)); }
 
-std::vector<std::string> object_reader::numbers(const std::string& key, std::size_t n) {
+std::vector<decimal_field> object_reader::numbers(const std::string& key, std::size_t n) {
   const json_value& v = required(key);
   if (v.type != json_value::kind::array)
     throw input_error(path(key) + ": expected a list of " + std::to_string(n) + " numbers, got " +
@@ -146,7 +146,7 @@ std::vector<std::string> object_reader::numbers(const std::string& key, std::siz
   if (v.items.size() != n)
     throw input_error(path(key) + ": expected " + std::to_string(n) + " numbers, got " +
                       std::to_string(v.items.size()));
-  std::vector<std::string> out;
+  std::vector<decimal_field> out;
   for (std::size_t i = 0; i < n; ++i)
     out.push_back(decimal_text(v.items[i], path(key) + "[" + std::to_string(i) + "]"));
   return out;

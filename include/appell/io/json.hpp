@@ -17,6 +17,12 @@ struct input_error : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+/// A number from a scene: its exact decimal text and where it was found.
+struct decimal_field {
+  std::string text;  ///< e.g. "0.1"
+  std::string path;  ///< e.g. "state.omega[0]"
+};
+
 struct json_value {
   enum class kind { null, boolean, number, string, array, object };
   kind type = kind::null;
@@ -40,9 +46,9 @@ class object_reader {
  public:
   object_reader(const json_value& v, std::string path);
   /// A required number (JSON number or decimal string): its exact decimal text.
-  std::string number(const std::string& key);
+  decimal_field number(const std::string& key);
   /// A required list of exactly n numbers.
-  std::vector<std::string> numbers(const std::string& key, std::size_t n);
+  std::vector<decimal_field> numbers(const std::string& key, std::size_t n);
   std::string string(const std::string& key);
   object_reader object(const std::string& key);
   bool has(const std::string& key) const { return v_->find(key) != nullptr; }
@@ -59,6 +65,6 @@ class object_reader {
 };
 
 /// The decimal text of a number node (JSON number or string); throws input_error.
-std::string decimal_text(const json_value& v, const std::string& path);
+decimal_field decimal_text(const json_value& v, const std::string& path);
 
 }  // namespace appell

@@ -18,9 +18,9 @@
 namespace appell {
 
 struct euler_body_input {
-  std::vector<std::string> inertia;  // A, B, C
-  std::vector<std::string> torque;   // L, M, N
-  std::vector<std::string> omega;    // p, q, r
+  std::vector<decimal_field> inertia;  // A, B, C
+  std::vector<decimal_field> torque;   // L, M, N
+  std::vector<decimal_field> omega;    // p, q, r
 };
 
 struct scene_input {
@@ -51,10 +51,20 @@ struct evaluation {
   }
 };
 
+/// A scene number in T; a value out of T's range is bad input naming the field.
+template <Scalar T>
+T value(const decimal_field& d) {
+  try {
+    return from_decimal<T>(d.text);
+  } catch (const parse_error& e) {
+    throw input_error(d.path + ": " + e.what());
+  }
+}
+
 namespace detail {
 template <Scalar T>
-vec3<T> vec3_from_decimals(const std::vector<std::string>& d) {
-  return vec3<T>(from_decimal<T>(d[0]), from_decimal<T>(d[1]), from_decimal<T>(d[2]));
+vec3<T> vec3_from_decimals(const std::vector<decimal_field>& d) {
+  return vec3<T>(value<T>(d[0]), value<T>(d[1]), value<T>(d[2]));
 }
 template <Scalar T>
 named_result<T> vector_result(std::string name, const vec3<T>& v) {

@@ -3,11 +3,11 @@
 // Rigour contract (in the spirit of CAPD): every operation returns a box that
 // contains the exact real result for every point of its arguments.  We do not
 // assume that libm rounds correctly, nor that it honours the rounding mode.
-//  * + - * / and sqrt: IEEE 754 operations under directed rounding (Boost.Interval,
-//    `rounded_arith_opp`: the FPU is put in upward mode, lower bounds are computed
-//    as -((-x) op y)).  This needs -frounding-math -ffp-contract=off and no
-//    -ffast-math, which the appell::appell target carries (DESIGN.md sec. 3).
-//  * sin cos tan atan exp log pown: each bound is MPFR's correctly rounded value
+//  * + - * /: IEEE 754 operations under directed rounding (upward mode; lower
+//    bounds as -((-x) op y)), each operand made opaque to the optimiser.  This
+//    also needs -frounding-math -ffp-contract=off and no -ffast-math, which the
+//    appell::appell target carries (DESIGN.md sec. 3).
+//  * sqrt sin cos tan atan exp log pown: each bound is MPFR's correctly rounded value
 //    at 53 bits with MPFR_RNDD / MPFR_RNDU, converted to double with the same
 //    direction.  Extrema inside wide arguments are located by a certified
 //    range reduction (src/scalar/interval_functions.cpp).
@@ -35,19 +35,43 @@ struct domain_error : std::domain_error {
   using std::domain_error::domain_error;
 };
 
-namespace detail {
-// Rounding for interval<double>: upward mode set and restored by each operation
-// (Boost's save_state).  Declared in namespace appell so that argument-dependent
-// lookup finds appell::sin(interval) and friends.
-struct interval_rounding
-    : boost::numeric::interval_lib::save_state<
-          boost::numeric::interval_lib::rounded_arith_opp<double>> {};
+// Rounding for interval<double>.  The FPU is put in upward mode by each
+// operation and restored after it (Boost's save_state); lower bounds are
+// computed by negation, -((-x) - y), so only one mode is ever needed.
+// Every operand and result passes through an empty `asm volatile`: without
+// it GCC, even with -frounding-math, folds or reuses a result computed in
+// another rounding mode (measured here: the upper bound of [1]/[3], computed
+// upward, was reused for a later round-to-nearest 1.0/3.0, GCC bug 34678).
+// Declared in namespace appell itself (not a nested one) so that
+// argument-dependent lookup on an interval finds appell::sin and friends.
+struct interval_arith : boost::numeric::interval_lib::rounded_arith_opp<double> {
+  static double opaque(double x) {
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+    asm volatile("" : "+x"(x));
+    return x;
+#else
+    volatile double v = x;
+    return v;
+#endif
+  }
+  template <class U>
+  double conv_down(const U& v) { return -opaque(-static_cast<double>(opaque(v))); }
+  template <class U>
+  double conv_up(const U& v) { return opaque(static_cast<double>(opaque(v))); }
+  double add_down(double x, double y) { return -opaque(opaque(-x) - opaque(y)); }
+  double sub_down(double x, double y) { return -opaque(opaque(y) - opaque(x)); }
+  double mul_down(double x, double y) { return -opaque(opaque(x) * opaque(-y)); }
+  double div_down(double x, double y) { return -opaque(opaque(x) / opaque(-y)); }
+  double add_up(double x, double y) { return opaque(opaque(x) + opaque(y)); }
+  double sub_up(double x, double y) { return opaque(opaque(x) - opaque(y)); }
+  double mul_up(double x, double y) { return opaque(opaque(x) * opaque(y)); }
+  double div_up(double x, double y) { return opaque(opaque(x) / opaque(y)); }
+};
+struct interval_rounding : boost::numeric::interval_lib::save_state<interval_arith> {};
 struct interval_checking : boost::numeric::interval_lib::checking_base<double> {};
-}  // namespace detail
 
 using interval = boost::numeric::interval<
-    double, boost::numeric::interval_lib::policies<detail::interval_rounding,
-                                                   detail::interval_checking>>;
+    double, boost::numeric::interval_lib::policies<interval_rounding, interval_checking>>;
 
 // Rigorous elementary functions (definitions in src/scalar/interval_functions.cpp).
 interval sqrt(const interval& x);

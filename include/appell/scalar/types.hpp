@@ -19,6 +19,7 @@
 #include <qd/dd_real.h>
 
 #include "appell/scalar/interval.hpp"
+#include "appell/scalar/mpfi_domain.hpp"
 
 namespace appell {
 

@@ -1,0 +1,40 @@
+// appell/scalar/functions.hpp -- the few functions whose best form depends on the scalar.
+//
+// Elementary functions are called unqualified with `using std::sin;` in
+// scope, so that argument-dependent lookup finds each scalar's own:
+// appell::sin for interval (rigorous, src/scalar/interval_functions.cpp),
+// MPFI's for mpfi, MPFR's for mpfr, QD's for dd, libquadmath's for float128.
+// Integer powers and squares are not left to x*x*...: on intervals that
+// overestimates around 0 ([-1,2]*[-1,2] = [-2,4], but [-1,2]^2 = [0,4]).
+#pragma once
+
+#include <cmath>
+
+#include "appell/scalar/traits.hpp"
+
+namespace appell {
+
+/// x^n for mpfi, tight: each bound from mpfr_pow_si with directed rounding.
+mpfi pown_mpfi(const mpfi& x, int n);
+
+/// x^n for an integer n.
+template <Scalar T>
+T pown(const T& x, int n) {
+  if constexpr (std::is_same_v<T, interval>) return appell::pown(x, n);
+  else if constexpr (std::is_same_v<T, mpfi>) return pown_mpfi(x, n);
+  else if constexpr (std::is_same_v<T, dd>) return ::npwr(x, n);
+  else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, long double>) return std::pow(x, n);
+  else {
+    using boost::multiprecision::pow;
+    return pow(x, T(n));
+  }
+}
+
+/// x^2, tight on intervals.
+template <Scalar T>
+T sqr(const T& x) {
+  if constexpr (scalar_traits<T>::is_interval) return pown(x, 2);
+  else return x * x;
+}
+
+}  // namespace appell

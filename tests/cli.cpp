@@ -1,0 +1,114 @@
+// The `appell eval` contract (SCENES.md): JSON on stdout and exit 0; for bad
+// input exit 2, one line on stderr naming the field, nothing on stdout.
+#define BOOST_TEST_MODULE cli
+#include <boost/test/unit_test.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+struct outcome {
+  int status;
+  std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+const std::filesystem::path work = std::filesystem::temp_directory_path() / "appell_cli_test";
+
+outcome run(const std::string& args) {
+  std::filesystem::create_directories(work);
+  const std::string out = (work / "stdout").string(), err = (work / "stderr").string();
+  const std::string cmd = std::string(APPELL_BINARY) + " " + args + " >" + out + " 2>" + err;
+  const int raw = std::system(cmd.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+}
+
+std::string scene_file(const std::string& name, const std::string& json) {
+  std::filesystem::create_directories(work);
+  const auto path = work / (name + ".json");
+  std::ofstream(path) << json;
+  return path.string();
+}
+
+const std::string good_scene = APPELL_SOURCE_DIR "/data/scenes/euler_body.json";
+
+std::string euler(const std::string& inertia, const std::string& torque, const std::string& state) {
+  return "{\"model\": \"euler_body\", \"inertia\": " + inertia + ", \"torque\": " + torque +
+         ", \"state\": " + state + "}";
+}
+
+void expect_bad_input(const std::string& args, const std::string& must_mention) {
+  const outcome o = run(args);
+  BOOST_TEST(o.status == 2, args << ": exit " << o.status);
+  BOOST_TEST(o.out.empty(), args << ": stdout not empty");
+  BOOST_TEST(!o.err.empty());
+  BOOST_TEST(std::count(o.err.begin(), o.err.end(), '\n') == 1, args << ": not one line: " << o.err);
+  BOOST_TEST(o.err.find(must_mention) != std::string::npos, args << ": '" << o.err << "' lacks '" << must_mention << "'");
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(every_scalar_evaluates_the_shipped_scene) {
+  for (const char* s : {"double", "long-double", "dd", "float128", "mpfr", "interval", "mpfi"}) {
+    const outcome o = run("eval " + good_scene + " --scalar " + s);
+    BOOST_TEST(o.status == 0, s << ": " << o.err);
+    BOOST_TEST(o.out.find("\"model\": \"euler_body\"") != std::string::npos);
+    BOOST_TEST(o.out.find(std::string("\"scalar\": \"") + s + "\"") != std::string::npos);
+    BOOST_TEST(o.out.find("\"omega_dot\": [") != std::string::npos);
+    const bool interval = std::string(s) == "interval" || std::string(s) == "mpfi";
+    BOOST_TEST((o.out.find("\"lo\":") != std::string::npos) == interval, s);
+    BOOST_TEST((o.out.find("\"value\":") != std::string::npos) == !interval, s);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(bits_set_the_precision_of_mpfr_and_mpfi) {
+  const outcome o = run("eval " + good_scene + " --scalar mpfi --bits 100");
+  BOOST_TEST(o.status == 0);
+  BOOST_TEST(o.out.find("\"bits\": 10") != std::string::npos, o.out);  // 100 or a little more
+  const outcome t = run("eval " + good_scene + " --scalar interval --format text");
+  BOOST_TEST(t.status == 0);
+  BOOST_TEST(t.out.find("omega_dot[0] = [") != std::string::npos, t.out);
+}
+
+BOOST_AUTO_TEST_CASE(bad_input_exits_2_with_one_line_naming_the_field) {
+  const std::string I = "{\"A\": \"2\", \"B\": \"3\", \"C\": \"4\"}", T = "[\"0\", \"0\", \"0\"]",
+                    S = "{\"omega\": [\"0.1\", \"1.0\", \"0.2\"]}";
+  expect_bad_input("eval " + scene_file("missing", euler(I, T, "{}")), "state.omega");
+  expect_bad_input("eval " + scene_file("missing_B", euler("{\"A\": \"2\", \"C\": \"4\"}", T, S)), "inertia.B");
+  expect_bad_input("eval " + scene_file("unknown", euler(I, T, "{\"omega\": [1, 2, 3], \"spin\": 1}")), "state.spin");
+  expect_bad_input("eval " + scene_file("unknown_top", "{\"model\": \"euler_body\", \"inertia\": " + I +
+                                                           ", \"state\": " + S + ", \"colour\": \"red\"}"),
+                   "colour");
+  expect_bad_input("eval " + scene_file("nonnumeric", euler("{\"A\": \"two\", \"B\": \"3\", \"C\": \"4\"}", T, S)), "inertia.A");
+  expect_bad_input("eval " + scene_file("bool", euler(I, "[true, 0, 0]", S)), "torque[0]");
+  expect_bad_input("eval " + scene_file("length", euler(I, T, "{\"omega\": [\"0.1\", \"1.0\"]}")), "state.omega");
+  expect_bad_input("eval " + scene_file("zero", euler("{\"A\": \"0\", \"B\": \"3\", \"C\": \"4\"}", T, S)), "inertia.A");
+  expect_bad_input("eval " + scene_file("negative", euler("{\"A\": 2, \"B\": -3, \"C\": 4}", T, S)), "inertia.B");
+  expect_bad_input("eval " + scene_file("triangle", euler("{\"A\": \"1\", \"B\": \"1\", \"C\": \"2.000000000000000000001\"}", T, S)), "triangle");
+  expect_bad_input("eval " + scene_file("model", "{\"model\": \"flying_carpet\"}"), "model");
+  expect_bad_input("eval " + scene_file("syntax", "{\"model\": \"euler_body\","), "JSON");
+  expect_bad_input("eval " + scene_file("huge", euler(I, "[\"1e400\", 0, 0]", S)), "torque[0]");
+  expect_bad_input("eval " + work.string() + "/no_such_file.json", "no_such_file");
+  expect_bad_input("eval " + good_scene + " --scalar quad", "--scalar");
+  expect_bad_input("eval " + good_scene + " --scalar double --bits 80", "--bits");
+  expect_bad_input("eval " + good_scene + " --format xml", "--format");
+}
+
+BOOST_AUTO_TEST_CASE(a_flat_body_on_the_triangle_boundary_is_accepted) {
+  // A + B = C exactly (a lamina) is a real body; the check is exact, not rounded.
+  const std::string f = scene_file("lamina", euler("{\"A\": \"0.1\", \"B\": \"0.2\", \"C\": \"0.3\"}",
+                                                   "[0, 0, 0]", "{\"omega\": [1, 2, 3]}"));
+  for (const char* s : {"double", "interval"}) BOOST_TEST(run("eval " + f + " --scalar " + s).status == 0);
+}

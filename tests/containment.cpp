@@ -1,0 +1,238 @@
+// Containment: every interval result encloses the exact value.
+// For interval (53-bit bounds) and mpfi at 64 and 200 bits, on random thin
+// (point) arguments and on wide random intervals, each operation's result must
+// contain f at every sample of its arguments, evaluated by MPFR at 320 bits:
+// the endpoints, random interior points and, for sin/cos/tan, every multiple
+// of pi/2 inside (where extrema and poles hide).  Zero misses allowed.
+#define BOOST_TEST_MODULE containment
+#include <boost/test/unit_test.hpp>
+
+#include <gmp.h>
+
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "appell/scalar/decimal.hpp"
+#include "appell/scalar/format.hpp"
+#include "appell/scalar/functions.hpp"
+
+using namespace appell;
+
+namespace {
+
+constexpr mpfr_prec_t ref_prec = 320;
+
+using ref_unary = int (*)(mpfr_ptr, mpfr_srcptr, mpfr_rnd_t);
+
+struct rng_t {
+  std::mt19937_64 engine{20261121};
+  gmp_randstate_t gmp;
+  rng_t() {
+    gmp_randinit_default(gmp);
+    gmp_randseed_ui(gmp, 1907);
+  }
+  ~rng_t() { gmp_randclear(gmp); }
+  double uniform() { return std::uniform_real_distribution<double>(0, 1)(engine); }
+  int integer(int a, int b) { return std::uniform_int_distribution<int>(a, b)(engine); }
+};
+
+// A random number with `prec` random bits, magnitude about 2^[emin, emax].
+void random_number(rng_t& rng, mpfr_prec_t prec, int emin, int emax, bool positive, mpfr_value& out) {
+  mpfr_set_prec(out, prec);
+  mpfr_urandomb(out, rng.gmp);
+  mpfr_mul_2si(out, out, rng.integer(emin, emax), MPFR_RNDN);
+  if (!positive && rng.integer(0, 1)) mpfr_neg(out, out, MPFR_RNDN);
+}
+
+struct domain {
+  int emin, emax;
+  bool positive;  // arguments > 0 (sqrt, log)
+};
+
+template <class I>
+I make(const mpfr_value& lo, const mpfr_value& hi) {
+  return scalar_traits<I>::from_mpfr_bounds(lo, hi);
+}
+
+// Random argument: thin or wide, with bounds representable in I.
+template <class I>
+I random_argument(rng_t& rng, const domain& d, bool wide, mpfr_prec_t prec) {
+  mpfr_value a, w;
+  random_number(rng, prec, d.emin, d.emax, d.positive, a);
+  if (!wide) return make<I>(a, a);
+  random_number(rng, prec, -12, std::max(d.emax, 3), true, w);
+  mpfr_value b(prec);
+  mpfr_add(b, a, w, MPFR_RNDU);
+  return make<I>(a, b);
+}
+
+// Samples of an argument at ref_prec: endpoints and random interior points.
+template <class I>
+std::vector<mpfr_value> samples(rng_t& rng, const I& x, bool with_half_pi_multiples) {
+  mpfr_value lo, hi;
+  scalar_traits<I>::to_mpfr(x, lo, hi);
+  std::vector<mpfr_value> s;
+  auto push = [&](mpfr_srcptr v) {
+    mpfr_value c(ref_prec);
+    mpfr_set(c, v, MPFR_RNDN);
+    s.push_back(c);
+  };
+  push(lo);
+  push(hi);
+  if (mpfr_equal_p(lo, hi)) return s;
+  for (int k = 0; k < 3; ++k) {
+    mpfr_value t(ref_prec), v(ref_prec);
+    mpfr_set_d(t, rng.uniform(), MPFR_RNDN);
+    mpfr_sub(v, hi, lo, MPFR_RNDN);
+    mpfr_mul(v, v, t, MPFR_RNDN);
+    mpfr_add(v, v, lo, MPFR_RNDN);
+    if (mpfr_less_p(v, lo)) mpfr_set(v, lo, MPFR_RNDN);
+    if (mpfr_greater_p(v, hi)) mpfr_set(v, hi, MPFR_RNDN);
+    s.push_back(v);
+  }
+  if (with_half_pi_multiples) {
+    // k pi/2 in [lo, hi], at most 8 of them.
+    mpfr_value half_pi(ref_prec), k(ref_prec), v(ref_prec);
+    mpfr_const_pi(half_pi, MPFR_RNDN);
+    mpfr_div_2ui(half_pi, half_pi, 1, MPFR_RNDN);
+    mpfr_div(k, lo, half_pi, MPFR_RNDN);
+    mpfr_ceil(k, k);
+    for (int i = 0; i < 8; ++i) {
+      mpfr_mul(v, k, half_pi, MPFR_RNDN);
+      if (mpfr_greater_p(v, hi)) break;
+      if (!mpfr_less_p(v, lo)) s.push_back(v);
+      mpfr_add_ui(k, k, 1, MPFR_RNDN);
+    }
+  }
+  return s;
+}
+
+struct tally {
+  long cases = 0, samples = 0, misses = 0;
+  std::vector<std::string> first_misses;
+};
+
+template <class I>
+void check(tally& t, const I& result, mpfr_srcptr exact, const std::string& what) {
+  ++t.samples;
+  if (!contains(result, exact)) {
+    ++t.misses;
+    if (t.first_misses.size() < 10) {
+      mpfr_value e(ref_prec);
+      mpfr_set(e, exact, MPFR_RNDN);
+      t.first_misses.push_back(what + " -> " + to_string(result) + " misses " +
+                               mpfr_to_decimal(e, 40, MPFR_RNDN));
+    }
+  }
+}
+
+struct unary_op {
+  std::string name;
+  ref_unary ref;
+  domain dom;
+  bool trig;
+};
+
+template <class I>
+I apply(const std::string& name, const I& x, int n) {
+  using std::sqrt, std::sin, std::cos, std::tan, std::atan, std::exp, std::log;
+  if (name == "sqrt") return sqrt(x);
+  if (name == "sin") return sin(x);
+  if (name == "cos") return cos(x);
+  if (name == "tan") return tan(x);
+  if (name == "atan") return atan(x);
+  if (name == "exp") return exp(x);
+  if (name == "log") return log(x);
+  if (name == "pown") return appell::pown(x, n);
+  throw std::logic_error(name);
+}
+
+template <class I>
+void run_unary(tally& t, rng_t& rng, mpfr_prec_t prec, int n_thin, int n_wide) {
+  const std::vector<unary_op> ops = {
+      {"sqrt", mpfr_sqrt, {-30, 30, true}, false}, {"sin", mpfr_sin, {-40, 12, false}, true},
+      {"cos", mpfr_cos, {-40, 12, false}, true},   {"tan", mpfr_tan, {-40, 8, false}, true},
+      {"atan", mpfr_atan, {-30, 30, false}, false}, {"exp", mpfr_exp, {-20, 9, false}, false},
+      {"log", mpfr_log, {-30, 30, true}, false},   {"pown", nullptr, {-8, 8, false}, false}};
+  for (const auto& op : ops) {
+    for (int c = 0; c < n_thin + n_wide; ++c) {
+      const bool wide = c >= n_thin;
+      const I x = random_argument<I>(rng, op.dom, wide, prec);
+      int n = 0;
+      while (n == 0) n = rng.integer(-6, 7);
+      I y;
+      try {
+        y = apply(op.name, x, n);
+      } catch (const domain_error&) {
+        continue;  // only for arguments outside the domain (none are generated)
+      }
+      ++t.cases;
+      for (const auto& s : samples(rng, x, op.trig)) {
+        mpfr_value r(ref_prec);
+        if (op.name == "pown") {
+          if (n < 0 && mpfr_zero_p(s)) continue;
+          mpfr_pow_si(r, s, n, MPFR_RNDN);
+        } else {
+          op.ref(r, s, MPFR_RNDN);
+        }
+        check(t, y, r, op.name + (op.name == "pown" ? std::to_string(n) : "") + to_string(x));
+      }
+    }
+  }
+}
+
+template <class I>
+void run_binary(tally& t, rng_t& rng, mpfr_prec_t prec, int n_thin, int n_wide) {
+  const domain dom{-30, 30, false};
+  for (const char op : {'+', '-', '*', '/'}) {
+    for (int c = 0; c < n_thin + n_wide; ++c) {
+      const bool wide = c >= n_thin;
+      const I x = random_argument<I>(rng, dom, wide, prec);
+      const I y = random_argument<I>(rng, dom, wide, prec);
+      const I z = op == '+' ? x + y : op == '-' ? x - y : op == '*' ? x * y : x / y;
+      ++t.cases;
+      const auto sx = samples(rng, x, false), sy = samples(rng, y, false);
+      for (std::size_t i = 0; i < sx.size(); ++i) {
+        for (std::size_t j = 0; j < sy.size(); ++j) {
+          if (i != j && i > 1 && j > 1) continue;  // endpoints x endpoints, interior paired
+          mpfr_value r(ref_prec);
+          if (op == '/' && mpfr_zero_p(sy[j])) continue;
+          if (op == '+') mpfr_add(r, sx[i], sy[j], MPFR_RNDN);
+          if (op == '-') mpfr_sub(r, sx[i], sy[j], MPFR_RNDN);
+          if (op == '*') mpfr_mul(r, sx[i], sy[j], MPFR_RNDN);
+          if (op == '/') mpfr_div(r, sx[i], sy[j], MPFR_RNDN);
+          check(t, z, r, std::string(1, op) + " " + to_string(x) + " " + to_string(y));
+        }
+      }
+    }
+  }
+}
+
+template <class I>
+void run_all(const std::string& label, mpfr_prec_t prec) {
+  rng_t rng;
+  tally t;
+  run_unary<I>(t, rng, prec, 2500, 1500);
+  run_binary<I>(t, rng, prec, 2500, 1500);
+  BOOST_TEST_MESSAGE(label << ": " << t.cases << " cases, " << t.samples
+                           << " samples checked against MPFR at 320 bits, " << t.misses << " misses");
+  for (const auto& m : t.first_misses) BOOST_TEST_MESSAGE("  MISS " << m);
+  BOOST_TEST(t.misses == 0);
+  BOOST_TEST(t.cases >= 40000);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(interval_results_contain_the_320_bit_values) { run_all<interval>("interval", 53); }
+
+BOOST_AUTO_TEST_CASE(mpfi_64_results_contain_the_320_bit_values) {
+  mp_precision_scope scope(64);
+  run_all<mpfi>("mpfi at " + std::to_string(scope.bits()) + " bits", scope.bits());
+}
+
+BOOST_AUTO_TEST_CASE(mpfi_200_results_contain_the_320_bit_values) {
+  mp_precision_scope scope(200);
+  run_all<mpfi>("mpfi at " + std::to_string(scope.bits()) + " bits", scope.bits());
+}

@@ -1,0 +1,214 @@
+// Decimal input is enclosed exactly (interval types) or rounded once,
+// correctly (point types); printing round-trips and rounds bounds outward.
+// Checked against exact rationals (GMP), not against the code under test.
+#define BOOST_TEST_MODULE decimal
+#include <boost/test/unit_test.hpp>
+
+#include <gmp.h>
+
+#include <cmath>
+#include <random>
+
+#include "appell/scalar/decimal.hpp"
+#include "appell/scalar/format.hpp"
+
+using namespace appell;
+
+namespace {
+
+// An exact rational, RAII.
+struct rational_q {
+  mpq_t q;
+  explicit rational_q(const char* text) {  // "p/q" or "p"
+    mpq_init(q);
+    mpq_set_str(q, text, 10);
+    mpq_canonicalize(q);
+  }
+  rational_q(const char* numerator, unsigned long pow10) {  // numerator / 10^pow10
+    mpq_init(q);
+    mpz_t n, d;
+    mpz_init_set_str(n, numerator, 10);
+    mpz_init(d);
+    mpz_ui_pow_ui(d, 10, pow10);
+    mpq_set_num(q, n);
+    mpq_set_den(q, d);
+    mpq_canonicalize(q);
+    mpz_clear(n);
+    mpz_clear(d);
+  }
+  ~rational_q() { mpq_clear(q); }
+};
+
+int cmp_mpfr_q(mpfr_srcptr x, const rational_q& r) { return mpfr_cmp_q(x, r.q); }
+
+struct case_t {
+  const char* text;
+  const char* numerator;
+  unsigned long pow10;
+};
+const case_t cases[] = {{"0.1", "1", 1},
+                        {"1e-300", "1", 300},
+                        {"123456789.123456789", "123456789123456789", 9},
+                        {"-2.5e-3", "-25", 4},
+                        {"0.5", "5", 1}};
+
+template <class I>
+void check_enclosure(const case_t& c, bool representable_in_53) {
+  const I x = from_decimal<I>(c.text);
+  rational_q exact(c.numerator, c.pow10);
+  mpfr_value lo, hi;
+  scalar_traits<I>::to_mpfr(x, lo, hi);
+  BOOST_TEST(cmp_mpfr_q(lo, exact) <= 0, c.text << ": lower bound above the exact decimal");
+  BOOST_TEST(cmp_mpfr_q(hi, exact) >= 0, c.text << ": upper bound below the exact decimal");
+  if (representable_in_53) {
+    BOOST_TEST(mpfr_equal_p(lo, hi), c.text << " is representable: the box must be thin");
+  } else {
+    // One ulp wide: hi is the successor of lo at the bound precision.
+    mpfr_value next(mpfr_get_prec(lo));
+    mpfr_set(next, lo, MPFR_RNDN);
+    mpfr_nextabove(next);
+    BOOST_TEST(mpfr_equal_p(next, hi), c.text << ": enclosure wider than one ulp");
+    BOOST_TEST(cmp_mpfr_q(lo, exact) < 0);
+    BOOST_TEST(cmp_mpfr_q(hi, exact) > 0);
+  }
+}
+
+// |x - exact| <= |y - exact| for both neighbours y of x: x is the nearest.
+template <class T>
+void check_nearest(const case_t& c) {
+  const T x = from_decimal<T>(c.text);
+  rational_q exact(c.numerator, c.pow10);
+  mpfr_value v;
+  to_mpfr_exact(x, v);
+  const mpfr_prec_t p = mpfr_get_prec(v);
+  mpfr_value below(p), above(p);
+  mpfr_set(below, v, MPFR_RNDN);
+  mpfr_nextbelow(below);
+  mpfr_set(above, v, MPFR_RNDN);
+  mpfr_nextabove(above);
+  // exact lies within half an ulp of x: between the midpoints to the neighbours.
+  mpfr_value mlo(p + 2), mhi(p + 2);
+  mpfr_add(mlo, v, below, MPFR_RNDN);  // exact at p+2 bits
+  mpfr_div_2ui(mlo, mlo, 1, MPFR_RNDN);
+  mpfr_add(mhi, v, above, MPFR_RNDN);
+  mpfr_div_2ui(mhi, mhi, 1, MPFR_RNDN);
+  BOOST_TEST(cmp_mpfr_q(mlo, exact) <= 0, scalar_traits<T>::name << " " << c.text << " not nearest");
+  BOOST_TEST(cmp_mpfr_q(mhi, exact) >= 0, scalar_traits<T>::name << " " << c.text << " not nearest");
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(interval_encloses_the_exact_decimal_in_one_ulp) {
+  for (const auto& c : cases) check_enclosure<interval>(c, std::string(c.text) == "0.5");
+}
+
+BOOST_AUTO_TEST_CASE(mpfi_encloses_the_exact_decimal_in_one_ulp) {
+  for (unsigned bits : {64u, 200u}) {
+    mp_precision_scope scope(bits);
+    for (const auto& c : cases) check_enclosure<mpfi>(c, std::string(c.text) == "0.5");
+  }
+}
+
+BOOST_AUTO_TEST_CASE(point_types_round_the_exact_decimal_to_nearest) {
+  mp_precision_scope scope(150);
+  for (const auto& c : cases) {
+    check_nearest<double>(c);
+    check_nearest<long double>(c);
+    check_nearest<float128>(c);
+    check_nearest<mpfr>(c);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(dd_holds_the_decimal_to_106_bits) {
+  // Below about 2^-969 the low double is subnormal and dd holds fewer than
+  // 106 bits (1e-300 is such a number); the claim is for the normal range.
+  for (const auto& c : cases) {
+    if (std::string(c.text) == "1e-300") continue;
+    const dd x = from_decimal<dd>(c.text);
+    rational_q exact(c.numerator, c.pow10);
+    mpfr_value v;
+    to_mpfr_exact(x, v);
+    mpfr_value err(400);
+    mpfr_set_q(err, exact.q, MPFR_RNDN);
+    mpfr_sub(err, err, v, MPFR_RNDN);
+    mpfr_value tol(64);
+    mpfr_set_q(tol, exact.q, MPFR_RNDN);
+    mpfr_abs(tol, tol, MPFR_RNDN);
+    mpfr_mul_2si(tol, tol, -105, MPFR_RNDN);
+    mpfr_abs(err, err, MPFR_RNDN);
+    BOOST_TEST(mpfr_lessequal_p(err, tol), c.text);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_subnormal_decimal_rounds_like_ieee) {
+  // 2^-1074 = 4.94e-324 is the least subnormal; 3e-324 lies between 0 and it,
+  // nearer to it; 7e-324 lies between 2^-1074 and 2^-1073, nearer to 2^-1074.
+  BOOST_TEST(from_decimal<double>("3e-324") == std::ldexp(1.0, -1074));
+  BOOST_TEST(from_decimal<double>("7e-324") == std::ldexp(1.0, -1074));
+  const interval y = from_decimal<interval>("3e-324");
+  BOOST_TEST(y.lower() == 0.0);
+  BOOST_TEST(y.upper() == std::ldexp(1.0, -1074));
+  const interval x = from_decimal<interval>("7e-324");
+  BOOST_TEST(x.lower() == std::ldexp(1.0, -1074));
+  BOOST_TEST(x.upper() == std::ldexp(1.0, -1073));
+  const interval tiny = from_decimal<interval>("1e-400");
+  BOOST_TEST(tiny.lower() == 0.0);
+  BOOST_TEST(tiny.upper() == std::ldexp(1.0, -1074));
+}
+
+BOOST_AUTO_TEST_CASE(bad_literals_are_refused) {
+  for (const char* bad : {"", "abc", "1e", "1e+", ".", "-", "0x10", "inf", "nan", " 1", "1 ", "1,5",
+                          "1e99999999", "--1", "1.2.3"}) {
+    BOOST_CHECK_THROW(from_decimal<double>(bad), parse_error);
+    BOOST_CHECK_THROW(from_decimal<interval>(bad), parse_error);
+  }
+  for (const char* good : {"1", "-1", "+1", "1.", ".5", "1e5", "1E-5", "007"})
+    BOOST_CHECK_NO_THROW(from_decimal<double>(good));
+}
+
+BOOST_AUTO_TEST_CASE(values_out_of_range_are_refused) {
+  BOOST_CHECK_THROW(from_decimal<double>("1e400"), parse_error);
+  BOOST_CHECK_THROW(from_decimal<interval>("-1e400"), parse_error);
+  BOOST_CHECK_NO_THROW(from_decimal<long double>("1e400"));
+  BOOST_CHECK_NO_THROW(from_decimal<mpfr>("1e400"));
+}
+
+BOOST_AUTO_TEST_CASE(enclosed_constants) {
+  const interval pi = constant_pi<interval>();
+  BOOST_TEST(pi.lower() == 3.141592653589793);
+  BOOST_TEST(std::nextafter(pi.lower(), 4.0) == pi.upper());
+  const interval two_fifths = rational<interval>(2, 5);
+  rational_q exact("2/5");
+  mpfr_value lo, hi;
+  scalar_traits<interval>::to_mpfr(two_fifths, lo, hi);
+  BOOST_TEST(cmp_mpfr_q(lo, exact) < 0);
+  BOOST_TEST(cmp_mpfr_q(hi, exact) > 0);
+  BOOST_TEST(rational<double>(2, 5) == 0.4);
+}
+
+BOOST_AUTO_TEST_CASE(printing_round_trips_and_rounds_bounds_outward) {
+  std::mt19937_64 rng(12345);
+  std::uniform_real_distribution<double> mant(-1.0, 1.0);
+  std::uniform_int_distribution<int> expo(-300, 300);
+  int checked = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double x = std::ldexp(mant(rng), expo(rng));
+    BOOST_REQUIRE(from_decimal<double>(to_decimal(x)) == x);
+    const long double lx = static_cast<long double>(x) / 3.0L;
+    BOOST_REQUIRE(from_decimal<long double>(to_decimal(lx)) == lx);
+    const float128 q = float128(x) / 3;
+    BOOST_REQUIRE(from_decimal<float128>(to_decimal(q)) == q);
+    const interval box = interval(x) / interval(3.0);
+    const interval back(from_decimal<interval>(lower_string(box)).lower(),
+                        from_decimal<interval>(upper_string(box)).upper());
+    BOOST_REQUIRE(back.lower() <= box.lower());
+    BOOST_REQUIRE(back.upper() >= box.upper());
+    ++checked;
+  }
+  BOOST_TEST_MESSAGE("round trips checked: " << checked);
+  {
+    mp_precision_scope scope(256);
+    const mpfr third = mpfr(1) / 3;
+    BOOST_TEST(from_decimal<mpfr>(to_decimal(third)) == third);
+  }
+}

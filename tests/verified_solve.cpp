@@ -1,0 +1,321 @@
+// The verified solver encloses every exact rational solution, refuses
+// singular systems, and refuses (never returns a wrong box) where the interval
+// matrix is too ill-conditioned.  Exact solutions come from Gaussian
+// elimination over the rationals (GMP), independent of the code under test.
+#define BOOST_TEST_MODULE verified_solve
+#include <boost/test/unit_test.hpp>
+
+#include <gmp.h>
+
+#include <random>
+#include <vector>
+
+#include "appell/linalg/solve.hpp"
+#include "appell/scalar/decimal.hpp"
+#include "appell/scalar/format.hpp"
+
+using namespace appell;
+
+namespace {
+
+// Dense rational matrix, exact.
+struct qmatrix {
+  int n;
+  std::vector<mpq_t> a;
+  explicit qmatrix(int n_) : n(n_), a(static_cast<std::size_t>(n_ * n_)) {
+    for (auto& x : a) mpq_init(x);
+  }
+  ~qmatrix() {
+    for (auto& x : a) mpq_clear(x);
+  }
+  mpq_t& operator()(int i, int j) { return a[static_cast<std::size_t>(i * n + j)]; }
+};
+struct qvector {
+  std::vector<mpq_t> v;
+  explicit qvector(int n) : v(static_cast<std::size_t>(n)) {
+    for (auto& x : v) mpq_init(x);
+  }
+  ~qvector() {
+    for (auto& x : v) mpq_clear(x);
+  }
+  mpq_t& operator[](int i) { return v[static_cast<std::size_t>(i)]; }
+};
+
+// Solves A x = b exactly; false if A is singular.
+bool exact_solve(qmatrix& A, qvector& b, qvector& x) {
+  const int n = A.n;
+  mpq_t f, t;
+  mpq_init(f);
+  mpq_init(t);
+  bool regular = true;
+  for (int k = 0; k < n && regular; ++k) {
+    int p = k;
+    while (p < n && mpq_sgn(A(p, k)) == 0) ++p;
+    if (p == n) {
+      regular = false;
+      break;
+    }
+    if (p != k) {
+      for (int j = 0; j < n; ++j) mpq_swap(A(k, j), A(p, j));
+      mpq_swap(b[k], b[p]);
+    }
+    for (int i = k + 1; i < n; ++i) {
+      mpq_div(f, A(i, k), A(k, k));
+      for (int j = k; j < n; ++j) {
+        mpq_mul(t, f, A(k, j));
+        mpq_sub(A(i, j), A(i, j), t);
+      }
+      mpq_mul(t, f, b[k]);
+      mpq_sub(b[i], b[i], t);
+    }
+  }
+  if (regular) {
+    for (int i = n - 1; i >= 0; --i) {
+      mpq_set(x[i], b[i]);
+      for (int j = i + 1; j < n; ++j) {
+        mpq_mul(t, A(i, j), x[j]);
+        mpq_sub(x[i], x[i], t);
+      }
+      mpq_div(x[i], x[i], A(i, i));
+    }
+  }
+  mpq_clear(f);
+  mpq_clear(t);
+  return regular;
+}
+
+template <class T>
+bool encloses(const T& box, const mpq_t q) {
+  mpfr_value lo, hi;
+  scalar_traits<T>::to_mpfr(box, lo, hi);
+  return mpfr_cmp_q(lo, q) <= 0 && mpfr_cmp_q(hi, q) >= 0;
+}
+
+std::mt19937_64 rng(1788);
+
+// A random double in [-1, 1] with up to 21 significant bits.
+double random_entry() {
+  return std::ldexp(static_cast<double>(std::uniform_int_distribution<int>(-(1 << 20), 1 << 20)(rng)),
+                    -20 - std::uniform_int_distribution<int>(0, 20)(rng));
+}
+
+// Random systems with exact (thin) data: the exact rational solution is enclosed.
+template <class I>
+int random_thin_systems(bool spd, int count) {
+  int solved = 0;
+  for (int c = 0; c < count; ++c) {
+    const int n = std::uniform_int_distribution<int>(1, 12)(rng);
+    Eigen::MatrixXd G(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) G(i, j) = random_entry();
+    Eigen::MatrixXd A = G;
+    if (spd) {  // G^T G + n I, rounded: still exactly symmetric, and positive definite
+      A = G.transpose() * G;
+      A += n * Eigen::MatrixXd::Identity(n, n);
+      A = (A + A.transpose()) / 2;
+    }
+    Eigen::VectorXd b(n);
+    for (int i = 0; i < n; ++i) b(i) = random_entry();
+    matrix_t<I> AI(n, n);
+    vector_t<I> bI(n);
+    qmatrix Aq(n);
+    qvector bq(n), xq(n);
+    for (int i = 0; i < n; ++i) {
+      bI(i) = I(b(i));
+      mpq_set_d(bq[i], b(i));
+      for (int j = 0; j < n; ++j) {
+        AI(i, j) = I(A(i, j));
+        mpq_set_d(Aq(i, j), A(i, j));
+      }
+    }
+    const bool regular = exact_solve(Aq, bq, xq);
+    try {
+      const vector_t<I> x = spd ? solve_spd(AI, bI) : solve(AI, bI);
+      BOOST_REQUIRE_MESSAGE(regular, "a singular system was 'solved'");
+      for (int i = 0; i < n; ++i) BOOST_REQUIRE(encloses(x(i), xq[i]));
+      ++solved;
+    } catch (const certification_error&) {
+      // A refusal is allowed (never a wrong box); counted below.
+    }
+  }
+  return solved;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(random_spd_and_general_systems_enclose_the_exact_solution) {
+  const int count = 300;
+  int s1 = random_thin_systems<interval>(true, count);
+  int s2 = random_thin_systems<interval>(false, count);
+  BOOST_TEST_MESSAGE("interval: SPD " << s1 << "/" << count << " certified, general " << s2 << "/" << count);
+  BOOST_TEST(s1 == count);       // well conditioned by construction
+  BOOST_TEST(s2 >= count * 9 / 10);
+  mp_precision_scope scope(128);
+  int s3 = random_thin_systems<mpfi>(true, 100);
+  int s4 = random_thin_systems<mpfi>(false, 100);
+  BOOST_TEST_MESSAGE("mpfi 128: SPD " << s3 << "/100, general " << s4 << "/100");
+  BOOST_TEST(s3 == 100);
+  BOOST_TEST(s4 >= 90);
+}
+
+BOOST_AUTO_TEST_CASE(thick_systems_enclose_every_vertex_solution) {
+  // [A] = A0 + [-r, r] entrywise: the solution of each of many point systems
+  // drawn from the box (vertices and interior points, exact) lies in the result.
+  int checked = 0;
+  for (int c = 0; c < 60; ++c) {
+    const int n = std::uniform_int_distribution<int>(2, 6)(rng);
+    Eigen::MatrixXd A0 = Eigen::MatrixXd::Zero(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) A0(i, j) = random_entry();
+    A0 += 4.0 * Eigen::MatrixXd::Identity(n, n);
+    const double r = 1e-3;
+    matrix_t<interval> AI(n, n);
+    vector_t<interval> bI(n);
+    for (int i = 0; i < n; ++i) {
+      bI(i) = interval(1.0, 1.0 + r);
+      for (int j = 0; j < n; ++j) AI(i, j) = interval(A0(i, j) - r, A0(i, j) + r) ;
+    }
+    vector_t<interval> x;
+    try {
+      x = solve(AI, bI);
+    } catch (const certification_error&) {
+      continue;
+    }
+    std::uniform_int_distribution<int> coin(0, 2);
+    for (int sample = 0; sample < 30; ++sample) {
+      qmatrix Aq(n);
+      qvector bq(n), xq(n);
+      for (int i = 0; i < n; ++i) {
+        const int cb = coin(rng);
+        mpq_set_d(bq[i], cb == 0 ? bI(i).lower() : cb == 1 ? bI(i).upper() : boost::numeric::median(bI(i)));
+        for (int j = 0; j < n; ++j) {
+          const int ca = coin(rng);
+          mpq_set_d(Aq(i, j), ca == 0 ? AI(i, j).lower() : ca == 1 ? AI(i, j).upper() : A0(i, j));
+        }
+      }
+      BOOST_REQUIRE(exact_solve(Aq, bq, xq));
+      for (int i = 0; i < n; ++i) BOOST_REQUIRE(encloses(x(i), xq[i]));
+      ++checked;
+    }
+  }
+  BOOST_TEST_MESSAGE("thick systems: " << checked << " point solutions checked inside the enclosures");
+  BOOST_TEST(checked >= 1000);
+}
+
+namespace {
+// Hilbert system H x = e1 with H enclosed entrywise (1/(i+j+1) is not a double).
+template <class I>
+bool hilbert(int n) {
+  matrix_t<I> H(n, n);
+  vector_t<I> b = vector_t<I>::Zero(n);
+  b(0) = I(1);
+  qmatrix Hq(n);
+  qvector bq(n), xq(n);
+  mpq_set_ui(bq[0], 1, 1);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      H(i, j) = rational<I>(1, i + j + 1);
+      mpq_set_ui(Hq(i, j), 1, static_cast<unsigned long>(i + j + 1));
+    }
+  BOOST_REQUIRE(exact_solve(Hq, bq, xq));
+  try {
+    const vector_t<I> x = solve_spd(H, b);
+    for (int i = 0; i < n; ++i) BOOST_REQUIRE_MESSAGE(encloses(x(i), xq[i]), "Hilbert " << n << " misses");
+    BOOST_TEST_MESSAGE("  Hilbert " << n << ": certified, width of x[0] " << to_string(width(x(0))));
+    return true;
+  } catch (const certification_error& e) {
+    BOOST_TEST_MESSAGE("  Hilbert " << n << ": refused (" << e.what() << ")");
+    return false;
+  }
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(hilbert_systems_are_enclosed_until_they_must_be_refused) {
+  // At 53 bits the enclosure of H_n contains a singular matrix once
+  // cond(H_n) * 2^-53 exceeds 1 (n >= 13: cond ~ 1e18): no method may certify.
+  int last = 0;
+  for (int n = 2; n <= 16; ++n)
+    if (hilbert<interval>(n)) last = n;
+  BOOST_TEST_MESSAGE("interval: largest Hilbert system certified: " << last);
+  BOOST_TEST(last >= 8);
+  for (int n = 13; n <= 16; ++n) BOOST_TEST(!hilbert<interval>(n), "H_" << n << " must be refused");
+  mp_precision_scope scope(128);
+  int last_mp = 0;
+  for (int n = 2; n <= 30; ++n)
+    if (hilbert<mpfi>(n)) last_mp = n;
+  BOOST_TEST_MESSAGE("mpfi 128 bits: largest Hilbert system certified: " << last_mp);
+  BOOST_TEST(last_mp > last);
+  BOOST_TEST(!hilbert<mpfi>(40));
+}
+
+BOOST_AUTO_TEST_CASE(singular_systems_are_refused) {
+  int refused = 0;
+  for (int c = 0; c < 200; ++c) {
+    const int n = std::uniform_int_distribution<int>(2, 8)(rng);
+    // Exact integer matrix of rank n-1: last row = sum of two others.
+    matrix_t<interval> A(n, n);
+    std::uniform_int_distribution<int> small(-9, 9);
+    std::vector<std::vector<double>> M(n, std::vector<double>(n));
+    for (int i = 0; i < n - 1; ++i)
+      for (int j = 0; j < n; ++j) M[i][j] = small(rng);
+    for (int j = 0; j < n; ++j) M[n - 1][j] = M[0][j] + M[n > 2 ? 1 : 0][j];
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) A(i, j) = interval(M[i][j]);
+    vector_t<interval> b = vector_t<interval>::Ones(n);
+    BOOST_CHECK_THROW(solve(A, b), certification_error);
+    ++refused;
+  }
+  matrix_t<interval> A(2, 2);
+  A << interval(1.0), interval(2.0), interval(2.0), interval(4.0);
+  vector_t<interval> b(2);
+  b << interval(1.0), interval(2.0);
+  BOOST_CHECK_THROW(solve(A, b), certification_error);
+  BOOST_CHECK_THROW(solve_spd(A, b), certification_error);
+  // Point types refuse exact singularity too.
+  Eigen::MatrixXd Ad(2, 2);
+  Ad << 1, 2, 2, 4;
+  BOOST_CHECK_THROW(solve<double>(Ad, Eigen::VectorXd::Ones(2)), certification_error);
+  BOOST_TEST_MESSAGE("singular systems refused: " << refused + 1);
+}
+
+BOOST_AUTO_TEST_CASE(point_types_agree_with_the_exact_solution_to_their_precision) {
+  mp_precision_scope scope(256);
+  const int n = 6;
+  Eigen::MatrixXd G(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) G(i, j) = random_entry();
+  Eigen::MatrixXd A = G.transpose() * G + n * Eigen::MatrixXd::Identity(n, n);
+  A = (A + A.transpose()) / 2;
+  qmatrix Aq(n);
+  qvector bq(n), xq(n);
+  for (int i = 0; i < n; ++i) {
+    mpq_set_si(bq[i], i + 1, 1);
+    for (int j = 0; j < n; ++j) mpq_set_d(Aq(i, j), A(i, j));
+  }
+  BOOST_REQUIRE(exact_solve(Aq, bq, xq));
+  auto check = [&](auto zero, double tol) {
+    using T = decltype(zero);
+    matrix_t<T> At(n, n);
+    vector_t<T> bt(n);
+    for (int i = 0; i < n; ++i) {
+      bt(i) = T(i + 1);
+      for (int j = 0; j < n; ++j) At(i, j) = T(A(i, j));
+    }
+    for (const vector_t<T>& x : {solve_spd(At, bt), solve(At, bt)}) {
+      for (int i = 0; i < n; ++i) {
+        mpfr_value v, e(300);
+        to_mpfr_exact(x(i), v);
+        mpfr_set_q(e, xq[i], MPFR_RNDN);
+        mpfr_sub(e, e, v, MPFR_RNDN);
+        mpfr_div(e, e, v, MPFR_RNDN);
+        BOOST_TEST(std::abs(mpfr_get_d(e, MPFR_RNDN)) < tol, scalar_traits<T>::name);
+      }
+    }
+  };
+  // cond(A) is modest (< 1e4): relative error below 1e4 * eps.
+  check(0.0, 1e4 * 1.2e-16);
+  check(0.0L, 1e4 * 1.1e-19);
+  check(dd(0), 1e4 * 1e-31);
+  check(float128(0), 1e4 * 2e-34);
+  check(mpfr(0), 1e4 * 1e-75);
+}
