@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs the Debian packages appell needs, where they are missing.
+set -euo pipefail
+packages=(g++ make cmake libeigen3-dev libboost-dev libboost-test-dev libgmp-dev
+          libmpfr-dev libmpfi-dev libqd-dev nlohmann-json3-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "appell: installing Debian packages: ${missing[*]}" >&2
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi

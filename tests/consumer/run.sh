@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Installs the built appell into a scratch prefix, then builds and runs the
+# consumer project against it with find_package(appell CONFIG).
+set -euo pipefail
+build=$1; src=$2; scene=$3
+prefix=$build/consumer-prefix; cbuild=$build/consumer-build
+rm -rf "$prefix" "$cbuild"
+cmake --install "$build" --prefix "$prefix" >/dev/null
+cmake -S "$src" -B "$cbuild" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$cbuild" >/dev/null
+"$cbuild/consumer" "$scene"
