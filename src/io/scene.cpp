@@ -32,6 +32,41 @@ euler_body_input read_euler_body(object_reader& scene) {
   return in;
 }
 
+void require_positive(const object_reader& r, const std::string& key, const decimal_field& d) {
+  if (decimal_sign_of_sum({{1, d.text}}) <= 0) throw input_error(r.path(key) + ": must be positive, got " + d.text);
+}
+
+top_on_cone_input read_top_on_cone(object_reader& scene) {
+  top_on_cone_input in;
+  object_reader top = scene.object("top");
+  in.A = top.number("A");
+  in.C = top.number("C");
+  in.mass = top.number("mass");
+  in.l = top.number("l");
+  top.finish();
+  require_positive(top, "A", in.A);
+  require_positive(top, "C", in.C);
+  require_positive(top, "mass", in.mass);
+  // A >= m l^2 and C <= 2 (A - m l^2), exactly.
+  if (decimal_sign_of_polynomial({{1, {in.A.text}}, {-1, {in.mass.text, in.l.text, in.l.text}}}) < 0)
+    throw input_error(top.path("A") + ": a body of revolution has A >= m l^2 (A = " + in.A.text + ", m l^2 = " +
+                      in.mass.text + " * " + in.l.text + "^2)");
+  if (decimal_sign_of_polynomial({{2, {in.A.text}}, {-2, {in.mass.text, in.l.text, in.l.text}}, {-1, {in.C.text}}}) < 0)
+    throw input_error(top.path("C") + ": a body of revolution has C <= 2 (A - m l^2) (C = " + in.C.text + ")");
+  in.gravity = scene.number("gravity");
+  in.cone_text = scene.string("cone");
+  in.f = std::make_shared<expression>(expression::parse(in.cone_text, "theta", "cone"));
+  in.fprime = std::make_shared<expression>(in.f->derivative());
+  in.fsecond = std::make_shared<expression>(in.fprime->derivative());
+  object_reader state = scene.object("state");
+  in.theta = state.number("theta");
+  in.phi = state.number("phi");
+  in.theta_dot = state.number("theta_dot");
+  in.phi_dot = state.number("phi_dot");
+  state.finish();
+  return in;
+}
+
 }  // namespace
 
 scene_input read_scene(const json_value& root) {
@@ -40,8 +75,10 @@ scene_input read_scene(const json_value& root) {
   out.model = scene.string("model");
   if (out.model == "euler_body") {
     out.input = read_euler_body(scene);
+  } else if (out.model == "top_on_cone") {
+    out.input = read_top_on_cone(scene);
   } else {
-    throw input_error("model: unknown model '" + out.model + "' (known: euler_body)");
+    throw input_error("model: unknown model '" + out.model + "' (known: euler_body, top_on_cone)");
   }
   scene.finish();
   return out;

@@ -277,6 +277,26 @@ void decimal_to_mpq(std::string_view s, mpq_t out) {
 }
 }  // namespace
 
+int decimal_sign_of_polynomial(const std::vector<decimal_term>& terms) {
+  mpq_t sum, term, factor;
+  mpq_init(sum);
+  mpq_init(term);
+  mpq_init(factor);
+  for (const auto& t : terms) {
+    mpq_set_si(term, t.coefficient, 1);
+    for (const auto& f : t.factors) {
+      decimal_to_mpq(f, factor);
+      mpq_mul(term, term, factor);
+    }
+    mpq_add(sum, sum, term);
+  }
+  const int sign = mpq_sgn(sum);
+  mpq_clear(factor);
+  mpq_clear(term);
+  mpq_clear(sum);
+  return sign;
+}
+
 int decimal_sign_of_sum(std::initializer_list<std::pair<int, std::string_view>> terms) {
   mpq_t sum, term;
   mpq_init(sum);

@@ -14,6 +14,11 @@
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/format.hpp"
 #include "appell/scenes/euler_body.hpp"
+#include "appell/scenes/top_on_cone.hpp"
+#include "appell/dynamics/virtual_work.hpp"
+#include "appell/reactions/lagrange.hpp"
+#include "appell/reactions/wrench.hpp"
+#include <memory>
 
 namespace appell {
 
@@ -23,9 +28,16 @@ struct euler_body_input {
   std::vector<decimal_field> omega;    // p, q, r
 };
 
+struct top_on_cone_input {
+  decimal_field A, C, mass, l, gravity;
+  std::string cone_text;
+  std::shared_ptr<const expression> f, fprime, fsecond;  ///< f, f', f'' (symbolic)
+  decimal_field theta, phi, theta_dot, phi_dot;
+};
+
 struct scene_input {
   std::string model;
-  std::variant<euler_body_input> input;
+  std::variant<euler_body_input, top_on_cone_input> input;
 };
 
 /// Validates a parsed scene; throws input_error naming the field.
@@ -77,12 +89,58 @@ named_result<T> scalar_result(std::string name, const T& v) {
 
 template <Scalar T>
 evaluation<T> evaluate_model(const euler_body_input& in) {
-  euler_body<T> body{vec3_from_decimals<T>(in.inertia), vec3_from_decimals<T>(in.torque)};
+  const euler_system<T> sys{{vec3_from_decimals<T>(in.inertia), vec3_from_decimals<T>(in.torque)}};
   const vec3<T> omega = vec3_from_decimals<T>(in.omega);
-  const vec3<T> omega_dot = euler_omega_dot(body, omega);
+  const vector_t<T> q = vector_t<T>::Zero(3), u = omega;
+  const appell_equations<T> eq = gibbs_appell(sys, q, u, T(0));
+  const vector_t<T> udot = eq.accelerations();
+  const vec3<T> omega_dot(udot(0), udot(1), udot(2));
   evaluation<T> e;
   e.results.push_back(vector_result("omega_dot", omega_dot));
-  e.checks.push_back(scalar_result("power_balance", euler_power_residual(body, omega, omega_dot)));
+  e.checks.push_back(scalar_result("virtual_work_invariant",
+                                   virtual_work_residual(sys, eq, q, u, T(0), udot, vector_t<T>(vector_t<T>::Ones(3)))));
+  e.checks.push_back(scalar_result("power_balance", euler_power_residual(sys.body, omega, omega_dot)));
+  return e;
+}
+template <Scalar T>
+evaluation<T> evaluate_model(const top_on_cone_input& in) {
+  const heavy_top<T> top{value<T>(in.A), value<T>(in.C), value<T>(in.mass), value<T>(in.l), value<T>(in.gravity)};
+  const T theta = value<T>(in.theta), phi = value<T>(in.phi);
+  const T theta_dot = value<T>(in.theta_dot), phi_dot = value<T>(in.phi_dot);
+  const T t = T(0);
+  const T f = in.f->eval(theta), fp = in.fprime->eval(theta), fpp = in.fsecond->eval(theta);
+  vector_t<T> q(3);
+  q << f, theta, phi;
+  // Cotton (sec. 6): speeds (theta', phi', psi_1'), the cone is psi_1' = 0.
+  const auto sys = change_speeds(top, cone_speeds<T>{in.fprime.get()}, 3);
+  vector_t<T> v_a(2);
+  v_a << theta_dot, phi_dot;
+  const cotton_result<T> c = cotton_reactions(sys, q, v_a, t, 1);
+  const T theta_ddot = c.free_accelerations(0), phi_ddot = c.free_accelerations(1);
+  const T H = c.reactions(0);
+  const T psi_ddot = fpp * theta_dot * theta_dot + fp * theta_ddot;  // d/dt (f'(theta) theta')
+  // The couple: J_w^T Gamma = (0, 0, H) in Cotton's speeds (wrench.hpp).
+  vector_t<T> v(3), vdot(3), generalized(3);
+  v << theta_dot, phi_dot, T(0);
+  vdot << theta_ddot, phi_ddot, T(0);
+  generalized << T(0), T(0), H;
+  const auto kin = differentiate_kinematics(sys, q, v, t);
+  const vec3<T> couple = constraint_couple(kin[0], generalized);
+  // Checks: eq. (4) and Lagrange's multiplier on the unconstrained top.
+  vector_t<T> ones = vector_t<T>::Ones(3);
+  const T vw = virtual_work_residual(sys, c.equations, q, v, t, vdot, ones);
+  vector_t<T> u(3);
+  u << fp * theta_dot, theta_dot, phi_dot;
+  const constrained_motion<T> lag = lagrange_multipliers(top, cone_constraint<T>{in.fprime.get()}, q, u, t);
+  evaluation<T> e;
+  e.results.push_back(scalar_result("theta_ddot", theta_ddot));
+  e.results.push_back(scalar_result("phi_ddot", phi_ddot));
+  e.results.push_back(scalar_result("psi_ddot", psi_ddot));
+  e.results.push_back(scalar_result("H", H));
+  e.results.push_back(vector_result("couple", couple));
+  e.checks.push_back(scalar_result("virtual_work_invariant", vw));
+  e.checks.push_back(scalar_result("cotton_minus_lagrange", T(H - lag.reactions(0))));
+  e.checks.push_back(scalar_result("theta_ddot_cotton_minus_lagrange", T(theta_ddot - lag.accelerations(1))));
   return e;
 }
 }  // namespace detail

@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "appell/scalar/traits.hpp"
 
@@ -75,8 +76,15 @@ template <Scalar T> T constant_pi() { return produce<T>(pi_producer()); }
 /// rounded in direction rnd (used by tests and by exact input validation).
 void decimal_to_mpfr(std::string_view s, mpfr_value& out, mpfr_rnd_t rnd);
 
-/// Compares two decimal literals exactly (-1, 0, 1), and signs of exact sums:
-/// sign of (a + b - c), used to validate inputs on their exact values.
+/// The sign (-1, 0, 1) of an exact sum of terms coefficient * d1 * d2 * ...
+/// of decimal literals, computed over the rationals: inputs are validated on
+/// their exact values, never after rounding.
+struct decimal_term {
+  long coefficient;
+  std::vector<std::string> factors;
+};
+int decimal_sign_of_polynomial(const std::vector<decimal_term>& terms);
+/// Shorthand for sums of single decimals: sign of c1 d1 + c2 d2 + ...
 int decimal_sign_of_sum(std::initializer_list<std::pair<int, std::string_view>> terms);
 
 }  // namespace appell

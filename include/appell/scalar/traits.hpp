@@ -224,6 +224,12 @@ template <Scalar T> bool is_finite(const T& x) {
   }
 }
 
+/// A double near x (its midpoint for intervals): for choices and messages, never for results.
+template <Scalar T> double approx_double(const T& x) {
+  if constexpr (std::is_same_v<T, dd>) return x.x[0];
+  else return static_cast<double>(mid(x));
+}
+
 /// x contains the real number v (given exactly as an MPFR value).
 template <Scalar T>
 bool contains(const T& x, mpfr_srcptr v) {

@@ -6,10 +6,13 @@
 // Appell's S = 1/2 (A p'^2 + B q'^2 + C r'^2) + (C - B) q r p' + (A - C) r p q'
 //            + (B - A) p q r' + ..., and dS/dp' = L etc. give
 //   A p' = (B - C) q r + L,   B q' = (C - A) r p + M,   C r' = (A - B) p q + N.
-// Written directly here; the generic Gibbs-Appell path reproduces it.
+// euler_omega_dot() writes them directly (the reference of the tests);
+// euler_system is the same body for the generic Gibbs-Appell path, which the
+// `appell eval` model uses: components on the body axes, a frame turning with
+// omega itself, speeds u = (p, q, r), parameters with lambda' = p, ... (sec. 3).
 #pragma once
 
-#include "appell/scalar/eigen.hpp"
+#include "appell/dynamics/system.hpp"
 
 namespace appell {
 
@@ -39,5 +42,27 @@ T euler_power_residual(const euler_body<T>& body, const vec3<T>& omega, const ve
     residual += omega(i) * (body.inertia(i) * omega_dot(i) - body.torque(i));
   return residual;
 }
+
+/// Euler's body as a system for the generic path.
+template <Scalar T>
+struct euler_system {
+  euler_body<T> body;
+  int speeds() const { return 3; }
+  template <class S>
+  vector_t<S> qdot(const vector_t<S>&, const vector_t<S>& u, const S&) const {
+    return u;  // lambda' = p, mu' = q, nu' = r
+  }
+  template <class S>
+  void bodies(const vector_t<S>&, const vector_t<S>& u, const S&, std::vector<body_state<S>>& out) const {
+    body_state<S> b;  // mass irrelevant: G is fixed
+    b.omega = vec3<S>(u(0), u(1), u(2));
+    b.frame_rate = b.omega;  // the body axes turn with the body
+    for (int i = 0; i < 3; ++i) {
+      b.inertia(i, i) = S(body.inertia(i));
+      b.couple(i) = S(body.torque(i));
+    }
+    out.push_back(b);
+  }
+};
 
 }  // namespace appell

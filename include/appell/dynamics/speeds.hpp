@@ -1,0 +1,136 @@
+// appell/dynamics/speeds.hpp -- changes of generalized speeds (quasi-velocities).
+//
+// A change u = T(q,t) v + t(q,t), integrable or not, is a library operation:
+// with_speeds<Base, Change> is the same mechanical system described with the
+// speeds v, and gibbs_appell() differentiates it like any other (so the
+// velocity-product terms of T' v + t' come for free).  Eq. (4) says
+// P_v = T^T P_u; tests check it with random invertible T.
+//
+// adapted_speeds builds, from frictionless constraints A(q,t) u = a(q,t)
+// (s rows), speeds v = (v_a, v_c) in which the constraints read v_c = 0
+// (Cotton sec. 5): v_a are k = n - s components of u chosen at the state
+// (column pivoting on the midpoint of A), and v_c = A u - a.
+#pragma once
+
+#include <algorithm>
+#include <numeric>
+
+#include "appell/dynamics/system.hpp"
+
+namespace appell {
+
+template <class Base, class Change>
+struct with_speeds {
+  const Base* base;
+  Change change;  ///< change.template apply<S>(q, v, t) -> u, affine in v
+  int k;          ///< dim v
+  int speeds() const { return k; }
+  template <class S>
+  vector_t<S> qdot(const vector_t<S>& q, const vector_t<S>& v, const S& t) const {
+    return base->template qdot<S>(q, change.template apply<S>(q, v, t), t);
+  }
+  template <class S>
+  void bodies(const vector_t<S>& q, const vector_t<S>& v, const S& t, std::vector<body_state<S>>& out) const {
+    base->template bodies<S>(q, change.template apply<S>(q, v, t), t, out);
+  }
+};
+
+/// u = T v + t with constant T, t.
+template <Scalar T>
+struct constant_change {
+  matrix_t<T> Tm;
+  vector_t<T> tv;
+  template <class S>
+  vector_t<S> apply(const vector_t<S>&, const vector_t<S>& v, const S&) const {
+    vector_t<S> u(Tm.rows());
+    for (Eigen::Index i = 0; i < Tm.rows(); ++i) {
+      S s = S(tv(i));
+      for (Eigen::Index j = 0; j < Tm.cols(); ++j) s += S(Tm(i, j)) * v(j);
+      u(i) = s;
+    }
+    return u;
+  }
+};
+
+template <class Base, class Change>
+with_speeds<Base, Change> change_speeds(const Base& base, Change change, int k) {
+  return {&base, std::move(change), k};
+}
+
+/// Frictionless constraints A(q,t) u = a(q,t) given by a templated callable:
+///   con.count() -> s;   con.template eval<S>(q, t, A (s x n), a (s)).
+/// The speeds v = (u_free (k of them), A u - a (s of them)).
+template <class Constraint>
+struct adapted_change {
+  Constraint con;
+  std::vector<int> free_columns;  ///< the k components of u kept as speeds
+  std::vector<int> bound_columns;  ///< the s components solved from the constraints
+
+  template <class S>
+  vector_t<S> apply(const vector_t<S>& q, const vector_t<S>& v, const S& t) const {
+    const int s = con.count(), k = static_cast<int>(free_columns.size()), n = k + s;
+    matrix_t<S> A(s, n);
+    vector_t<S> a(s);
+    con.template eval<S>(q, t, A, a);
+    vector_t<S> u(n);
+    for (int i = 0; i < k; ++i) u(free_columns[i]) = v(i);
+    // A_b u_b = v_c + a - A_f u_f, by elimination in the order fixed at the state.
+    matrix_t<S> Ab(s, s);
+    vector_t<S> rhs(s);
+    for (int r = 0; r < s; ++r) {
+      S x = v(k + r) + a(r);
+      for (int i = 0; i < k; ++i) x -= A(r, free_columns[i]) * v(i);
+      rhs(r) = x;
+      for (int c = 0; c < s; ++c) Ab(r, c) = A(r, bound_columns[c]);
+    }
+    for (int p = 0; p < s; ++p)
+      for (int r = p + 1; r < s; ++r) {
+        const S f = Ab(r, p) / Ab(p, p);
+        for (int c = p; c < s; ++c) Ab(r, c) -= f * Ab(p, c);
+        rhs(r) -= f * rhs(p);
+      }
+    for (int p = s - 1; p >= 0; --p) {
+      S x = rhs(p);
+      for (int c = p + 1; c < s; ++c) x -= Ab(p, c) * u(bound_columns[c]);
+      u(bound_columns[p]) = x / Ab(p, p);
+    }
+    return u;
+  }
+};
+
+/// Chooses the bound columns by pivoting on mid(A) at (q, t), largest pivot first.
+template <Scalar T, class Constraint>
+adapted_change<Constraint> adapt_speeds(const Constraint& con, const vector_t<T>& q, const T& t, int n) {
+  const int s = con.count();
+  matrix_t<T> A(s, n);
+  vector_t<T> a(s);
+  con.template eval<T>(q, t, A, a);
+  Eigen::MatrixXd Am(s, n);
+  for (int i = 0; i < s; ++i)
+    for (int j = 0; j < n; ++j) Am(i, j) = approx_double(A(i, j));
+  std::vector<int> bound, order(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  std::vector<bool> used(static_cast<std::size_t>(n), false);
+  for (int r = 0; r < s; ++r) {  // Gaussian elimination with full column choice, on doubles
+    int best = -1;
+    double best_abs = 0;
+    for (int j = 0; j < n; ++j)
+      if (!used[static_cast<std::size_t>(j)] && std::abs(Am(r, j)) > best_abs) {
+        best_abs = std::abs(Am(r, j));
+        best = j;
+      }
+    if (best < 0) throw certification_error("constraints: the rows of A are dependent at this state");
+    used[static_cast<std::size_t>(best)] = true;
+    bound.push_back(best);
+    for (int r2 = r + 1; r2 < s; ++r2) {
+      const double f = Am(r2, best) / Am(r, best);
+      Am.row(r2) -= f * Am.row(r);
+    }
+  }
+  std::vector<int> free;
+  for (int j = 0; j < n; ++j)
+    if (!used[static_cast<std::size_t>(j)]) free.push_back(j);
+  return {con, free, bound};
+}
+
+}  // namespace appell

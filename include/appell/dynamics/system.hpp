@@ -1,0 +1,178 @@
+// appell/dynamics/system.hpp -- Gibbs-Appell equations of a user's system.
+//
+// A system is described once, as templated C++ (see examples/ and scenes/):
+//
+//   struct my_system {
+//     int speeds() const;                                   // k = dim u
+//     template <class S> vector_t<S> qdot(q, u, t) const;   // q' = W(q,t) u + w(q,t)
+//     template <class S> void bodies(q, u, t, std::vector<body_state<S>>& out) const;
+//   };
+//
+// For each rigid body (or particle: zero inertia, zero omega) `bodies` gives,
+// in components on a frame F of its choice that turns with angular velocity
+// `frame_rate` (0 for a fixed frame): mass, central inertia tensor (it may vary
+// with time, as in paper sec. 4), velocity of G and angular velocity -- both
+// affine in u -- and the applied force through G and couple.
+//
+// The library differentiates the kinematics itself (dual.hpp): with
+// v = J u + j,  a_G = J_v u' + c_v,  alpha = J_w u' + c_w, where
+// c = d/dt(J u + j)|_{u fixed} + frame_rate x (J u + j).  Appell's acceleration
+// energy of a body (DESIGN.md sec. 1),
+//   S = 1/2 m |a_G|^2 + 1/2 alpha . I alpha + alpha . (omega x I omega) + (free of u'),
+// gives S2 + S1 = 1/2 u'^T M u' + b^T u'  (S0 is never formed: Cotton sec. 2) with
+//   M = sum m J_v^T J_v + J_w^T I J_w,
+//   b = sum m J_v^T c_v + J_w^T (I c_w + omega x I omega),
+// and Appell's equations (5), P = dS/du' = M u' + b = Q,
+//   Q = sum J_v^T F + J_w^T Gamma  (virtual power of the applied forces).
+#pragma once
+
+#include <vector>
+
+#include "appell/dynamics/dual.hpp"
+#include "appell/linalg/solve.hpp"
+
+namespace appell {
+
+template <class S>
+struct body_state {
+  S mass = S(0);
+  mat3<S> inertia = mat3<S>::Zero();  ///< central inertia tensor, components on F
+  vec3<S> velocity = vec3<S>::Zero();  ///< of the centre of mass, on F
+  vec3<S> omega = vec3<S>::Zero();     ///< angular velocity of the body, on F
+  vec3<S> frame_rate = vec3<S>::Zero();  ///< angular velocity of F (0: F is fixed)
+  vec3<S> force = vec3<S>::Zero();     ///< applied force through G, on F
+  vec3<S> couple = vec3<S>::Zero();    ///< applied couple, on F
+};
+
+template <class Sys, class T>
+concept mechanical_system = requires(const Sys& s, const vector_t<T>& q, const T& t,
+                                     std::vector<body_state<T>>& out) {
+  { s.speeds() } -> std::convertible_to<int>;
+  { s.template qdot<T>(q, q, t) } -> std::convertible_to<vector_t<T>>;
+  s.template bodies<T>(q, q, t, out);
+};
+
+template <class T>
+vec3<T> cross(const vec3<T>& a, const vec3<T>& b) {
+  return vec3<T>(a(1) * b(2) - a(2) * b(1), a(2) * b(0) - a(0) * b(2), a(0) * b(1) - a(1) * b(0));
+}
+template <class T>
+T dot(const vec3<T>& a, const vec3<T>& b) {
+  return a(0) * b(0) + a(1) * b(1) + a(2) * b(2);
+}
+template <class T>
+vec3<T> mat_vec(const mat3<T>& A, const vec3<T>& x) {  // coefficient-based (no Eigen kernels on intervals)
+  vec3<T> y;
+  for (int i = 0; i < 3; ++i) y(i) = A(i, 0) * x(0) + A(i, 1) * x(1) + A(i, 2) * x(2);
+  return y;
+}
+
+/// One body's kinematics, differentiated: J columns and the velocity-product terms.
+template <class T>
+struct body_kinematics {
+  body_state<T> state;
+  Eigen::Matrix<T, 3, Eigen::Dynamic> Jv, Jw;  ///< dv_G/du, domega/du
+  vec3<T> cv, cw;                              ///< a_G = Jv u' + cv, alpha = Jw u' + cw
+};
+
+namespace detail {
+template <class T>
+vector_t<dual<T>> seeded(const vector_t<T>& x, const vector_t<T>* direction) {
+  vector_t<dual<T>> r(x.size());
+  for (Eigen::Index i = 0; i < x.size(); ++i) r(i) = dual<T>(x(i), direction ? (*direction)(i) : T(0));
+  return r;
+}
+template <class T>
+vec3<T> value(const vec3<dual<T>>& x) { return vec3<T>(x(0).v, x(1).v, x(2).v); }
+template <class T>
+vec3<T> derivative(const vec3<dual<T>>& x) { return vec3<T>(x(0).d, x(1).d, x(2).d); }
+}  // namespace detail
+
+/// Kinematics of every body at (q, u, t), with J and c obtained by forward differentiation.
+template <Scalar T, class Sys>
+std::vector<body_kinematics<T>> differentiate_kinematics(const Sys& sys, const vector_t<T>& q,
+                                                         const vector_t<T>& u, const T& t) {
+  const int k = sys.speeds();
+  std::vector<body_state<T>> plain;
+  sys.template bodies<T>(q, u, t, plain);
+  std::vector<body_kinematics<T>> out(plain.size());
+  for (std::size_t i = 0; i < plain.size(); ++i) {
+    out[i].state = plain[i];
+    out[i].Jv.resize(3, k);
+    out[i].Jw.resize(3, k);
+  }
+  std::vector<body_state<dual<T>>> d;
+  const vector_t<dual<T>> q0 = detail::seeded<T>(q, nullptr);
+  for (int c = 0; c < k; ++c) {  // column c of J: seed u_c
+    vector_t<T> e = vector_t<T>::Zero(k);
+    e(c) = T(1);
+    d.clear();
+    sys.template bodies<dual<T>>(q0, detail::seeded<T>(u, &e), dual<T>(t), d);
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      out[i].Jv.col(c) = detail::derivative(d[i].velocity);
+      out[i].Jw.col(c) = detail::derivative(d[i].omega);
+    }
+  }
+  // Velocity-product terms: seed q' = W u + w and t' = 1, u fixed.
+  const vector_t<T> qd = sys.template qdot<T>(q, u, t);
+  d.clear();
+  sys.template bodies<dual<T>>(detail::seeded<T>(q, &qd), detail::seeded<T>(u, nullptr), dual<T>(t, T(1)), d);
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    const body_state<T>& s = plain[i];
+    out[i].cv = detail::derivative(d[i].velocity) + cross(s.frame_rate, s.velocity);
+    out[i].cw = detail::derivative(d[i].omega) + cross(s.frame_rate, s.omega);
+  }
+  return out;
+}
+
+/// Appell's equations M u' + b = Q at one state.
+template <Scalar T>
+struct appell_equations {
+  matrix_t<T> M;  ///< d2S/du'2, symmetric positive definite
+  vector_t<T> b;  ///< the S1 terms: S1 = b . u'
+  vector_t<T> Q;  ///< generalized active forces
+
+  /// P = dS/du' = M u' + b.
+  vector_t<T> P(const vector_t<T>& udot) const { return detail::product(M, udot) + b; }
+  /// The useful part of the acceleration energy, S2 + S1 = 1/2 u'.M u' + b.u'.
+  T S2_plus_S1(const vector_t<T>& udot) const {
+    const vector_t<T> Mu = detail::product(M, udot);
+    T s = T(0);
+    for (Eigen::Index i = 0; i < udot.size(); ++i) s += (Mu(i) / T(2) + b(i)) * udot(i);
+    return s;
+  }
+  /// The accelerations u' = M^-1 (Q - b) (verified for interval types).
+  vector_t<T> accelerations() const { return solve_spd(M, vector_t<T>(Q - b)); }
+};
+
+/// Assembles M, b, Q from the differentiated kinematics.
+template <Scalar T>
+appell_equations<T> assemble(const std::vector<body_kinematics<T>>& bodies, int k) {
+  appell_equations<T> e{matrix_t<T>::Zero(k, k), vector_t<T>::Zero(k), vector_t<T>::Zero(k)};
+  for (const auto& B : bodies) {
+    const body_state<T>& s = B.state;
+    const vec3<T> Iw = mat_vec(s.inertia, s.omega);
+    const vec3<T> rot_bias = mat_vec(s.inertia, B.cw) + cross(s.omega, Iw);  // I c_w + w x I w
+    for (int i = 0; i < k; ++i) {
+      const vec3<T> jvi = B.Jv.col(i), jwi = B.Jw.col(i);
+      const vec3<T> Ijwi = mat_vec(s.inertia, jwi);
+      for (int j = i; j < k; ++j) {
+        const vec3<T> jvj = B.Jv.col(j), jwj = B.Jw.col(j);
+        const T mij = s.mass * dot(jvi, jvj) + dot(Ijwi, jwj);
+        e.M(i, j) += mij;
+        if (j != i) e.M(j, i) += mij;
+      }
+      e.b(i) += s.mass * dot(jvi, B.cv) + dot(jwi, rot_bias);
+      e.Q(i) += dot(jvi, s.force) + dot(jwi, s.couple);
+    }
+  }
+  return e;
+}
+
+/// Appell's equations of a system at (q, u, t).
+template <Scalar T, class Sys>
+appell_equations<T> gibbs_appell(const Sys& sys, const vector_t<T>& q, const vector_t<T>& u, const T& t) {
+  return assemble(differentiate_kinematics(sys, q, u, t), sys.speeds());
+}
+
+}  // namespace appell

@@ -1,0 +1,141 @@
+// appell/expr/expression.hpp -- the scene expression language (SCENES.md):
+// numbers, pi, one variable, + - * / ^, parentheses, sin cos tan exp log sqrt.
+//
+// An expression is parsed once into a tree; derivative() differentiates it
+// symbolically (f' and f'' of the cone psi = f(theta) come from here, not from
+// hand-written formulas).  eval() runs on any scalar and on dual numbers of
+// it; decimal constants are enclosed exactly like every other input (they are
+// converted by from_decimal<T>, never through a double).  Division by zero, log
+// or sqrt outside the domain at the evaluation point are errors naming the
+// expression: input_error when they certainly happen, certification_error when
+// an interval merely cannot exclude them.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "appell/dynamics/dual.hpp"
+#include "appell/io/json.hpp"
+#include "appell/linalg/solve.hpp"
+#include "appell/scalar/decimal.hpp"
+#include "appell/scalar/format.hpp"
+
+namespace appell {
+
+class expression {
+ public:
+  enum class op { number, pi, variable, add, sub, mul, div, pow, neg, sin, cos, tan, exp, log, sqrt };
+  struct node {
+    op kind;
+    int a = -1, b = -1;  ///< operands (indices into nodes)
+    std::string number;  ///< the decimal text of a number
+  };
+
+  /// Parses `text` in the variable `variable`; throws input_error("where: ...").
+  static expression parse(const std::string& text, const std::string& variable, const std::string& where);
+  /// d/d(variable), symbolically.
+  expression derivative() const;
+  std::string to_string() const;
+  const std::string& where() const { return where_; }
+
+  /// The value at x (S a scalar or a dual of one); T is the base scalar.
+  template <class S>
+  S eval(const S& x) const {
+    return eval_node<S>(root_, x);
+  }
+
+ private:
+  int add_node(op k, int a = -1, int b = -1, std::string number = {});
+  int derive(int i, expression& out, std::vector<int>& copied) const;
+  int copy_into(int i, expression& out, std::vector<int>& copied) const;
+  std::string node_string(int i) const;
+  bool is_integer(int i, long& value) const;
+
+  template <class S>
+  S eval_node(int i, const S& x) const;
+
+  std::vector<node> nodes_;
+  int root_ = -1;
+  std::string where_;
+};
+
+namespace detail {
+template <class S>
+const base_scalar_t<S>& value_of(const S& x) {
+  if constexpr (is_dual<S>::value) return value_of(x.v);
+  else return x;
+}
+template <class T>
+std::string describe(const T& x) { return to_string(x); }
+}  // namespace detail
+
+template <class S>
+S expression::eval_node(int i, const S& x) const {
+  using T = base_scalar_t<S>;
+  using std::sin, std::cos, std::tan, std::exp, std::log, std::sqrt;
+  const node& n = nodes_[static_cast<std::size_t>(i)];
+  auto domain = [&](bool certainly_bad, bool possibly_bad, const std::string& what, const T& at) {
+    if (certainly_bad) throw input_error(where_ + ": " + what + " at the state (" + detail::describe(at) + ")");
+    if (possibly_bad)
+      throw certification_error(where_ + ": cannot exclude " + what + " at the state (" + detail::describe(at) + ")");
+  };
+  switch (n.kind) {
+    case op::number: return S(from_decimal<T>(n.number));
+    case op::pi: return S(constant_pi<T>());
+    case op::variable: return x;
+    case op::add: return eval_node(n.a, x) + eval_node(n.b, x);
+    case op::sub: return eval_node(n.a, x) - eval_node(n.b, x);
+    case op::mul: return eval_node(n.a, x) * eval_node(n.b, x);
+    case op::neg: return -eval_node(n.a, x);
+    case op::div: {
+      const S den = eval_node(n.b, x);
+      const T& d = detail::value_of(den);
+      domain(certainly_nonnegative(d) && certainly_nonpositive(d), possibly_zero(d), "division by zero", d);
+      return eval_node(n.a, x) / den;
+    }
+    case op::pow: {
+      long k = 0;
+      const S base = eval_node(n.a, x);
+      if (is_integer(n.b, k) && k > -1000000 && k < 1000000) {
+        if (k < 0) {
+          const T& d = detail::value_of(base);
+          domain(certainly_nonnegative(d) && certainly_nonpositive(d), possibly_zero(d), "0 to a negative power", d);
+        }
+        return power(base, static_cast<int>(k));
+      }
+      const T& d = detail::value_of(base);  // a^b = exp(b log a), a > 0
+      domain(certainly_nonpositive(d), !certainly_positive(d), "a non-integer power of a number <= 0", d);
+      return exp(eval_node(n.b, x) * log(base));
+    }
+    case op::sin: return sin(eval_node(n.a, x));
+    case op::cos: return cos(eval_node(n.a, x));
+    case op::tan: {
+      const S y = eval_node(n.a, x);
+      const S c = cos(y);
+      const T& d = detail::value_of(c);
+      domain(certainly_nonnegative(d) && certainly_nonpositive(d), possibly_zero(d), "tan at a pole", d);
+      return tan(y);
+    }
+    case op::exp: return exp(eval_node(n.a, x));
+    case op::log: {
+      const S y = eval_node(n.a, x);
+      const T& d = detail::value_of(y);
+      domain(certainly_nonpositive(d), !certainly_positive(d), "log of a number <= 0", d);
+      return log(y);
+    }
+    case op::sqrt: {
+      const S y = eval_node(n.a, x);
+      const T& d = detail::value_of(y);
+      // sqrt is not differentiable at 0: a dual argument must be > 0
+      if constexpr (is_dual<S>::value)
+        domain(certainly_nonpositive(d), !certainly_positive(d), "sqrt of a number <= 0 (its derivative)", d);
+      else
+        domain(certainly_negative(d), possibly_negative(d), "sqrt of a negative number", d);
+      return sqrt(y);
+    }
+  }
+  throw std::logic_error("expression: unknown node");
+}
+
+}  // namespace appell

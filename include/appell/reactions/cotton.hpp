@@ -1,0 +1,76 @@
+// appell/reactions/cotton.hpp -- Cotton's reactions of added frictionless
+// constraints (paper sec. 5, eqs. 11-15).
+//
+// In speeds v = (v_a, v_c) adapted to the s added constraints (v_c = 0):
+//  1. the constrained system's S-bar is S with v_c = 0 and v_c' = 0 (12, 13);
+//     its equations  M_aa v_a' + b_a = Q_a  give the k free accelerations;
+//  2. the reactions are  Q'_c = (dS/dv_c')|_(12,13) - Q-bar_c
+//                             = M_ca v_a' + b_c - Q_c            (14),
+//     with v_a' substituted;
+//  3. Q'_c . dv_c is the virtual work of the constraint forces (15).
+// cotton_reactions(sys, q, v_a, t, s) takes a system whose last s speeds are
+// the constrained ones; cotton_reactions(sys, con, q, u, t) takes constraints
+// A(q,t) u = a(q,t) on any system and builds the adapted speeds itself
+// (speeds.hpp).  With v_c = A u - a, Q'_c equals the Lagrange multipliers of
+// lagrange.hpp: the library computes both and the tests compare them.
+#pragma once
+
+#include "appell/dynamics/speeds.hpp"
+#include "appell/dynamics/system.hpp"
+
+namespace appell {
+
+template <Scalar T>
+struct cotton_result {
+  vector_t<T> free_accelerations;  ///< v_a'
+  vector_t<T> reactions;           ///< Q'_c, one per added constraint
+  appell_equations<T> equations;   ///< of the unconstrained system, at v_c = 0
+};
+
+/// The last s speeds of `sys` are constrained to 0; v_a holds the other k.
+template <Scalar T, class Sys>
+cotton_result<T> cotton_reactions(const Sys& sys, const vector_t<T>& q, const vector_t<T>& v_a, const T& t, int s) {
+  const int k = static_cast<int>(v_a.size()), n = k + s;
+  if (sys.speeds() != n) throw std::invalid_argument("cotton_reactions: k + s differs from the system's speeds");
+  vector_t<T> v = vector_t<T>::Zero(n);
+  v.head(k) = v_a;  // (12): v_c = 0
+  cotton_result<T> r{vector_t<T>(), vector_t<T>(), gibbs_appell(sys, q, v, t)};
+  const appell_equations<T>& e = r.equations;
+  const matrix_t<T> Maa = e.M.topLeftCorner(k, k);
+  r.free_accelerations = solve_spd(Maa, vector_t<T>(e.Q.head(k) - e.b.head(k)));
+  // (13) v_c' = 0, then (14)
+  const matrix_t<T> Mca = e.M.bottomLeftCorner(s, k);
+  r.reactions = detail::product(Mca, r.free_accelerations) + e.b.tail(s) - e.Q.tail(s);
+  return r;
+}
+
+/// Result in the original speeds u of a system with constraints A u = a.
+template <Scalar T>
+struct constrained_motion {
+  vector_t<T> accelerations;  ///< u', consistent with the constraints
+  vector_t<T> reactions;      ///< Q'_c (Cotton) or lambda (Lagrange), one per constraint
+};
+
+/// Cotton's method for constraints given as A(q,t) u = a(q,t).
+template <Scalar T, class Sys, class Constraint>
+constrained_motion<T> cotton_reactions(const Sys& sys, const Constraint& con, const vector_t<T>& q,
+                                       const vector_t<T>& u, const T& t) {
+  const int n = sys.speeds(), s = con.count(), k = n - s;
+  auto change = adapt_speeds<T>(con, q, t, n);
+  const auto adapted = change_speeds(sys, change, n);
+  vector_t<T> v_a(k);
+  for (int i = 0; i < k; ++i) v_a(i) = u(change.free_columns[static_cast<std::size_t>(i)]);
+  const cotton_result<T> c = cotton_reactions(adapted, q, v_a, t, s);
+  // u' = d/dt u(q, v, t) with v' = (v_a', 0): one dual pass through the change.
+  vector_t<T> v = vector_t<T>::Zero(n), vdot = vector_t<T>::Zero(n);
+  v.head(k) = v_a;
+  vdot.head(k) = c.free_accelerations;
+  const vector_t<T> qd = adapted.template qdot<T>(q, v, t);
+  const vector_t<dual<T>> ud = change.template apply<dual<T>>(detail::seeded<T>(q, &qd), detail::seeded<T>(v, &vdot),
+                                                              dual<T>(t, T(1)));
+  vector_t<T> udot(n);
+  for (int i = 0; i < n; ++i) udot(i) = ud(i).d;
+  return {udot, c.reactions};
+}
+
+}  // namespace appell

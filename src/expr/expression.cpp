@@ -1,0 +1,252 @@
+// Parsing and symbolic differentiation of scene expressions.
+#include "appell/expr/expression.hpp"
+
+#include <cctype>
+
+namespace appell {
+namespace {
+
+class parser {
+ public:
+  parser(const std::string& text, const std::string& variable, const std::string& where, expression& out,
+         std::vector<expression::node>& nodes)
+      : s_(text), var_(variable), where_(where), out_(out), nodes_(nodes) {}
+
+  int parse_all() {
+    const int r = expr();
+    skip();
+    if (i_ != s_.size()) fail("unexpected '" + std::string(1, s_[i_]) + "'");
+    return r;
+  }
+
+ private:
+  using op = expression::op;
+  [[noreturn]] void fail(const std::string& why) const {
+    throw input_error(where_ + ": " + why + " at position " + std::to_string(i_ + 1) + " of '" + s_ + "'");
+  }
+  void skip() {
+    while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
+  }
+  bool eat(char c) {
+    skip();
+    if (i_ < s_.size() && s_[i_] == c) {
+      ++i_;
+      return true;
+    }
+    return false;
+  }
+  int make(op k, int a = -1, int b = -1, std::string number = {}) {
+    nodes_.push_back({k, a, b, std::move(number)});
+    return static_cast<int>(nodes_.size()) - 1;
+  }
+  int expr() {
+    int left = term();
+    for (;;) {
+      if (eat('+')) left = make(op::add, left, term());
+      else if (eat('-')) left = make(op::sub, left, term());
+      else return left;
+    }
+  }
+  int term() {
+    int left = unary();
+    for (;;) {
+      if (eat('*')) left = make(op::mul, left, unary());
+      else if (eat('/')) left = make(op::div, left, unary());
+      else return left;
+    }
+  }
+  int unary() {
+    if (eat('-')) return make(op::neg, unary());
+    if (eat('+')) return unary();
+    return power();
+  }
+  int power() {
+    const int base = primary();
+    if (eat('^')) return make(op::pow, base, unary());  // right-associative
+    return base;
+  }
+  int primary() {
+    skip();
+    if (i_ >= s_.size()) fail("unexpected end");
+    const char c = s_[i_];
+    if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+      const std::size_t start = i_;
+      while (i_ < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[i_])) || s_[i_] == '.')) ++i_;
+      if (i_ < s_.size() && (s_[i_] == 'e' || s_[i_] == 'E')) {
+        std::size_t j = i_ + 1;
+        if (j < s_.size() && (s_[j] == '+' || s_[j] == '-')) ++j;
+        if (j < s_.size() && std::isdigit(static_cast<unsigned char>(s_[j]))) {
+          i_ = j;
+          while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) ++i_;
+        }
+      }
+      const std::string number = s_.substr(start, i_ - start);
+      if (!is_decimal_literal(number)) fail("bad number '" + number + "'");
+      return make(op::number, -1, -1, number);
+    }
+    if (eat('(')) {
+      const int r = expr();
+      if (!eat(')')) fail("missing ')'");
+      return r;
+    }
+    if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+      const std::size_t start = i_;
+      while (i_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_')) ++i_;
+      const std::string name = s_.substr(start, i_ - start);
+      if (name == var_) return make(op::variable);
+      if (name == "pi") return make(op::pi);
+      static const std::pair<const char*, op> functions[] = {{"sin", op::sin}, {"cos", op::cos}, {"tan", op::tan},
+                                                             {"exp", op::exp}, {"log", op::log}, {"sqrt", op::sqrt}};
+      for (const auto& [fname, kind] : functions) {
+        if (name == fname) {
+          if (!eat('(')) fail("expected '(' after " + name);
+          const int arg = expr();
+          if (!eat(')')) fail("missing ')'");
+          return make(kind, arg);
+        }
+      }
+      i_ = start;
+      fail("unknown name '" + name + "' (known: " + var_ + ", pi, sin, cos, tan, exp, log, sqrt)");
+    }
+    fail("unexpected '" + std::string(1, c) + "'");
+  }
+
+  std::string s_, var_, where_;
+  std::size_t i_ = 0;
+  [[maybe_unused]] expression& out_;
+  std::vector<expression::node>& nodes_;
+};
+
+}  // namespace
+
+int expression::add_node(op k, int a, int b, std::string number) {
+  nodes_.push_back({k, a, b, std::move(number)});
+  return static_cast<int>(nodes_.size()) - 1;
+}
+
+expression expression::parse(const std::string& text, const std::string& variable, const std::string& where) {
+  expression e;
+  e.where_ = where;
+  parser p(text, variable, where, e, e.nodes_);
+  e.root_ = p.parse_all();
+  return e;
+}
+
+bool expression::is_integer(int i, long& value) const {
+  const node& n = nodes_[static_cast<std::size_t>(i)];
+  if (n.kind == op::neg && is_integer(n.a, value)) {
+    value = -value;
+    return true;
+  }
+  if (n.kind != op::number) return false;
+  if (n.number.find_first_not_of("0123456789") != std::string::npos || n.number.size() > 9) return false;
+  value = std::stol(n.number);
+  return true;
+}
+
+int expression::copy_into(int i, expression& out, std::vector<int>& copied) const {
+  if (copied[static_cast<std::size_t>(i)] >= 0) return copied[static_cast<std::size_t>(i)];
+  const node& n = nodes_[static_cast<std::size_t>(i)];
+  const int a = n.a >= 0 ? copy_into(n.a, out, copied) : -1;
+  const int b = n.b >= 0 ? copy_into(n.b, out, copied) : -1;
+  return copied[static_cast<std::size_t>(i)] = out.add_node(n.kind, a, b, n.number);
+}
+
+// d(node i)/dx into `out`; -1 stands for the derivative 0 (kept out of the tree).
+int expression::derive(int i, expression& out, std::vector<int>& copied) const {
+  const node& n = nodes_[static_cast<std::size_t>(i)];
+  auto copy = [&](int j) { return copy_into(j, out, copied); };
+  auto num = [&](const char* text) { return out.add_node(op::number, -1, -1, text); };
+  auto mul = [&](int a, int b) { return out.add_node(op::mul, a, b); };
+  auto add = [&](int a, int b) { return a < 0 ? b : b < 0 ? a : out.add_node(op::add, a, b); };
+  auto neg = [&](int a) { return a < 0 ? -1 : out.add_node(op::neg, a); };
+  auto chain = [&](int outer, int da) { return da < 0 ? -1 : mul(outer, da); };  // f'(a) a'
+  switch (n.kind) {
+    case op::number:
+    case op::pi: return -1;
+    case op::variable: return num("1");
+    case op::add: return add(derive(n.a, out, copied), derive(n.b, out, copied));
+    case op::sub: return add(derive(n.a, out, copied), neg(derive(n.b, out, copied)));
+    case op::neg: return neg(derive(n.a, out, copied));
+    case op::mul: {  // (ab)' = a'b + ab'
+      const int da = derive(n.a, out, copied), db = derive(n.b, out, copied);
+      return add(da < 0 ? -1 : mul(da, copy(n.b)), db < 0 ? -1 : mul(copy(n.a), db));
+    }
+    case op::div: {  // (a/b)' = a'/b - a b' / b^2
+      const int da = derive(n.a, out, copied), db = derive(n.b, out, copied);
+      const int first = da < 0 ? -1 : out.add_node(op::div, da, copy(n.b));
+      const int second =
+          db < 0 ? -1
+                 : out.add_node(op::div, mul(copy(n.a), db), out.add_node(op::pow, copy(n.b), num("2")));
+      return add(first, neg(second));
+    }
+    case op::pow: {
+      long k = 0;
+      const int da = derive(n.a, out, copied);
+      if (is_integer(n.b, k)) {  // (a^k)' = k a^(k-1) a'
+        if (k == 0 || da < 0) return -1;
+        const int km1 = out.add_node(op::number, -1, -1, std::to_string(std::labs(k - 1)));
+        const int exponent = k - 1 < 0 ? out.add_node(op::neg, km1) : km1;
+        const int kk = out.add_node(op::number, -1, -1, std::to_string(std::labs(k)));
+        const int coeff = k < 0 ? out.add_node(op::neg, kk) : kk;
+        return mul(mul(coeff, out.add_node(op::pow, copy(n.a), exponent)), da);
+      }
+      // (a^b)' = a^b (b' log a + b a'/a)
+      const int db = derive(n.b, out, copied);
+      const int t1 = db < 0 ? -1 : mul(db, out.add_node(op::log, copy(n.a)));
+      const int t2 = da < 0 ? -1 : out.add_node(op::div, mul(copy(n.b), da), copy(n.a));
+      const int inner = add(t1, t2);
+      return inner < 0 ? -1 : mul(copy(i), inner);
+    }
+    case op::sin: return chain(out.add_node(op::cos, copy(n.a)), derive(n.a, out, copied));
+    case op::cos: return chain(neg(out.add_node(op::sin, copy(n.a))), derive(n.a, out, copied));
+    case op::tan:  // 1 + tan^2
+      return chain(add(num("1"), out.add_node(op::pow, out.add_node(op::tan, copy(n.a)), num("2"))),
+                   derive(n.a, out, copied));
+    case op::exp: return chain(copy(i), derive(n.a, out, copied));
+    case op::log: {
+      const int da = derive(n.a, out, copied);
+      return da < 0 ? -1 : out.add_node(op::div, da, copy(n.a));
+    }
+    case op::sqrt: {  // 1 / (2 sqrt a)
+      const int da = derive(n.a, out, copied);
+      return da < 0 ? -1 : out.add_node(op::div, da, mul(num("2"), copy(i)));
+    }
+  }
+  throw std::logic_error("expression: unknown node");
+}
+
+expression expression::derivative() const {
+  expression out;
+  out.where_ = where_ + "'";
+  std::vector<int> copied(nodes_.size(), -1);
+  const int r = derive(root_, out, copied);
+  out.root_ = r < 0 ? out.add_node(op::number, -1, -1, "0") : r;
+  return out;
+}
+
+std::string expression::node_string(int i) const {
+  const node& n = nodes_[static_cast<std::size_t>(i)];
+  switch (n.kind) {
+    case op::number: return n.number;
+    case op::pi: return "pi";
+    case op::variable: return "x";
+    case op::add: return "(" + node_string(n.a) + " + " + node_string(n.b) + ")";
+    case op::sub: return "(" + node_string(n.a) + " - " + node_string(n.b) + ")";
+    case op::mul: return "(" + node_string(n.a) + " * " + node_string(n.b) + ")";
+    case op::div: return "(" + node_string(n.a) + " / " + node_string(n.b) + ")";
+    case op::pow: return "(" + node_string(n.a) + " ^ " + node_string(n.b) + ")";
+    case op::neg: return "(-" + node_string(n.a) + ")";
+    case op::sin: return "sin(" + node_string(n.a) + ")";
+    case op::cos: return "cos(" + node_string(n.a) + ")";
+    case op::tan: return "tan(" + node_string(n.a) + ")";
+    case op::exp: return "exp(" + node_string(n.a) + ")";
+    case op::log: return "log(" + node_string(n.a) + ")";
+    case op::sqrt: return "sqrt(" + node_string(n.a) + ")";
+  }
+  return "?";
+}
+
+std::string expression::to_string() const { return node_string(root_); }
+
+}  // namespace appell
