@@ -112,3 +112,40 @@ BOOST_AUTO_TEST_CASE(a_flat_body_on_the_triangle_boundary_is_accepted) {
                                                    "[0, 0, 0]", "{\"omega\": [1, 2, 3]}"));
   for (const char* s : {"double", "interval"}) BOOST_TEST(run("eval " + f + " --scalar " + s).status == 0);
 }
+
+namespace {
+std::string top(const std::string& top_fields, const std::string& cone, const std::string& theta) {
+  return "{\"model\": \"top_on_cone\", \"top\": {" + top_fields + "}, \"gravity\": \"9.81\", \"cone\": \"" +
+         cone + "\", \"state\": {\"theta\": \"" + theta +
+         "\", \"phi\": \"0.3\", \"theta_dot\": \"1.2\", \"phi_dot\": \"40\"}}";
+}
+const std::string good_top = "\"A\": \"0.08\", \"C\": \"0.02\", \"mass\": \"1.5\", \"l\": \"0.2\"";
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(top_on_cone_in_every_scalar) {
+  for (const char* file : {"top_on_cone.json", "top_on_cone_constant.json", "top_on_cone_steep.json"})
+    for (const char* s : {"double", "long-double", "dd", "float128", "mpfr", "interval", "mpfi"}) {
+      const outcome o = run(std::string("eval " APPELL_SOURCE_DIR "/data/scenes/") + file + " --scalar " + s);
+      BOOST_TEST(o.status == 0, file << " " << s << ": " << o.err);
+      for (const char* key : {"theta_ddot", "phi_ddot", "psi_ddot", "\"H\"", "couple", "virtual_work_invariant",
+                              "cotton_minus_lagrange"})
+        BOOST_TEST(o.out.find(key) != std::string::npos, file << " " << s << " lacks " << key);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(bad_cones_and_bodies_exit_2_and_singular_states_exit_3) {
+  expect_bad_input("eval " + scene_file("cone_name", top(good_top, "0.5*thet", "0.7")), "cone: unknown name 'thet'");
+  expect_bad_input("eval " + scene_file("cone_syntax", top(good_top, "0.5*(theta", "0.7")), "cone: missing ')'");
+  expect_bad_input("eval " + scene_file("cone_zero", top(good_top, "1/(theta - 0.7)", "0.7")), "division by zero");
+  expect_bad_input("eval " + scene_file("cone_zero_i", top(good_top, "1/(theta - 0.7)", "0.7")) + " --scalar interval",
+                   "division by zero");
+  expect_bad_input("eval " + scene_file("top_A", top("\"A\": \"0.05\", \"C\": \"0.02\", \"mass\": \"1.5\", \"l\": \"0.2\"", "0.5", "0.7")),
+                   "top.A");
+  expect_bad_input("eval " + scene_file("top_C", top("\"A\": \"0.08\", \"C\": \"0.05\", \"mass\": \"1.5\", \"l\": \"0.2\"", "0.5", "0.7")),
+                   "top.C");
+  for (const char* s : {"double", "interval"}) {
+    const outcome o = run("eval " + scene_file("vertical", top(good_top, "0.5*theta", "0")) + " --scalar " + s);
+    BOOST_TEST(o.status == 3, s << ": theta = 0 (Euler-angle singularity) must be refused, got " << o.status);
+    BOOST_TEST(o.out.empty());
+  }
+}

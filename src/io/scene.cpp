@@ -64,6 +64,19 @@ top_on_cone_input read_top_on_cone(object_reader& scene) {
   in.theta_dot = state.number("theta_dot");
   in.phi_dot = state.number("phi_dot");
   state.finish();
+  // The cone at the state, once, in 256-bit interval arithmetic: a division by
+  // zero (or a log/sqrt outside its domain) at the exact state is bad input for
+  // every scalar, even where a 53-bit enclosure could not tell it from a tiny
+  // nonzero number.
+  try {
+    mp_precision_scope scope(256);
+    const mpfi theta = value<mpfi>(in.theta);
+    (void)in.f->eval(theta);
+    (void)in.fprime->eval(theta);
+    (void)in.fsecond->eval(theta);
+  } catch (const certification_error& e) {
+    throw input_error(std::string(e.what()) + " (within 2^-256 of it: taken as exact)");
+  }
   return in;
 }
 

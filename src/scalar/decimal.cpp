@@ -8,6 +8,7 @@
 #include <gmp.h>
 
 #include "appell/scalar/decimal.hpp"
+#include "appell/scalar/rational.hpp"
 
 #include <boost/multiprecision/detail/digits.hpp>
 
@@ -276,6 +277,15 @@ void decimal_to_mpq(std::string_view s, mpq_t out) {
   mpz_clear(pow10);
 }
 }  // namespace
+
+rational_q rational_from_decimal(const std::string& s) {
+  mpq_t q;
+  mpq_init(q);
+  decimal_to_mpq(s, q);
+  rational_q r(q);
+  mpq_clear(q);
+  return r;
+}
 
 int decimal_sign_of_polynomial(const std::vector<decimal_term>& terms) {
   mpq_t sum, term, factor;

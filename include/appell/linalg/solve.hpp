@@ -167,11 +167,16 @@ vector_t<I> verified_solve(const matrix_t<I>& A, const vector_t<I>& b) {
   throw certification_error(why.str());
 }
 
+template <Scalar T>
+vector_t<T> solve(const matrix_t<T>& A, const vector_t<T>& b);
+
 /// A x = b for a symmetric positive definite A.
 template <Scalar T>
 vector_t<T> solve_spd(const matrix_t<T>& A, const vector_t<T>& b) {
   if constexpr (scalar_traits<T>::is_interval) {
     return verified_solve(A, b);
+  } else if constexpr (requires { scalar_traits<T>::is_exact; }) {
+    return solve(A, b);  // exact rationals have no square root: LU is exact
   } else {
     detail::check_square(A, b.rows());
     Eigen::LLT<matrix_t<T>> llt(A);

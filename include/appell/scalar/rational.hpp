@@ -1,0 +1,47 @@
+// appell/scalar/rational.hpp -- exact rationals (GMP), an eighth scalar for proofs.
+//
+// Not one of the seven evaluation scalars: no sin or cos, no sqrt.  Systems
+// whose kinematics are rational (Euler's body, the free body on moving axes
+// with a rational rotation) run through the generic Gibbs-Appell path in it,
+// so identities such as Cotton's eq. (6) and the invariance of eq. (4) can be
+// checked with no rounding at all (proofs/).
+#pragma once
+
+#include <boost/multiprecision/gmp.hpp>
+
+#include "appell/scalar/eigen.hpp"
+
+namespace appell {
+
+using rational_q = boost::multiprecision::number<boost::multiprecision::gmp_rational, boost::multiprecision::et_off>;
+
+template <>
+struct scalar_traits<rational_q> {
+  static constexpr const char* name = "rational";
+  static constexpr bool is_interval = false;
+  static constexpr bool is_rigorous = true;  // exact
+  static constexpr bool is_exact = true;     // no sqrt: solves use LU
+  using bound_type = rational_q;
+  static unsigned precision_bits() { return 0; }  // unbounded
+  static rational_q lower(const rational_q& x) { return x; }
+  static rational_q upper(const rational_q& x) { return x; }
+  static rational_q mid(const rational_q& x) { return x; }
+  static rational_q width(const rational_q&) { return rational_q(0); }
+};
+
+/// The exact value of a decimal literal.
+rational_q rational_from_decimal(const std::string& s);
+
+}  // namespace appell
+
+namespace Eigen {
+template <>
+struct NumTraits<appell::rational_q> : appell::detail::numtraits_common<appell::rational_q> {
+  static int digits() { return 0; }
+  static int digits10() { return 0; }
+  static appell::rational_q epsilon() { return 0; }
+  static appell::rational_q dummy_precision() { return 0; }
+  static appell::rational_q highest() { return appell::rational_q(std::numeric_limits<double>::max()); }
+  static appell::rational_q lowest() { return -highest(); }
+};
+}  // namespace Eigen
