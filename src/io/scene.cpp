@@ -80,6 +80,51 @@ top_on_cone_input read_top_on_cone(object_reader& scene) {
   return in;
 }
 
+rolling_sphere_input read_rolling_sphere(object_reader& scene) {
+  rolling_sphere_input in;
+  object_reader sphere = scene.object("sphere");
+  in.mass = sphere.number("mass");
+  in.radius = sphere.number("radius");
+  if (sphere.has("A")) in.A = sphere.number("A");
+  sphere.finish();
+  require_positive(sphere, "mass", in.mass);
+  require_positive(sphere, "radius", in.radius);
+  if (in.A) {
+    require_positive(sphere, "A", *in.A);
+    // A <= 2/3 M a^2: the thin spherical shell is the largest.
+    if (decimal_sign_of_polynomial({{3, {in.A->text}}, {-2, {in.mass.text, in.radius.text, in.radius.text}}}) > 0)
+      throw input_error(sphere.path("A") + ": a sphere has A <= 2/3 M a^2 (the thin shell), got " + in.A->text);
+  }
+  object_reader surface = scene.object("surface");
+  const std::string type = surface.string("type");
+  if (type == "plane") {
+    in.surface = surface_type::plane;
+  } else if (type == "sphere" || type == "cylinder") {
+    in.surface = type == "sphere" ? surface_type::sphere : surface_type::cylinder;
+    in.b = surface.number("radius");
+    require_positive(surface, "radius", *in.b);
+    const std::string side = surface.string("side");
+    if (side != "outside" && side != "inside")
+      throw input_error(surface.path("side") + ": expected \"outside\" or \"inside\", got \"" + side + "\"");
+    in.inside = side == "inside";
+    if (in.inside && decimal_sign_of_sum({{1, in.b->text}, {-1, in.radius.text}}) <= 0)
+      throw input_error(surface.path("radius") + ": the sphere (radius " + in.radius.text +
+                        ") does not fit inside the " + type + " (radius " + in.b->text + ")");
+  } else {
+    throw input_error(surface.path("type") + ": unknown surface '" + type + "' (known: plane, sphere, cylinder)");
+  }
+  surface.finish();
+  in.gravity = scene.numbers("gravity", 3);
+  const std::vector<decimal_field> zero{{"0", "0"}, {"0", "0"}, {"0", "0"}};
+  in.force = scene.has("force") ? scene.numbers("force", 3) : zero;
+  in.torque = scene.has("torque") ? scene.numbers("torque", 3) : zero;
+  object_reader state = scene.object("state");
+  in.center = state.numbers("center", 3);
+  in.omega = state.numbers("omega", 3);
+  state.finish();
+  return in;
+}
+
 }  // namespace
 
 scene_input read_scene(const json_value& root) {
@@ -90,8 +135,10 @@ scene_input read_scene(const json_value& root) {
     out.input = read_euler_body(scene);
   } else if (out.model == "top_on_cone") {
     out.input = read_top_on_cone(scene);
+  } else if (out.model == "rolling_sphere") {
+    out.input = read_rolling_sphere(scene);
   } else {
-    throw input_error("model: unknown model '" + out.model + "' (known: euler_body, top_on_cone)");
+    throw input_error("model: unknown model '" + out.model + "' (known: euler_body, top_on_cone, rolling_sphere)");
   }
   scene.finish();
   return out;

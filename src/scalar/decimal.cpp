@@ -365,3 +365,26 @@ mpfi mpfi_from_mpfr_bounds(mpfr_srcptr lo, mpfr_srcptr hi) {
 }
 
 }  // namespace appell
+
+namespace boost::multiprecision {
+appell::rational_q sqrt(const appell::rational_q& x) {
+  mpq_srcptr q = x.backend().data();
+  if (mpq_sgn(q) < 0 || !mpz_perfect_square_p(mpq_numref(q)) || !mpz_perfect_square_p(mpq_denref(q)))
+    throw std::domain_error("sqrt of a rational that is not a perfect square");
+  mpz_t n, d;
+  mpz_init(n);
+  mpz_init(d);
+  mpz_sqrt(n, mpq_numref(q));
+  mpz_sqrt(d, mpq_denref(q));
+  mpq_t r;
+  mpq_init(r);
+  mpq_set_num(r, n);
+  mpq_set_den(r, d);
+  mpq_canonicalize(r);
+  appell::rational_q out(r);
+  mpq_clear(r);
+  mpz_clear(n);
+  mpz_clear(d);
+  return out;
+}
+}  // namespace boost::multiprecision

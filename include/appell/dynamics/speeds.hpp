@@ -98,6 +98,19 @@ struct adapted_change {
   }
 };
 
+/// Adapted speeds keeping the given components of u as the free speeds (e.g.
+/// the paper's choice, eq. 23 for the rolling sphere); the other columns of A
+/// must form a nonsingular block at the state.
+template <class Constraint>
+adapted_change<Constraint> adapt_speeds_keeping(const Constraint& con, int n, std::vector<int> free_columns) {
+  std::vector<int> bound;
+  for (int j = 0; j < n; ++j)
+    if (std::find(free_columns.begin(), free_columns.end(), j) == free_columns.end()) bound.push_back(j);
+  if (static_cast<int>(bound.size()) != con.count())
+    throw std::invalid_argument("adapt_speeds_keeping: n - (free speeds) must equal the number of constraints");
+  return {con, std::move(free_columns), std::move(bound)};
+}
+
 /// Chooses the bound columns by pivoting on mid(A) at (q, t), largest pivot first.
 template <Scalar T, class Constraint>
 adapted_change<Constraint> adapt_speeds(const Constraint& con, const vector_t<T>& q, const T& t, int n) {

@@ -15,6 +15,8 @@
 #include "appell/scalar/format.hpp"
 #include "appell/scenes/euler_body.hpp"
 #include "appell/scenes/top_on_cone.hpp"
+#include "appell/scenes/rolling_sphere.hpp"
+#include <optional>
 #include "appell/dynamics/virtual_work.hpp"
 #include "appell/reactions/lagrange.hpp"
 #include "appell/reactions/wrench.hpp"
@@ -35,9 +37,18 @@ struct top_on_cone_input {
   decimal_field theta, phi, theta_dot, phi_dot;
 };
 
+struct rolling_sphere_input {
+  decimal_field mass, radius;
+  std::optional<decimal_field> A;  ///< default 2/5 M a^2 (enclosed exactly)
+  surface_type surface = surface_type::plane;
+  bool inside = false;
+  std::optional<decimal_field> b;  ///< the surface's radius (sphere, cylinder)
+  std::vector<decimal_field> gravity, force, torque, center, omega;
+};
+
 struct scene_input {
   std::string model;
-  std::variant<euler_body_input, top_on_cone_input> input;
+  std::variant<euler_body_input, top_on_cone_input, rolling_sphere_input> input;
 };
 
 /// Validates a parsed scene; throws input_error naming the field.
@@ -141,6 +152,63 @@ evaluation<T> evaluate_model(const top_on_cone_input& in) {
   e.checks.push_back(scalar_result("virtual_work_invariant", vw));
   e.checks.push_back(scalar_result("cotton_minus_lagrange", T(H - lag.reactions(0))));
   e.checks.push_back(scalar_result("theta_ddot_cotton_minus_lagrange", T(theta_ddot - lag.accelerations(1))));
+  return e;
+}
+template <Scalar T>
+evaluation<T> evaluate_model(const rolling_sphere_input& in) {
+  using std::sqrt, std::abs;
+  const T M = value<T>(in.mass), a = value<T>(in.radius);
+  const T A = in.A ? value<T>(*in.A) : rational<T>(2, 5) * M * a * a;
+  rolling_surface<T> surface;
+  surface.type = in.surface;
+  surface.inside = in.inside;
+  if (in.b) surface.b = value<T>(*in.b);
+  const vec3<T> c = vec3_from_decimals<T>(in.center), omega = vec3_from_decimals<T>(in.omega);
+  const vec3<T> F = vec3_from_decimals<T>(in.gravity) * M + vec3_from_decimals<T>(in.force);
+  const vec3<T> tau = vec3_from_decimals<T>(in.torque);
+  // The state must lie on the constraints: centre on the surface of centres, omega . n = 0.
+  T on_surface, no_pivot, scale_c, scale_w = sqrt(dot(omega, omega));
+  if (in.surface == surface_type::plane) {
+    on_surface = c(2) - a;
+    no_pivot = omega(2);
+    scale_c = abs(c(2)) + a;
+  } else {
+    const vec3<T> radial = in.surface == surface_type::sphere ? c : vec3<T>(c(0), c(1), T(0));
+    const T norm = sqrt(dot(radial, radial));
+    on_surface = norm - surface.rho(a);
+    no_pivot = dot(omega, radial) / norm;
+    scale_c = norm + abs(surface.rho(a));
+  }
+  auto admissible = [](const T& residual, const T& scale) {
+    if constexpr (scalar_traits<T>::is_interval) {
+      (void)scale;
+      return possibly_zero(residual);
+    } else {
+      const T eps = T(std::ldexp(1.0, 1 - static_cast<int>(scalar_traits<T>::precision_bits())));
+      return abs(residual) <= T(64) * eps * scale;
+    }
+  };
+  if (!admissible(on_surface, scale_c))
+    throw input_error("state.center: not on the surface of centres (residual " + to_string(on_surface) + ")");
+  if (!admissible(no_pivot, scale_w))
+    throw input_error("state.omega: omega . n must be 0 (no pivoting), residual " + to_string(no_pivot));
+  const rolling_sphere_result<T> r = rolling_sphere_motion(M, A, a, surface, c, omega, F, tau);
+  if (!certainly_positive(r.normal_force) && !certainly_negative(r.normal_force))
+    throw certification_error("friction_ratio: the normal force " + to_string(r.normal_force) +
+                              " cannot be told from 0");
+  evaluation<T> e;
+  e.results.push_back(vector_result("center_ddot", r.center_ddot));
+  e.results.push_back(vector_result("omega_dot", r.omega_dot));
+  e.results.push_back(vector_result("contact_force", r.contact_force));
+  e.results.push_back(scalar_result("normal_force", r.normal_force));
+  e.results.push_back(scalar_result("tangential_force", r.tangential_force));
+  e.results.push_back(scalar_result("pivot_couple", r.pivot_couple));
+  e.results.push_back(scalar_result("friction_ratio", T(r.tangential_force / r.normal_force)));
+  e.checks.push_back(scalar_result("virtual_work_invariant", r.virtual_work_residual));
+  e.checks.push_back(scalar_result("normal_force_cotton_minus_lagrange", T(r.reactions(2) - r.multipliers(2))));
+  e.checks.push_back(scalar_result("pivot_couple_cotton_minus_lagrange", T(r.reactions(3) - r.multipliers(3))));
+  e.checks.push_back(scalar_result("surface_residual", on_surface));
+  e.checks.push_back(scalar_result("pivot_residual", no_pivot));
   return e;
 }
 }  // namespace detail

@@ -51,12 +51,12 @@ struct constrained_motion {
   vector_t<T> reactions;      ///< Q'_c (Cotton) or lambda (Lagrange), one per constraint
 };
 
-/// Cotton's method for constraints given as A(q,t) u = a(q,t).
+/// Cotton's method in given adapted speeds (adapted_change): u' in the original
+/// speeds, and the reactions Q'_c.
 template <Scalar T, class Sys, class Constraint>
-constrained_motion<T> cotton_reactions(const Sys& sys, const Constraint& con, const vector_t<T>& q,
-                                       const vector_t<T>& u, const T& t) {
-  const int n = sys.speeds(), s = con.count(), k = n - s;
-  auto change = adapt_speeds<T>(con, q, t, n);
+constrained_motion<T> cotton_reactions(const Sys& sys, const adapted_change<Constraint>& change,
+                                       const vector_t<T>& q, const vector_t<T>& u, const T& t) {
+  const int n = sys.speeds(), s = change.con.count(), k = n - s;
   const auto adapted = change_speeds(sys, change, n);
   vector_t<T> v_a(k);
   for (int i = 0; i < k; ++i) v_a(i) = u(change.free_columns[static_cast<std::size_t>(i)]);
@@ -71,6 +71,14 @@ constrained_motion<T> cotton_reactions(const Sys& sys, const Constraint& con, co
   vector_t<T> udot(n);
   for (int i = 0; i < n; ++i) udot(i) = ud(i).d;
   return {udot, c.reactions};
+}
+
+/// Cotton's method for constraints given as A(q,t) u = a(q,t); the library
+/// chooses the free speeds (speeds.hpp, adapt_speeds).
+template <Scalar T, class Sys, class Constraint>
+constrained_motion<T> cotton_reactions(const Sys& sys, const Constraint& con, const vector_t<T>& q,
+                                       const vector_t<T>& u, const T& t) {
+  return cotton_reactions(sys, adapt_speeds<T>(con, q, t, sys.speeds()), q, u, t);
 }
 
 }  // namespace appell

@@ -34,6 +34,13 @@ rational_q rational_from_decimal(const std::string& s);
 
 }  // namespace appell
 
+namespace boost::multiprecision {
+/// The exact square root of a rational that is a perfect square (numerator and
+/// denominator); throws std::domain_error otherwise.  Found by argument-
+/// dependent lookup from generic code (`using std::sqrt; sqrt(x)`).
+appell::rational_q sqrt(const appell::rational_q& x);
+}  // namespace boost::multiprecision
+
 namespace Eigen {
 template <>
 struct NumTraits<appell::rational_q> : appell::detail::numtraits_common<appell::rational_q> {

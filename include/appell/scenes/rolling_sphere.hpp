@@ -1,0 +1,183 @@
+// appell/scenes/rolling_sphere.hpp -- paper sec. 7, Example II: a homogeneous
+// sphere (mass M, radius a, central moment A) rolling without slipping or
+// pivoting on a fixed surface.
+//
+// Speeds on a moving trihedron (sec. 4): G x y z with z along the normal n
+// from the contact point to the centre; (u, v, w) the velocity of G and
+// (p, q, r) the rotation of the sphere, on those axes, which turn with
+// (P, Q, R).  The surface supplies exactly the trihedron rotation it implies
+// and nothing more:
+//   plane z = 0:            the axes are fixed, (P, Q, R) = 0;
+//   sphere of radius b:     n = +-c/|c|, (P, Q, R) = +-(-v, u, 0)/rho + spin n;
+//   cylinder of radius b:   n = +-(c_x, c_y, 0)/|..|, y along the axis,
+//                           (P, Q, R) = +-(0, u/rho, 0) + spin n,
+// rho = b + a outside (+), b - a inside (-): the radius of the surface of
+// centres.  `spin` (default 0) turns the axes about n, which leaves the
+// physics unchanged (it exists to test the paper's R terms).
+// The constraints (22) read A u = 0 with rows u - a q, v + a p, w, r; Cotton's
+// change (23) keeps (p, q) as the free speeds, u_1 = u - a q, v_1 = v + a p.
+// The reactions (14) are the contact force at the contact point, on the axes
+// (F - X, H - Y, K - Z in the paper's notation), and the pivoting couple L - N.
+#pragma once
+
+#include "appell/dynamics/speeds.hpp"
+#include "appell/dynamics/virtual_work.hpp"
+#include "appell/reactions/cotton.hpp"
+#include "appell/reactions/lagrange.hpp"
+
+namespace appell {
+
+enum class surface_type { plane, sphere, cylinder };
+
+template <Scalar T>
+struct rolling_surface {
+  surface_type type = surface_type::plane;
+  bool inside = false;
+  T b = T(0);     ///< radius of the sphere or cylinder
+  T spin = T(0);  ///< rotation of the axes about n (0: none)
+
+  /// Radius of the surface of centres (not used for the plane).
+  T rho(const T& a) const { return inside ? b - a : b + a; }
+  T sign() const { return inside ? T(-1) : T(1); }
+
+  /// The trihedron at centre c: columns e1, e2, e3 = n, on the fixed axes.
+  mat3<T> frame(const vec3<T>& c) const {
+    using std::sqrt;
+    mat3<T> R = mat3<T>::Identity();
+    if (type == surface_type::plane) return R;
+    vec3<T> n, e1, e2;
+    if (type == surface_type::sphere) {
+      n = c / sqrt(dot(c, c)) * sign();
+      // e1 normal to n and to the fixed axis least aligned with n
+      int k = 0;
+      for (int i = 1; i < 3; ++i)
+        if (std::abs(approx_double(n(i))) < std::abs(approx_double(n(k)))) k = i;
+      vec3<T> axis = vec3<T>::Zero();
+      axis(k) = T(1);
+      e1 = cross(axis, n);
+      e1 = e1 / sqrt(dot(e1, e1));
+      e2 = cross(n, e1);
+    } else {
+      const vec3<T> radial(c(0), c(1), T(0));
+      n = radial / sqrt(dot(radial, radial)) * sign();
+      e2 = vec3<T>(T(0), T(0), T(1));
+      e1 = cross(e2, n);
+    }
+    R.col(0) = e1;
+    R.col(1) = e2;
+    R.col(2) = n;
+    return R;
+  }
+
+  /// (P, Q, R) on the trihedron's own axes when G moves with velocity v (same axes).
+  template <class S>
+  vec3<S> frame_rate(const vec3<S>& v, const T& rho) const {
+    vec3<S> w(S(0), S(0), S(spin));
+    if (type == surface_type::sphere) w += vec3<S>(-v(1), v(0), S(0)) * S(sign() / rho);
+    if (type == surface_type::cylinder) w += vec3<S>(S(0), v(0), S(0)) * S(sign() / rho);
+    return w;
+  }
+};
+
+/// The free sphere (6 speeds on the trihedron), before the rolling constraints.
+template <Scalar T>
+struct free_sphere {
+  T mass, A, a;
+  rolling_surface<T> surface;
+  vec3<T> force, couple;  ///< total applied force through G (weight included) and couple, on the axes
+
+  int speeds() const { return 6; }
+  template <class S>
+  vector_t<S> qdot(const vector_t<S>&, const vector_t<S>& u, const S&) const {
+    return u;  // the paper's parameters: dq_1 = u dt, ..., dq_6 = r dt
+  }
+  template <class S>
+  void bodies(const vector_t<S>&, const vector_t<S>& u, const S&, std::vector<body_state<S>>& out) const {
+    body_state<S> s;
+    s.mass = S(mass);
+    s.velocity = vec3<S>(u(0), u(1), u(2));
+    s.omega = vec3<S>(u(3), u(4), u(5));
+    s.frame_rate = surface.template frame_rate<S>(s.velocity, surface.rho(a));
+    for (int i = 0; i < 3; ++i) {
+      s.inertia(i, i) = S(A);
+      s.force(i) = S(force(i));
+      s.couple(i) = S(couple(i));
+    }
+    out.push_back(s);
+  }
+};
+
+/// Rolling without slipping or pivoting, (22): u - a q = 0, v + a p = 0, w = 0, r = 0.
+template <Scalar T>
+struct rolling_constraint {
+  T a;
+  int count() const { return 4; }
+  template <class S>
+  void eval(const vector_t<S>&, const S&, matrix_t<S>& A, vector_t<S>& rhs) const {
+    A.setZero();
+    A(0, 0) = S(1);
+    A(0, 4) = -S(a);
+    A(1, 1) = S(1);
+    A(1, 3) = S(a);
+    A(2, 2) = S(1);
+    A(3, 5) = S(1);
+    rhs.setZero();
+  }
+};
+
+template <Scalar T>
+struct rolling_sphere_result {
+  vec3<T> center_ddot, omega_dot, contact_force;  ///< fixed axes
+  T normal_force, tangential_force, pivot_couple;
+  vector_t<T> speeds_dot;   ///< (u', v', w', p', q', r') on the trihedron
+  vector_t<T> reactions;    ///< Cotton's Q'_c: (F - X, H - Y, K - Z, L - N) on the trihedron
+  vector_t<T> multipliers;  ///< Lagrange's, for comparison
+  T virtual_work_residual;
+  mat3<T> axes;             ///< the trihedron (columns) on the fixed axes
+  vec3<T> frame_rate;       ///< (P, Q, R)
+};
+
+/// Example II at centre c and rotation omega (fixed axes), with applied force
+/// F_total (weight included) through G and couple tau, on the fixed axes.
+template <Scalar T>
+rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const T& a,
+                                               const rolling_surface<T>& surface, const vec3<T>& c,
+                                               const vec3<T>& omega, const vec3<T>& F_total, const vec3<T>& tau) {
+  using std::sqrt;
+  rolling_sphere_result<T> r;
+  r.axes = surface.frame(c);
+  const mat3<T> Rt = r.axes.transpose();
+  const free_sphere<T> sys{mass, A, a, surface, mat_vec(Rt, F_total), mat_vec(Rt, tau)};
+  const vec3<T> w = mat_vec(Rt, omega);
+  vector_t<T> u(6), q = vector_t<T>::Zero(6);
+  u << a * w(1), -a * w(0), T(0), w(0), w(1), T(0);  // on the constraints (22)
+  const T t = T(0);
+  const rolling_constraint<T> con{a};
+  const auto change = adapt_speeds_keeping(con, 6, {3, 4});  // eq. (23): free speeds p, q
+  const constrained_motion<T> m = cotton_reactions(sys, change, q, u, t);
+  r.speeds_dot = m.accelerations;
+  r.reactions = m.reactions;
+  r.multipliers = lagrange_multipliers(sys, con, q, u, t).reactions;
+  const vec3<T> v(u(0), u(1), u(2)), wF(u(3), u(4), u(5));
+  r.frame_rate = surface.template frame_rate<T>(v, surface.rho(a));
+  const vec3<T> aG = vec3<T>(m.accelerations(0), m.accelerations(1), m.accelerations(2)) + cross(r.frame_rate, v);
+  const vec3<T> alpha = vec3<T>(m.accelerations(3), m.accelerations(4), m.accelerations(5)) + cross(r.frame_rate, wF);
+  r.center_ddot = mat_vec(r.axes, aG);
+  r.omega_dot = mat_vec(r.axes, alpha);
+  r.contact_force = mat_vec(r.axes, vec3<T>(m.reactions(0), m.reactions(1), m.reactions(2)));
+  r.normal_force = m.reactions(2);
+  r.tangential_force = sqrt(sqr(m.reactions(0)) + sqr(m.reactions(1)));
+  r.pivot_couple = m.reactions(3);
+  // eq. (4) in Cotton's speeds (p, q, u_1, v_1, w, r)
+  const auto adapted = change_speeds(sys, change, 6);
+  vector_t<T> vv = vector_t<T>::Zero(6), vdot = vector_t<T>::Zero(6);
+  vv(0) = w(0);
+  vv(1) = w(1);
+  vdot(0) = m.accelerations(3);
+  vdot(1) = m.accelerations(4);
+  const appell_equations<T> eq = gibbs_appell(adapted, q, vv, t);
+  r.virtual_work_residual = virtual_work_residual(adapted, eq, q, vv, t, vdot, vector_t<T>(vector_t<T>::Ones(6)));
+  return r;
+}
+
+}  // namespace appell
