@@ -9,6 +9,7 @@
 
 #include <boost/multiprecision/gmp.hpp>
 
+#include "appell/scalar/decimal.hpp"
 #include "appell/scalar/eigen.hpp"
 
 namespace appell {
@@ -31,6 +32,17 @@ struct scalar_traits<rational_q> {
 
 /// The exact value of a decimal literal.
 rational_q rational_from_decimal(const std::string& s);
+
+/// A rational in scalar T: correctly rounded (point types) or enclosed (interval types).
+template <Scalar T>
+T from_rational(const rational_q& r) {
+  if constexpr (requires { scalar_traits<T>::is_exact; }) {
+    return r;
+  } else {
+    mpq_srcptr q = r.backend().data();
+    return produce<T>([q](mpfr_ptr out, mpfr_rnd_t rnd) { return mpfr_set_q(out, q, rnd); });
+  }
+}
 
 }  // namespace appell
 
