@@ -149,3 +149,50 @@ BOOST_AUTO_TEST_CASE(bad_cones_and_bodies_exit_2_and_singular_states_exit_3) {
     BOOST_TEST(o.out.empty());
   }
 }
+
+namespace {
+std::string sphere_scene(const std::string& sphere, const std::string& surface, const std::string& center,
+                         const std::string& omega) {
+  return "{\"model\": \"rolling_sphere\", \"sphere\": {" + sphere + "}, \"surface\": {" + surface +
+         "}, \"gravity\": [\"0\", \"0\", \"-9.81\"], \"state\": {\"center\": " + center +
+         ", \"omega\": " + omega + "}}";
+}
+const std::string ball = "\"mass\": \"2\", \"radius\": \"0.1\"";
+const std::string bowl = "\"type\": \"sphere\", \"radius\": \"1\", \"side\": \"inside\"";
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(rolling_sphere_in_every_scalar) {
+  for (const char* file : {"rolling_sphere_plane.json", "rolling_sphere_globe.json", "rolling_sphere_bowl.json",
+                           "rolling_sphere_pipe.json", "rolling_sphere_tube.json"})
+    for (const char* s : {"double", "long-double", "dd", "float128", "mpfr", "interval", "mpfi"}) {
+      const outcome o = run(std::string("eval " APPELL_SOURCE_DIR "/data/scenes/") + file + " --scalar " + s);
+      BOOST_TEST(o.status == 0, file << " " << s << ": " << o.err);
+      for (const char* key : {"center_ddot", "omega_dot", "contact_force", "normal_force", "tangential_force",
+                              "pivot_couple", "friction_ratio", "virtual_work_invariant"})
+        BOOST_TEST(o.out.find(key) != std::string::npos, file << " " << s << " lacks " << key);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(inconsistent_or_impossible_spheres_exit_2) {
+  const std::string on = "[\"0.54\", \"0\", \"-0.72\"]", spin = "[\"0\", \"2\", \"0\"]";
+  expect_bad_input("eval " + scene_file("off_surface", sphere_scene(ball, bowl, "[\"0.55\", \"0\", \"-0.72\"]", spin)),
+                   "state.center: not on the surface of centres (residual");
+  for (const char* s : {"interval", "mpfi", "dd"})
+    expect_bad_input("eval " + scene_file("off_surface_" + std::string(s),
+                                          sphere_scene(ball, bowl, "[\"0.5400000001\", \"0\", \"-0.72\"]", spin)) +
+                         " --scalar " + s,
+                     "state.center");
+  expect_bad_input("eval " + scene_file("pivoting", sphere_scene(ball, bowl, on, "[\"0.3\", \"2\", \"0\"]")),
+                   "state.omega: omega . n must be 0");
+  expect_bad_input("eval " + scene_file("too_big", sphere_scene("\"mass\": \"2\", \"radius\": \"1.5\"", bowl, on, spin)),
+                   "does not fit inside");
+  expect_bad_input("eval " + scene_file("mass", sphere_scene("\"mass\": \"-2\", \"radius\": \"0.1\"", bowl, on, spin)),
+                   "sphere.mass");
+  expect_bad_input("eval " + scene_file("radius", sphere_scene("\"mass\": \"2\", \"radius\": \"0\"", bowl, on, spin)),
+                   "sphere.radius");
+  expect_bad_input("eval " + scene_file("shell", sphere_scene("\"mass\": \"2\", \"radius\": \"0.1\", \"A\": \"0.0134\"", bowl, on, spin)),
+                   "sphere.A");
+  expect_bad_input("eval " + scene_file("side", sphere_scene(ball, "\"type\": \"sphere\", \"radius\": \"1\", \"side\": \"under\"", on, spin)),
+                   "surface.side");
+  expect_bad_input("eval " + scene_file("torus", sphere_scene(ball, "\"type\": \"torus\"", on, spin)), "surface.type");
+}

@@ -201,9 +201,9 @@ evaluation<T> evaluate_model(const rolling_sphere_input& in) {
   e.results.push_back(vector_result("omega_dot", r.omega_dot));
   e.results.push_back(vector_result("contact_force", r.contact_force));
   e.results.push_back(scalar_result("normal_force", r.normal_force));
-  e.results.push_back(scalar_result("tangential_force", r.tangential_force));
+  e.results.push_back(scalar_result("tangential_force", r.tangential_force()));
   e.results.push_back(scalar_result("pivot_couple", r.pivot_couple));
-  e.results.push_back(scalar_result("friction_ratio", T(r.tangential_force / r.normal_force)));
+  e.results.push_back(scalar_result("friction_ratio", T(r.tangential_force() / r.normal_force)));
   e.checks.push_back(scalar_result("virtual_work_invariant", r.virtual_work_residual));
   e.checks.push_back(scalar_result("normal_force_cotton_minus_lagrange", T(r.reactions(2) - r.multipliers(2))));
   e.checks.push_back(scalar_result("pivot_couple_cotton_minus_lagrange", T(r.reactions(3) - r.multipliers(3))));

@@ -40,32 +40,38 @@ struct rolling_surface {
   T rho(const T& a) const { return inside ? b - a : b + a; }
   T sign() const { return inside ? T(-1) : T(1); }
 
-  /// The trihedron at centre c: columns e1, e2, e3 = n, on the fixed axes.
-  mat3<T> frame(const vec3<T>& c) const {
+  /// The unit normal n at centre c (fixed axes).
+  vec3<T> normal(const vec3<T>& c) const {
     using std::sqrt;
+    if (type == surface_type::plane) return vec3<T>(T(0), T(0), T(1));
+    const vec3<T> radial = type == surface_type::sphere ? c : vec3<T>(c(0), c(1), T(0));
+    return vec3<T>(radial / sqrt(dot(radial, radial)) * sign());
+  }
+
+  /// The trihedron at centre c: columns e1, e2, e3 = n, on the fixed axes.
+  /// Sphere: the Householder reflection that takes e3 to +-n, made a rotation
+  /// (rational when n is: the exact proofs rely on it); cylinder: e2 along the axis.
+  mat3<T> frame(const vec3<T>& c) const {
     mat3<T> R = mat3<T>::Identity();
     if (type == surface_type::plane) return R;
-    vec3<T> n, e1, e2;
-    if (type == surface_type::sphere) {
-      n = c / sqrt(dot(c, c)) * sign();
-      // e1 normal to n and to the fixed axis least aligned with n
-      int k = 0;
-      for (int i = 1; i < 3; ++i)
-        if (std::abs(approx_double(n(i))) < std::abs(approx_double(n(k)))) k = i;
-      vec3<T> axis = vec3<T>::Zero();
-      axis(k) = T(1);
-      e1 = cross(axis, n);
-      e1 = e1 / sqrt(dot(e1, e1));
-      e2 = cross(n, e1);
-    } else {
-      const vec3<T> radial(c(0), c(1), T(0));
-      n = radial / sqrt(dot(radial, radial)) * sign();
-      e2 = vec3<T>(T(0), T(0), T(1));
-      e1 = cross(e2, n);
+    const vec3<T> n = normal(c);
+    if (type == surface_type::cylinder) {
+      const vec3<T> e2(T(0), T(0), T(1));
+      R.col(0) = cross(e2, n);
+      R.col(1) = e2;
+      R.col(2) = n;
+      return R;
     }
-    R.col(0) = e1;
-    R.col(1) = e2;
-    R.col(2) = n;
+    const bool below = approx_double(n(2)) <= 0;  // v = e3 - n or e3 + n, whichever is long
+    vec3<T> v = below ? vec3<T>(-n(0), -n(1), T(1) - n(2)) : vec3<T>(n(0), n(1), T(1) + n(2));
+    const T vv = dot(v, v);
+    mat3<T> H;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) H(i, j) = (i == j ? T(1) : T(0)) - T(2) * v(i) * v(j) / vv;
+    // H e3 = n (below) or -n; flip one column to get a rotation with third column n.
+    R.col(0) = H.col(0);
+    R.col(1) = below ? vec3<T>(-H.col(1)) : vec3<T>(H.col(1));
+    R.col(2) = below ? vec3<T>(H.col(2)) : vec3<T>(-H.col(2));
     return R;
   }
 
@@ -128,7 +134,12 @@ struct rolling_constraint {
 template <Scalar T>
 struct rolling_sphere_result {
   vec3<T> center_ddot, omega_dot, contact_force;  ///< fixed axes
-  T normal_force, tangential_force, pivot_couple;
+  T normal_force, pivot_couple;
+  T tangential_x, tangential_y;  ///< the contact force's components along e1, e2
+  T tangential_force() const {
+    using std::sqrt;
+    return sqrt(sqr(tangential_x) + sqr(tangential_y));
+  }
   vector_t<T> speeds_dot;   ///< (u', v', w', p', q', r') on the trihedron
   vector_t<T> reactions;    ///< Cotton's Q'_c: (F - X, H - Y, K - Z, L - N) on the trihedron
   vector_t<T> multipliers;  ///< Lagrange's, for comparison
@@ -166,7 +177,8 @@ rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const 
   r.omega_dot = mat_vec(r.axes, alpha);
   r.contact_force = mat_vec(r.axes, vec3<T>(m.reactions(0), m.reactions(1), m.reactions(2)));
   r.normal_force = m.reactions(2);
-  r.tangential_force = sqrt(sqr(m.reactions(0)) + sqr(m.reactions(1)));
+  r.tangential_x = m.reactions(0);
+  r.tangential_y = m.reactions(1);
   r.pivot_couple = m.reactions(3);
   // eq. (4) in Cotton's speeds (p, q, u_1, v_1, w, r)
   const auto adapted = change_speeds(sys, change, 6);
