@@ -24,6 +24,7 @@ inline void for_each_sub_box(int splits, const std::function<void(const top_box_
   const auto& in = std::get<top_on_cone_input>(s.input);
   using T = interval;
   const heavy_top<T> top{value<T>(in.A), value<T>(in.C), value<T>(in.mass), value<T>(in.l), value<T>(in.gravity)};
+  const bound_expression<T> fprime(*in.fprime);
   auto piece = [&](const char* lo, const char* hi, int i, int n) {  // i-th of n equal pieces of [lo, hi]
     const T a = from_decimal<T>(lo), b = from_decimal<T>(hi);
     const T l = a + (b - a) * T(i) / T(n), u = a + (b - a) * T(i + 1) / T(n);
@@ -42,13 +43,13 @@ inline void for_each_sub_box(int splits, const std::function<void(const top_box_
           vector_t<T> q(3), v_a(2), u(3);
           q << in.f->eval(r.theta), r.theta, r.phi;
           v_a << r.theta_dot, r.phi_dot;
-          const auto sys = change_speeds(top, cone_speeds<T>{in.fprime.get()}, 3);
+          const auto sys = change_speeds(top, cone_speeds<T>{&fprime}, 3);
           r.cotton = cotton_reactions(sys, q, v_a, T(0), 1);
           r.H = r.cotton.reactions(0);
           r.theta_ddot = r.cotton.free_accelerations(0);
           r.phi_ddot = r.cotton.free_accelerations(1);
           u << r.fprime * r.theta_dot, r.theta_dot, r.phi_dot;
-          const auto lag = lagrange_multipliers(top, cone_constraint<T>{in.fprime.get()}, q, u, T(0));
+          const auto lag = lagrange_multipliers(top, cone_constraint<T>{&fprime}, q, u, T(0));
           r.lambda = lag.reactions(0);
           r.theta_ddot_lagrange = lag.accelerations(1);
           vector_t<T> v(3), g(3);

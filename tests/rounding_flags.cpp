@@ -44,6 +44,25 @@ BOOST_AUTO_TEST_CASE(interval_operations_leave_the_rounding_mode_as_found) {
   BOOST_TEST(x.upper() == 0x1.5555555555556p-2);
 }
 
+BOOST_AUTO_TEST_CASE(boost_helpers_leave_both_units_in_round_to_nearest) {
+  // median, sqrt and floor/ceil go through the rounding policy too: neither the
+  // SSE nor the x87 unit (long double) may be left in another mode.
+  const interval x(1.0, 2.0);
+  (void)boost::numeric::median(x);
+  (void)boost::numeric::sqrt(x);
+  (void)boost::numeric::fmod(interval(7.0), interval(2.0));
+  BOOST_TEST(std::fegetround() == FE_TONEAREST);
+  volatile long double a = 1.0L, b = 3.0L;
+  BOOST_TEST(a / b == 1.0L / 3.0L);
+  {
+    const appell::upward_rounding scope;
+    (void)(x * x);
+  }
+  BOOST_TEST(std::fegetround() == FE_TONEAREST);
+  volatile double c = 1.0, d = 3.0;
+  BOOST_TEST(c / d == 0x1.5555555555555p-2);
+}
+
 BOOST_AUTO_TEST_CASE(no_fast_math) {
 #ifdef __FAST_MATH__
   BOOST_FAIL("compiled with -ffast-math: interval results are not rigorous");

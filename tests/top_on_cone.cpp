@@ -202,8 +202,9 @@ BOOST_AUTO_TEST_CASE(cotton_with_library_built_speeds_equals_cotton_with_the_pap
   vector_t<T> q(3), u(3);
   q << in.f->eval(theta), theta, value<T>(in.phi);
   u << in.fprime->eval(theta) * thd, thd, phd;
-  const auto generic = cotton_reactions(top, cone_constraint<T>{in.fprime.get()}, q, u, T(0));
-  const auto lagrange = lagrange_multipliers(top, cone_constraint<T>{in.fprime.get()}, q, u, T(0));
+  const bound_expression<T> fprime(*in.fprime);
+  const auto generic = cotton_reactions(top, cone_constraint<T>{&fprime}, q, u, T(0));
+  const auto lagrange = lagrange_multipliers(top, cone_constraint<T>{&fprime}, q, u, T(0));
   const auto paper = evaluate<T>(s);
   const T H = paper.result("H").values[0];
   BOOST_TEST(!boost::numeric::empty(boost::numeric::intersect(generic.reactions(0), H)));

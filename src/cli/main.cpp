@@ -9,13 +9,16 @@
 
 #include "appell/io/scene.hpp"
 #include "appell/linalg/solve.hpp"
+#include "tradeoff.hpp"
 
 namespace {
 
 constexpr const char* usage_text =
     "usage: appell eval SCENE [--scalar NAME] [--bits N] [--format json|text]\n"
+    "       appell tradeoff SCENE [--out DIR] [--reps N]\n"
     "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
-    "  --bits N: precision of mpfr and mpfi (default 256)\n";
+    "  --bits N: precision of mpfr and mpfi (default 256)\n"
+    "  tradeoff: speed and accuracy of every scalar; writes DIR/tradeoff.csv and DIR/tradeoff.png\n";
 
 struct options {
   std::string scene;
@@ -55,6 +58,34 @@ int main(int argc, char** argv) {
   if (command == "--help" || command == "-h" || command == "help") {
     std::cout << usage_text;
     return 0;
+  }
+  if (command == "tradeoff") {
+    appell::cli::tradeoff_options t;
+    for (int i = 2; i < argc; ++i) {
+      const std::string a = argv[i];
+      if ((a == "--out" || a == "--reps") && i + 1 >= argc) return usage(a + ": missing value");
+      if (a == "--out") t.out_dir = argv[++i];
+      else if (a == "--reps") {
+        const std::string r = argv[++i];
+        if (r.empty() || r.find_first_not_of("0123456789") != std::string::npos || r.size() > 7 || std::stoi(r) < 1) {
+          std::cerr << "appell: --reps: expected a positive integer, got '" << r << "'\n";
+          return 2;
+        }
+        t.reps = std::stoi(r);
+      } else if (!a.empty() && a[0] == '-') return usage("unknown option '" + a + "'");
+      else if (t.scene.empty()) t.scene = a;
+      else return usage("more than one scene given");
+    }
+    if (t.scene.empty()) return usage("no scene given");
+    try {
+      return appell::cli::tradeoff(t);
+    } catch (const appell::input_error& e) {
+      std::cerr << "appell: " << e.what() << "\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cerr << "appell: " << e.what() << "\n";
+      return 3;
+    }
   }
   if (command != "eval") return usage("unknown command '" + command + "'");
   options o;

@@ -4,6 +4,8 @@
 
 namespace appell {
 template evaluation<dd> evaluate<dd>(const scene_input&);
+template bound_scene<dd> bind<dd>(const scene_input&);
+template evaluation<dd> compute<dd>(const bound_scene<dd>&);
 template std::string format_json<dd>(const scene_input&, const evaluation<dd>&);
 template std::string format_text<dd>(const scene_input&, const evaluation<dd>&);
 }  // namespace appell

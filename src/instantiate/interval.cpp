@@ -4,6 +4,8 @@
 
 namespace appell {
 template evaluation<interval> evaluate<interval>(const scene_input&);
+template bound_scene<interval> bind<interval>(const scene_input&);
+template evaluation<interval> compute<interval>(const bound_scene<interval>&);
 template std::string format_json<interval>(const scene_input&, const evaluation<interval>&);
 template std::string format_text<interval>(const scene_input&, const evaluation<interval>&);
 }  // namespace appell

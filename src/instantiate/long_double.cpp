@@ -4,6 +4,8 @@
 
 namespace appell {
 template evaluation<long double> evaluate<long double>(const scene_input&);
+template bound_scene<long double> bind<long double>(const scene_input&);
+template evaluation<long double> compute<long double>(const bound_scene<long double>&);
 template std::string format_json<long double>(const scene_input&, const evaluation<long double>&);
 template std::string format_text<long double>(const scene_input&, const evaluation<long double>&);
 }  // namespace appell

@@ -4,6 +4,8 @@
 
 namespace appell {
 template evaluation<mpfi> evaluate<mpfi>(const scene_input&);
+template bound_scene<mpfi> bind<mpfi>(const scene_input&);
+template evaluation<mpfi> compute<mpfi>(const bound_scene<mpfi>&);
 template std::string format_json<mpfi>(const scene_input&, const evaluation<mpfi>&);
 template std::string format_text<mpfi>(const scene_input&, const evaluation<mpfi>&);
 }  // namespace appell

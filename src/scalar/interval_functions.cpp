@@ -14,6 +14,8 @@
 #include "appell/scalar/decimal.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace appell {
@@ -21,22 +23,104 @@ namespace {
 
 using unary_mpfr = int (*)(mpfr_ptr, mpfr_srcptr, mpfr_rnd_t);
 
+// Two 53-bit MPFR numbers per thread, made once (mpfr_init/clear per call cost
+// as much as a 53-bit sine).
+struct scratch {
+  mpfr_value a{53}, r{53};
+};
+scratch& work() {
+  thread_local scratch s;
+  return s;
+}
+
 // f(x) rounded to a double in direction rnd.  A 53-bit MPFR result is rounded
 // again by mpfr_get_d only in the subnormal range, and in the same direction.
 double eval(unary_mpfr f, double x, mpfr_rnd_t rnd) {
-  mpfr_value a(53), r(53);
-  mpfr_set_d(a, x, MPFR_RNDN);  // exact
-  f(r, a, rnd);
-  return mpfr_get_d(r, rnd);
+  scratch& s = work();
+  mpfr_set_d(s.a, x, MPFR_RNDN);  // exact
+  f(s.r, s.a, rnd);
+  return mpfr_get_d(s.r, rnd);
+}
+
+// A small per-thread memo of recent results: the kinematics of one evaluation
+// ask for sin and cos of the same angles many times (once per differentiated
+// pass).  Keyed on the exact bounds and the function; results are pure.
+struct memo {
+  struct entry {
+    const void* fn = nullptr;
+    double lo = 0, hi = 0;
+    std::uint64_t epoch = 0;
+    interval value;
+  };
+  std::uint64_t epoch = 1;  // entries of earlier evaluations are stale
+  static constexpr std::size_t size = 64;
+  entry slots[size];
+  static std::uint64_t mix(std::uint64_t z) {  // splitmix64 finaliser
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  static std::size_t slot(const void* fn, double lo, double hi) {
+    std::uint64_t a, b;
+    std::memcpy(&a, &lo, 8);
+    std::memcpy(&b, &hi, 8);
+    return static_cast<std::size_t>(mix(a ^ mix(b ^ mix(reinterpret_cast<std::uintptr_t>(fn)))) % size);
+  }
+  template <class F>
+  interval get(const void* fn, const interval& x, F compute) {
+    entry& e = slots[slot(fn, x.lower(), x.upper())];
+    // bitwise comparison of the bounds (so -0 and +0, or NaN, never alias)
+    if (e.epoch == epoch && e.fn == fn && std::memcmp(&e.lo, &x.lower(), 8) == 0 &&
+        std::memcmp(&e.hi, &x.upper(), 8) == 0)
+      return e.value;
+    const interval v = compute();
+    e.epoch = epoch;
+    e.fn = fn;
+    e.lo = x.lower();
+    e.hi = x.upper();
+    e.value = v;
+    return v;
+  }
+};
+memo& cache() {
+  thread_local memo m;
+  return m;
 }
 double down(unary_mpfr f, double x) { return eval(f, x, MPFR_RNDD); }
 double up(unary_mpfr f, double x) { return eval(f, x, MPFR_RNDU); }
 
+// Both directed roundings of f(x) from one MPFR call: y = RN(f(x)) with its
+// ternary value t tells on which side of y the exact value lies (t > 0: y is
+// above it, so RD = pred(y); t < 0: RU = succ(y); t = 0: exact).
+std::pair<double, double> both(unary_mpfr f, double x) {
+  scratch& s = work();
+  mpfr_set_d(s.a, x, MPFR_RNDN);
+  const int t = f(s.r, s.a, MPFR_RNDN);
+  if (t == 0) return {mpfr_get_d(s.r, MPFR_RNDD), mpfr_get_d(s.r, MPFR_RNDU)};
+  mpfr_set(s.a, s.r, MPFR_RNDN);  // the neighbour, at 53 bits, exact
+  if (t > 0) mpfr_nextbelow(s.a);
+  else mpfr_nextabove(s.a);
+  const double y_lo = t > 0 ? mpfr_get_d(s.a, MPFR_RNDD) : mpfr_get_d(s.r, MPFR_RNDD);
+  const double y_hi = t > 0 ? mpfr_get_d(s.r, MPFR_RNDU) : mpfr_get_d(s.a, MPFR_RNDU);
+  return {y_lo, y_hi};
+}
+
+// Thin or narrow arguments far from every multiple of pi/2 need no certified
+// range reduction: t = x (2/pi) in double is within 1e-9 of the true value for
+// |x| < 2^20, so if [t_lo - 1e-8, t_hi + 1e-8] holds no integer, neither does
+// the true [lo, hi] (2/pi).
+bool clear_of_quadrant_boundaries(const interval& x) {
+  if (!(std::abs(x.lower()) < 1048576.0 && std::abs(x.upper()) < 1048576.0)) return false;
+  const double two_over_pi = 0.63661977236758134;
+  const double a = x.lower() * two_over_pi - 1e-8, b = x.upper() * two_over_pi + 1e-8;
+  return std::floor(a) == std::floor(b);  // no integer in (a, b], so none in [t_lo, t_hi]
+}
+
 double pow_dir(double x, long n, mpfr_rnd_t rnd) {
-  mpfr_value a(53), r(53);
-  mpfr_set_d(a, x, MPFR_RNDN);
-  mpfr_pow_si(r, a, n, rnd);
-  return mpfr_get_d(r, rnd);
+  scratch& s = work();
+  mpfr_set_d(s.a, x, MPFR_RNDN);
+  mpfr_pow_si(s.r, s.a, n, rnd);
+  return mpfr_get_d(s.r, rnd);
 }
 
 constexpr double inf = std::numeric_limits<double>::infinity();
@@ -112,61 +196,112 @@ bool covers_period(const interval& x) { return x.upper() - x.lower() > 6.3; }
 
 }  // namespace
 
-interval sqrt(const interval& x) {
+static interval sqrt_uncached(const interval& x) {
+  const nearest_rounding mpfr_mode;  // MPFR and the bound logic below assume round-to-nearest
   if (boost::numeric::empty(x)) return x;
   if (x.upper() < 0) throw domain_error("sqrt of an interval below 0");
   double lo = x.lower() <= 0 ? 0.0 : down(mpfr_sqrt, x.lower());
   return interval(lo, up(mpfr_sqrt, x.upper()));
 }
 
-interval exp(const interval& x) {
+static interval exp_uncached(const interval& x) {
+  const nearest_rounding mpfr_mode;  // MPFR and the bound logic below assume round-to-nearest
   if (boost::numeric::empty(x)) return x;
-  return interval(down(mpfr_exp, x.lower()), up(mpfr_exp, x.upper()));
+  return interval(both(mpfr_exp, x.lower()).first, both(mpfr_exp, x.upper()).second);
 }
 
-interval log(const interval& x) {
+static interval log_uncached(const interval& x) {
+  const nearest_rounding mpfr_mode;  // MPFR and the bound logic below assume round-to-nearest
   if (boost::numeric::empty(x)) return x;
   if (x.upper() <= 0) throw domain_error("log of an interval with no positive point");
   double lo = x.lower() <= 0 ? -inf : down(mpfr_log, x.lower());
   return interval(lo, up(mpfr_log, x.upper()));
 }
 
-interval atan(const interval& x) {
+static interval atan_uncached(const interval& x) {
+  const nearest_rounding mpfr_mode;  // MPFR and the bound logic below assume round-to-nearest
   if (boost::numeric::empty(x)) return x;
-  return interval(down(mpfr_atan, x.lower()), up(mpfr_atan, x.upper()));
+  return interval(both(mpfr_atan, x.lower()).first, both(mpfr_atan, x.upper()).second);
 }
 
-interval sin(const interval& x) {
+static interval sin_uncached(const interval& x) {
+  const nearest_rounding mpfr_mode;  // MPFR and the bound logic below assume round-to-nearest
   if (boost::numeric::empty(x)) return x;
   if (has_infinite_bound(x) || covers_period(x)) return interval(-1.0, 1.0);
+  const auto [a_lo, a_hi] = both(mpfr_sin, x.lower());
+  if (x.lower() == x.upper()) return interval(a_lo, a_hi);
+  const auto [b_lo, b_hi] = both(mpfr_sin, x.upper());
+  double lo = std::min(a_lo, b_lo), hi = std::max(a_hi, b_hi);
+  if (clear_of_quadrant_boundaries(x)) return interval(lo, hi);
   const quadrants q = locate(x);
-  double lo = std::min(down(mpfr_sin, x.lower()), down(mpfr_sin, x.upper()));
-  double hi = std::max(up(mpfr_sin, x.lower()), up(mpfr_sin, x.upper()));
   if (q.crosses(1)) hi = 1.0;   // sin(pi/2 + 2 k pi) = 1
   if (q.crosses(3)) lo = -1.0;  // sin(3 pi/2 + 2 k pi) = -1
   return interval(lo, hi);
 }
 
-interval cos(const interval& x) {
+static interval cos_uncached(const interval& x) {
+  const nearest_rounding mpfr_mode;  // MPFR and the bound logic below assume round-to-nearest
   if (boost::numeric::empty(x)) return x;
   if (has_infinite_bound(x) || covers_period(x)) return interval(-1.0, 1.0);
+  const auto [a_lo, a_hi] = both(mpfr_cos, x.lower());
+  if (x.lower() == x.upper()) return interval(a_lo, a_hi);
+  const auto [b_lo, b_hi] = both(mpfr_cos, x.upper());
+  double lo = std::min(a_lo, b_lo), hi = std::max(a_hi, b_hi);
+  if (clear_of_quadrant_boundaries(x)) return interval(lo, hi);
   const quadrants q = locate(x);
-  double lo = std::min(down(mpfr_cos, x.lower()), down(mpfr_cos, x.upper()));
-  double hi = std::max(up(mpfr_cos, x.lower()), up(mpfr_cos, x.upper()));
   if (q.crosses(0)) hi = 1.0;   // cos(2 k pi) = 1
   if (q.crosses(2)) lo = -1.0;  // cos(pi + 2 k pi) = -1
   return interval(lo, hi);
 }
 
-interval tan(const interval& x) {
+static interval tan_uncached(const interval& x) {
+  const nearest_rounding mpfr_mode;  // MPFR and the bound logic below assume round-to-nearest
   if (boost::numeric::empty(x)) return x;
   if (has_infinite_bound(x) || covers_period(x)) return entire();
-  const quadrants q = locate(x);
-  if (q.crosses(1) || q.crosses(3)) return entire();  // a pole pi/2 + k pi inside
-  return interval(down(mpfr_tan, x.lower()), up(mpfr_tan, x.upper()));
+  if (x.lower() != x.upper() && !clear_of_quadrant_boundaries(x)) {
+    const quadrants q = locate(x);
+    if (q.crosses(1) || q.crosses(3)) return entire();  // a pole pi/2 + k pi inside
+  }
+  return interval(both(mpfr_tan, x.lower()).first, both(mpfr_tan, x.upper()).second);
+}
+
+interval sin(const interval& x) {
+  static const char tag = 0;
+  return cache().get(&tag, x, [&] { return sin_uncached(x); });
+}
+
+interval cos(const interval& x) {
+  static const char tag = 0;
+  return cache().get(&tag, x, [&] { return cos_uncached(x); });
+}
+
+interval tan(const interval& x) {
+  static const char tag = 0;
+  return cache().get(&tag, x, [&] { return tan_uncached(x); });
+}
+
+interval exp(const interval& x) {
+  static const char tag = 0;
+  return cache().get(&tag, x, [&] { return exp_uncached(x); });
+}
+
+interval log(const interval& x) {
+  static const char tag = 0;
+  return cache().get(&tag, x, [&] { return log_uncached(x); });
+}
+
+interval atan(const interval& x) {
+  static const char tag = 0;
+  return cache().get(&tag, x, [&] { return atan_uncached(x); });
+}
+
+interval sqrt(const interval& x) {
+  static const char tag = 0;
+  return cache().get(&tag, x, [&] { return sqrt_uncached(x); });
 }
 
 interval pown(const interval& x, int n) {
+  const nearest_rounding mpfr_mode;  // MPFR and the bound logic below assume round-to-nearest
   if (boost::numeric::empty(x)) return x;
   const double lo = x.lower(), hi = x.upper();
   const auto d = [n](double v) { return pow_dir(v, n, MPFR_RNDD); };
@@ -194,5 +329,7 @@ interval sqr(const interval& x) { return pown(x, 2); }
 interval abs(const interval& x) { return boost::numeric::abs(x); }
 
 interval interval_pi() { return constant_pi<interval>(); }
+
+void forget_interval_function_values() { ++cache().epoch; }
 
 }  // namespace appell

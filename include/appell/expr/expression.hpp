@@ -39,10 +39,25 @@ class expression {
   std::string to_string() const;
   const std::string& where() const { return where_; }
 
-  /// The value at x (S a scalar or a dual of one); T is the base scalar.
+  /// The value at x (S a scalar or a dual of one); decimal constants are
+  /// converted at each call.  For repeated evaluation bind<T>() them once.
   template <class S>
   S eval(const S& x) const {
-    return eval_node<S>(root_, x);
+    return eval_node<S>(root_, x, nullptr);
+  }
+  /// The expression with its constants converted to T once (bound_expression).
+  template <class T>
+  std::vector<T> constants() const {
+    std::vector<T> c(nodes_.size(), T(0));
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+      if (nodes_[i].kind == op::number) c[i] = from_decimal<T>(nodes_[i].number);
+      if (nodes_[i].kind == op::pi) c[i] = constant_pi<T>();
+    }
+    return c;
+  }
+  template <class S>
+  S eval_bound(const S& x, const std::vector<base_scalar_t<S>>& constants) const {
+    return eval_node<S>(root_, x, &constants);
   }
 
  private:
@@ -53,7 +68,7 @@ class expression {
   bool is_integer(int i, long& value) const;
 
   template <class S>
-  S eval_node(int i, const S& x) const;
+  S eval_node(int i, const S& x, const std::vector<base_scalar_t<S>>* constants) const;
 
   std::vector<node> nodes_;
   int root_ = -1;
@@ -71,7 +86,7 @@ std::string describe(const T& x) { return to_string(x); }
 }  // namespace detail
 
 template <class S>
-S expression::eval_node(int i, const S& x) const {
+S expression::eval_node(int i, const S& x, const std::vector<base_scalar_t<S>>* constants) const {
   using T = base_scalar_t<S>;
   using std::sin, std::cos, std::tan, std::exp, std::log, std::sqrt;
   const node& n = nodes_[static_cast<std::size_t>(i)];
@@ -81,22 +96,22 @@ S expression::eval_node(int i, const S& x) const {
       throw certification_error(where_ + ": cannot exclude " + what + " at the state (" + detail::describe(at) + ")");
   };
   switch (n.kind) {
-    case op::number: return S(from_decimal<T>(n.number));
-    case op::pi: return S(constant_pi<T>());
+    case op::number: return S(constants ? (*constants)[static_cast<std::size_t>(i)] : from_decimal<T>(n.number));
+    case op::pi: return S(constants ? (*constants)[static_cast<std::size_t>(i)] : constant_pi<T>());
     case op::variable: return x;
-    case op::add: return eval_node(n.a, x) + eval_node(n.b, x);
-    case op::sub: return eval_node(n.a, x) - eval_node(n.b, x);
-    case op::mul: return eval_node(n.a, x) * eval_node(n.b, x);
-    case op::neg: return -eval_node(n.a, x);
+    case op::add: return eval_node(n.a, x, constants) + eval_node(n.b, x, constants);
+    case op::sub: return eval_node(n.a, x, constants) - eval_node(n.b, x, constants);
+    case op::mul: return eval_node(n.a, x, constants) * eval_node(n.b, x, constants);
+    case op::neg: return -eval_node(n.a, x, constants);
     case op::div: {
-      const S den = eval_node(n.b, x);
+      const S den = eval_node(n.b, x, constants);
       const T& d = detail::value_of(den);
       domain(certainly_nonnegative(d) && certainly_nonpositive(d), possibly_zero(d), "division by zero", d);
-      return eval_node(n.a, x) / den;
+      return eval_node(n.a, x, constants) / den;
     }
     case op::pow: {
       long k = 0;
-      const S base = eval_node(n.a, x);
+      const S base = eval_node(n.a, x, constants);
       if (is_integer(n.b, k) && k > -1000000 && k < 1000000) {
         if (k < 0) {
           const T& d = detail::value_of(base);
@@ -106,26 +121,26 @@ S expression::eval_node(int i, const S& x) const {
       }
       const T& d = detail::value_of(base);  // a^b = exp(b log a), a > 0
       domain(certainly_nonpositive(d), !certainly_positive(d), "a non-integer power of a number <= 0", d);
-      return exp(eval_node(n.b, x) * log(base));
+      return exp(eval_node(n.b, x, constants) * log(base));
     }
-    case op::sin: return sin(eval_node(n.a, x));
-    case op::cos: return cos(eval_node(n.a, x));
+    case op::sin: return sin(eval_node(n.a, x, constants));
+    case op::cos: return cos(eval_node(n.a, x, constants));
     case op::tan: {
-      const S y = eval_node(n.a, x);
+      const S y = eval_node(n.a, x, constants);
       const S c = cos(y);
       const T& d = detail::value_of(c);
       domain(certainly_nonnegative(d) && certainly_nonpositive(d), possibly_zero(d), "tan at a pole", d);
       return tan(y);
     }
-    case op::exp: return exp(eval_node(n.a, x));
+    case op::exp: return exp(eval_node(n.a, x, constants));
     case op::log: {
-      const S y = eval_node(n.a, x);
+      const S y = eval_node(n.a, x, constants);
       const T& d = detail::value_of(y);
       domain(certainly_nonpositive(d), !certainly_positive(d), "log of a number <= 0", d);
       return log(y);
     }
     case op::sqrt: {
-      const S y = eval_node(n.a, x);
+      const S y = eval_node(n.a, x, constants);
       const T& d = detail::value_of(y);
       // sqrt is not differentiable at 0: a dual argument must be > 0
       if constexpr (is_dual<S>::value)
@@ -137,5 +152,21 @@ S expression::eval_node(int i, const S& x) const {
   }
   throw std::logic_error("expression: unknown node");
 }
+
+/// An expression with its constants in T, for repeated evaluation on T and dual<T>.
+template <Scalar T>
+class bound_expression {
+ public:
+  bound_expression() = default;
+  explicit bound_expression(const expression& e) : e_(&e), constants_(e.constants<T>()) {}
+  template <class S>
+  S eval(const S& x) const {
+    return e_->eval_bound(x, constants_);
+  }
+
+ private:
+  const expression* e_ = nullptr;
+  std::vector<T> constants_;
+};
 
 }  // namespace appell

@@ -99,50 +99,67 @@ named_result<T> scalar_result(std::string name, const T& v) {
 }
 
 template <Scalar T>
-evaluation<T> evaluate_model(const euler_body_input& in) {
-  const euler_system<T> sys{{vec3_from_decimals<T>(in.inertia), vec3_from_decimals<T>(in.torque)}};
-  const vec3<T> omega = vec3_from_decimals<T>(in.omega);
-  const vector_t<T> q = vector_t<T>::Zero(3), u = omega;
-  const appell_equations<T> eq = gibbs_appell(sys, q, u, T(0));
+struct bound_euler_body {
+  euler_system<T> sys;
+  vec3<T> omega;
+};
+template <Scalar T>
+bound_euler_body<T> bind_model(const euler_body_input& in) {
+  return {{{vec3_from_decimals<T>(in.inertia), vec3_from_decimals<T>(in.torque)}}, vec3_from_decimals<T>(in.omega)};
+}
+template <Scalar T>
+evaluation<T> compute_model(const bound_euler_body<T>& m) {
+  const vector_t<T> q = vector_t<T>::Zero(3), u = m.omega;
+  const appell_equations<T> eq = gibbs_appell(m.sys, q, u, T(0));
   const vector_t<T> udot = eq.accelerations();
   const vec3<T> omega_dot(udot(0), udot(1), udot(2));
   evaluation<T> e;
   e.results.push_back(vector_result("omega_dot", omega_dot));
   e.checks.push_back(scalar_result("virtual_work_invariant",
-                                   virtual_work_residual(sys, eq, q, u, T(0), udot, vector_t<T>(vector_t<T>::Ones(3)))));
-  e.checks.push_back(scalar_result("power_balance", euler_power_residual(sys.body, omega, omega_dot)));
+                                   virtual_work_residual(m.sys, eq, q, u, T(0), udot, vector_t<T>(vector_t<T>::Ones(3)))));
+  e.checks.push_back(scalar_result("power_balance", euler_power_residual(m.sys.body, m.omega, omega_dot)));
   return e;
 }
+
 template <Scalar T>
-evaluation<T> evaluate_model(const top_on_cone_input& in) {
-  const heavy_top<T> top{value<T>(in.A), value<T>(in.C), value<T>(in.mass), value<T>(in.l), value<T>(in.gravity)};
-  const T theta = value<T>(in.theta), phi = value<T>(in.phi);
-  const T theta_dot = value<T>(in.theta_dot), phi_dot = value<T>(in.phi_dot);
+struct bound_top_on_cone {
+  heavy_top<T> top;
+  T theta, phi, theta_dot, phi_dot;
+  bound_expression<T> f, fprime, fsecond;
+};
+template <Scalar T>
+bound_top_on_cone<T> bind_model(const top_on_cone_input& in) {
+  return {{value<T>(in.A), value<T>(in.C), value<T>(in.mass), value<T>(in.l), value<T>(in.gravity)},
+          value<T>(in.theta), value<T>(in.phi), value<T>(in.theta_dot), value<T>(in.phi_dot),
+          bound_expression<T>(*in.f), bound_expression<T>(*in.fprime), bound_expression<T>(*in.fsecond)};
+}
+template <Scalar T>
+evaluation<T> compute_model(const bound_top_on_cone<T>& m) {
   const T t = T(0);
-  const T f = in.f->eval(theta), fp = in.fprime->eval(theta), fpp = in.fsecond->eval(theta);
+  const T f = m.f.eval(m.theta), fp = m.fprime.eval(m.theta), fpp = m.fsecond.eval(m.theta);
   vector_t<T> q(3);
-  q << f, theta, phi;
+  q << f, m.theta, m.phi;
   // Cotton (sec. 6): speeds (theta', phi', psi_1'), the cone is psi_1' = 0.
-  const auto sys = change_speeds(top, cone_speeds<T>{in.fprime.get()}, 3);
+  const auto sys = change_speeds(m.top, cone_speeds<T>{&m.fprime}, 3);
   vector_t<T> v_a(2);
-  v_a << theta_dot, phi_dot;
+  v_a << m.theta_dot, m.phi_dot;
   const cotton_result<T> c = cotton_reactions(sys, q, v_a, t, 1);
   const T theta_ddot = c.free_accelerations(0), phi_ddot = c.free_accelerations(1);
   const T H = c.reactions(0);
-  const T psi_ddot = fpp * theta_dot * theta_dot + fp * theta_ddot;  // d/dt (f'(theta) theta')
+  const T psi_ddot = fpp * m.theta_dot * m.theta_dot + fp * theta_ddot;  // d/dt (f'(theta) theta')
   // The couple: J_w^T Gamma = (0, 0, H) in Cotton's speeds (wrench.hpp).
   vector_t<T> v(3), vdot(3), generalized(3);
-  v << theta_dot, phi_dot, T(0);
+  v << m.theta_dot, m.phi_dot, T(0);
   vdot << theta_ddot, phi_ddot, T(0);
   generalized << T(0), T(0), H;
   const auto kin = differentiate_kinematics(sys, q, v, t);
   const vec3<T> couple = constraint_couple(kin[0], generalized);
   // Checks: eq. (4) and Lagrange's multiplier on the unconstrained top.
-  vector_t<T> ones = vector_t<T>::Ones(3);
+  const vector_t<T> ones = vector_t<T>::Ones(3);
   const T vw = virtual_work_residual(sys, c.equations, q, v, t, vdot, ones);
   vector_t<T> u(3);
-  u << fp * theta_dot, theta_dot, phi_dot;
-  const constrained_motion<T> lag = lagrange_multipliers(top, cone_constraint<T>{in.fprime.get()}, q, u, t);
+  u << fp * m.theta_dot, m.theta_dot, m.phi_dot;
+  const constrained_motion<T> lag = lagrange_multipliers(m.top, cone_constraint<T>{&m.fprime}, q, u, t);
   evaluation<T> e;
   e.results.push_back(scalar_result("theta_ddot", theta_ddot));
   e.results.push_back(scalar_result("phi_ddot", phi_ddot));
@@ -154,30 +171,40 @@ evaluation<T> evaluate_model(const top_on_cone_input& in) {
   e.checks.push_back(scalar_result("theta_ddot_cotton_minus_lagrange", T(theta_ddot - lag.accelerations(1))));
   return e;
 }
+
 template <Scalar T>
-evaluation<T> evaluate_model(const rolling_sphere_input& in) {
-  using std::sqrt, std::abs;
-  const T M = value<T>(in.mass), a = value<T>(in.radius);
-  const T A = in.A ? value<T>(*in.A) : rational<T>(2, 5) * M * a * a;
+struct bound_rolling_sphere {
+  T M, A, a;
   rolling_surface<T> surface;
-  surface.type = in.surface;
-  surface.inside = in.inside;
-  if (in.b) surface.b = value<T>(*in.b);
-  const vec3<T> c = vec3_from_decimals<T>(in.center), omega = vec3_from_decimals<T>(in.omega);
-  const vec3<T> F = vec3_from_decimals<T>(in.gravity) * M + vec3_from_decimals<T>(in.force);
-  const vec3<T> tau = vec3_from_decimals<T>(in.torque);
+  vec3<T> c, omega, F, tau;
+  T on_surface, no_pivot;  ///< the constraint residuals at the state
+};
+template <Scalar T>
+bound_rolling_sphere<T> bind_model(const rolling_sphere_input& in) {
+  using std::sqrt, std::abs;
+  bound_rolling_sphere<T> m;
+  m.M = value<T>(in.mass);
+  m.a = value<T>(in.radius);
+  m.A = in.A ? value<T>(*in.A) : rational<T>(2, 5) * m.M * m.a * m.a;
+  m.surface.type = in.surface;
+  m.surface.inside = in.inside;
+  if (in.b) m.surface.b = value<T>(*in.b);
+  m.c = vec3_from_decimals<T>(in.center);
+  m.omega = vec3_from_decimals<T>(in.omega);
+  m.F = vec3_from_decimals<T>(in.gravity) * m.M + vec3_from_decimals<T>(in.force);
+  m.tau = vec3_from_decimals<T>(in.torque);
   // The state must lie on the constraints: centre on the surface of centres, omega . n = 0.
-  T on_surface, no_pivot, scale_c, scale_w = sqrt(dot(omega, omega));
+  T scale_c, scale_w = sqrt(dot(m.omega, m.omega));
   if (in.surface == surface_type::plane) {
-    on_surface = c(2) - a;
-    no_pivot = omega(2);
-    scale_c = abs(c(2)) + a;
+    m.on_surface = m.c(2) - m.a;
+    m.no_pivot = m.omega(2);
+    scale_c = abs(m.c(2)) + m.a;
   } else {
-    const vec3<T> radial = in.surface == surface_type::sphere ? c : vec3<T>(c(0), c(1), T(0));
+    const vec3<T> radial = in.surface == surface_type::sphere ? m.c : vec3<T>(m.c(0), m.c(1), T(0));
     const T norm = sqrt(dot(radial, radial));
-    on_surface = norm - surface.rho(a);
-    no_pivot = dot(omega, radial) / norm;
-    scale_c = norm + abs(surface.rho(a));
+    m.on_surface = norm - m.surface.rho(m.a);
+    m.no_pivot = dot(m.omega, radial) / norm;
+    scale_c = norm + abs(m.surface.rho(m.a));
   }
   auto admissible = [](const T& residual, const T& scale) {
     if constexpr (scalar_traits<T>::is_interval) {
@@ -188,11 +215,15 @@ evaluation<T> evaluate_model(const rolling_sphere_input& in) {
       return abs(residual) <= T(64) * eps * scale;
     }
   };
-  if (!admissible(on_surface, scale_c))
-    throw input_error("state.center: not on the surface of centres (residual " + to_string(on_surface) + ")");
-  if (!admissible(no_pivot, scale_w))
-    throw input_error("state.omega: omega . n must be 0 (no pivoting), residual " + to_string(no_pivot));
-  const rolling_sphere_result<T> r = rolling_sphere_motion(M, A, a, surface, c, omega, F, tau);
+  if (!admissible(m.on_surface, scale_c))
+    throw input_error("state.center: not on the surface of centres (residual " + to_string(m.on_surface) + ")");
+  if (!admissible(m.no_pivot, scale_w))
+    throw input_error("state.omega: omega . n must be 0 (no pivoting), residual " + to_string(m.no_pivot));
+  return m;
+}
+template <Scalar T>
+evaluation<T> compute_model(const bound_rolling_sphere<T>& m) {
+  const rolling_sphere_result<T> r = rolling_sphere_motion(m.M, m.A, m.a, m.surface, m.c, m.omega, m.F, m.tau);
   if (!certainly_positive(r.normal_force) && !certainly_negative(r.normal_force))
     throw certification_error("friction_ratio: the normal force " + to_string(r.normal_force) +
                               " cannot be told from 0");
@@ -207,16 +238,58 @@ evaluation<T> evaluate_model(const rolling_sphere_input& in) {
   e.checks.push_back(scalar_result("virtual_work_invariant", r.virtual_work_residual));
   e.checks.push_back(scalar_result("normal_force_cotton_minus_lagrange", T(r.reactions(2) - r.multipliers(2))));
   e.checks.push_back(scalar_result("pivot_couple_cotton_minus_lagrange", T(r.reactions(3) - r.multipliers(3))));
-  e.checks.push_back(scalar_result("surface_residual", on_surface));
-  e.checks.push_back(scalar_result("pivot_residual", no_pivot));
+  e.checks.push_back(scalar_result("surface_residual", m.on_surface));
+  e.checks.push_back(scalar_result("pivot_residual", m.no_pivot));
   return e;
 }
 }  // namespace detail
 
+/// A scene's inputs converted to T and checked (decimal conversions happen here, once).
+template <Scalar T>
+using bound_scene = std::variant<detail::bound_euler_body<T>, detail::bound_top_on_cone<T>,
+                                 detail::bound_rolling_sphere<T>>;
+
+/// mpfi works with 32 guard bits inside (inputs enclosed and dynamics computed
+/// at p + 32 bits, results rounded outward to p bits at the end): the
+/// dependency effects of naive interval evaluation, which magnify the input
+/// enclosures' width by the thousands on the top, are paid in the guard bits.
+constexpr unsigned mpfi_guard_bits = 32;
+
+template <Scalar T>
+bound_scene<T> bind(const scene_input& scene) {
+  std::optional<mp_precision_scope> guard;
+  if constexpr (std::is_same_v<T, mpfi>) guard.emplace(mp_precision_bits() + mpfi_guard_bits);
+  return std::visit([](const auto& in) { return bound_scene<T>(detail::bind_model<T>(in)); }, scene.input);
+}
+
+/// The dynamics of a bound scene.  Interval evaluations run in one upward-rounding scope.
+template <Scalar T>
+evaluation<T> compute(const bound_scene<T>& scene) {
+  if constexpr (std::is_same_v<T, interval>) {
+    forget_interval_function_values();
+    const upward_rounding mode;
+    return std::visit([](const auto& m) { return detail::compute_model<T>(m); }, scene);
+  } else if constexpr (std::is_same_v<T, mpfi>) {
+    // Guard bits (see bind): compute at p + 32, round the results outward to p.
+    const unsigned bits = mp_precision_bits();
+    evaluation<T> e;
+    {
+      const mp_precision_scope guard(bits + mpfi_guard_bits);
+      e = std::visit([](const auto& m) { return detail::compute_model<T>(m); }, scene);
+    }
+    for (auto* group : {&e.results, &e.checks})
+      for (auto& r : *group)
+        for (auto& x : r.values) mpfi_round_prec(x.backend().data(), static_cast<mpfr_prec_t>(bits));
+    return e;
+  } else {
+    return std::visit([](const auto& m) { return detail::compute_model<T>(m); }, scene);
+  }
+}
+
 /// The scene's results in scalar T (mpfr/mpfi at the current mp precision).
 template <Scalar T>
 evaluation<T> evaluate(const scene_input& scene) {
-  return std::visit([](const auto& in) { return detail::evaluate_model<T>(in); }, scene.input);
+  return compute<T>(bind<T>(scene));
 }
 
 /// The `appell eval` JSON document (SCENES.md).
@@ -269,6 +342,8 @@ std::string format_text(const scene_input& scene, const evaluation<T>& e) {
 // Instantiated once per standard scalar in src/instantiate/*.cpp.
 #define APPELL_EXTERN_SCENE(T)                                                         \
   extern template evaluation<T> evaluate<T>(const scene_input&);                       \
+  extern template bound_scene<T> bind<T>(const scene_input&);                          \
+  extern template evaluation<T> compute<T>(const bound_scene<T>&);                     \
   extern template std::string format_json<T>(const scene_input&, const evaluation<T>&); \
   extern template std::string format_text<T>(const scene_input&, const evaluation<T>&);
 APPELL_EXTERN_SCENE(double)

@@ -25,7 +25,12 @@
 #include <boost/numeric/interval/arith.hpp>
 #include <boost/numeric/interval/arith2.hpp>
 
+#include <cmath>
 #include <stdexcept>
+
+#if !defined(__x86_64__)
+#error "appell's interval<double> controls the SSE rounding mode: x86-64 only"
+#endif
 #include <string>
 
 namespace appell {
@@ -35,24 +40,61 @@ struct domain_error : std::domain_error {
   using std::domain_error::domain_error;
 };
 
-// Rounding for interval<double>.  The FPU is put in upward mode by each
-// operation and restored after it (Boost's save_state); lower bounds are
-// computed by negation, -((-x) - y), so only one mode is ever needed.
+// Rounding for interval<double>.  Every operation needs the SSE unit in
+// upward mode; lower bounds are computed by negation, -((-x) - y), so only
+// that one mode is ever needed.  Each operation reads the mode (one MXCSR
+// read) and, only if it is not upward, sets it and restores it afterwards:
+// correct anywhere, and cheap inside an `upward_rounding` scope, which sets
+// the mode once for a whole evaluation (Boost's save_state would switch
+// twice per operation, ~70x slower than double).
 // Every operand and result passes through an empty `asm volatile`: without
 // it GCC, even with -frounding-math, folds or reuses a result computed in
 // another rounding mode (measured here: the upper bound of [1]/[3], computed
 // upward, was reused for a later round-to-nearest 1.0/3.0, GCC bug 34678).
 // Declared in namespace appell itself (not a nested one) so that
 // argument-dependent lookup on an interval finds appell::sin and friends.
+namespace detail {
+inline unsigned read_mxcsr() {
+  unsigned csr;
+  asm volatile("stmxcsr %0" : "=m"(csr));
+  return csr;
+}
+inline void write_mxcsr(unsigned csr) { asm volatile("ldmxcsr %0" : : "m"(csr)); }
+constexpr unsigned mxcsr_rounding = 0x6000, mxcsr_upward = 0x4000;
+}  // namespace detail
+
+/// Sets upward rounding (SSE) for a scope and restores the previous mode:
+/// wrap an evaluation in it and its interval operations stop switching modes.
+/// Inside it, plain double arithmetic rounds upward too.
+class upward_rounding {
+ public:
+  upward_rounding() : saved_(detail::read_mxcsr()) {
+    detail::write_mxcsr((saved_ & ~detail::mxcsr_rounding) | detail::mxcsr_upward);
+  }
+  ~upward_rounding() { detail::write_mxcsr(saved_); }
+  upward_rounding(const upward_rounding&) = delete;
+  upward_rounding& operator=(const upward_rounding&) = delete;
+
+ private:
+  unsigned saved_;
+};
+
+/// The opposite: round to nearest for a scope (around code that assumes it, e.g. MPFR calls).
+class nearest_rounding {
+ public:
+  nearest_rounding() : saved_(detail::read_mxcsr()) { detail::write_mxcsr(saved_ & ~detail::mxcsr_rounding); }
+  ~nearest_rounding() { detail::write_mxcsr(saved_); }
+  nearest_rounding(const nearest_rounding&) = delete;
+  nearest_rounding& operator=(const nearest_rounding&) = delete;
+
+ private:
+  unsigned saved_;
+};
+
 struct interval_arith : boost::numeric::interval_lib::rounded_arith_opp<double> {
   static double opaque(double x) {
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
     asm volatile("" : "+x"(x));
     return x;
-#else
-    volatile double v = x;
-    return v;
-#endif
   }
   template <class U>
   double conv_down(const U& v) { return -opaque(-static_cast<double>(opaque(v))); }
@@ -66,8 +108,38 @@ struct interval_arith : boost::numeric::interval_lib::rounded_arith_opp<double> 
   double sub_up(double x, double y) { return opaque(opaque(x) - opaque(y)); }
   double mul_up(double x, double y) { return opaque(opaque(x) * opaque(y)); }
   double div_up(double x, double y) { return opaque(opaque(x) / opaque(y)); }
+  // Boost's versions of the following switch modes with fesetround, which
+  // also sets the x87 unit and would leave it upward (long double computations
+  // would then round upward).  These stay on the SSE unit and never leave a mode behind.
+  double median(double x, double y) { return opaque(opaque(x) / 2 + opaque(y) / 2); }  // in [x, y]
+  double sqrt_up(double x) { return opaque(std::sqrt(opaque(x))); }                    // upward mode
+  double sqrt_down(double x) {
+    const unsigned csr = detail::read_mxcsr();
+    detail::write_mxcsr((csr & ~detail::mxcsr_rounding) | 0x2000);  // downward
+    const double r = opaque(std::sqrt(opaque(x)));
+    detail::write_mxcsr(csr);
+    return r;
+  }
+  double int_down(double x) { return std::floor(x); }
+  double int_up(double x) { return std::ceil(x); }
 };
-struct interval_rounding : boost::numeric::interval_lib::save_state<interval_arith> {};
+
+/// Boost's rounding-state protocol: constructed around every interval operation.
+struct interval_rounding : interval_arith {
+  interval_rounding() : saved_(detail::read_mxcsr()) {
+    if ((saved_ & detail::mxcsr_rounding) != detail::mxcsr_upward)
+      detail::write_mxcsr((saved_ & ~detail::mxcsr_rounding) | detail::mxcsr_upward);
+  }
+  ~interval_rounding() {
+    if ((saved_ & detail::mxcsr_rounding) != detail::mxcsr_upward) detail::write_mxcsr(saved_);
+  }
+  interval_rounding(const interval_rounding&) = delete;
+  interval_rounding& operator=(const interval_rounding&) = delete;
+  using unprotected_rounding = interval_rounding;  // never unprotected
+
+ private:
+  unsigned saved_;
+};
 struct interval_checking : boost::numeric::interval_lib::checking_base<double> {};
 
 using interval = boost::numeric::interval<
@@ -87,5 +159,11 @@ interval abs(const interval& x);
 
 /// The tightest enclosure of pi.
 interval interval_pi();
+
+/// sin, cos, tan, exp, log, atan and sqrt remember their recent results (per
+/// thread) so that one evaluation asking for sin(theta) in every differentiated
+/// pass pays once.  This starts a new evaluation: earlier results are not reused
+/// (so benchmarks of repeated evaluations measure real work).
+void forget_interval_function_values();
 
 }  // namespace appell

@@ -60,7 +60,7 @@ struct heavy_top {
 /// psi' - f'(theta) theta' = 0.
 template <Scalar T>
 struct cone_constraint {
-  const expression* fprime;
+  const bound_expression<T>* fprime;
   int count() const { return 1; }
   template <class S>
   void eval(const vector_t<S>& q, const S&, matrix_t<S>& A, vector_t<S>& a) const {
@@ -74,7 +74,7 @@ struct cone_constraint {
 /// Cotton's speeds (theta', phi', psi_1') -> (psi', theta', phi').
 template <Scalar T>
 struct cone_speeds {
-  const expression* fprime;
+  const bound_expression<T>* fprime;
   template <class S>
   vector_t<S> apply(const vector_t<S>& q, const vector_t<S>& v, const S&) const {
     vector_t<S> u(3);

@@ -1,0 +1,211 @@
+// appell tradeoff SCENE [--out DIR] [--reps N]
+//
+// For each scalar (mpfr and mpfi at 64, 113, 256 and 1024 bits), in one run:
+//  * ns_per_eval: the median over N batches of the time of one evaluation of
+//    the scene's dynamics (inputs converted to the scalar once, before timing;
+//    a batch holds enough evaluations to last >= 100 us; warm-up excluded);
+//  * ratio_to_double: that median over double's, from the same run;
+//  * correct_digits: -log10 of the largest relative error over every result
+//    component against a reference computed with mpfr at 4096 bits (4x the
+//    largest precision); for interval types the error of the farther bound,
+//    so the digits are certified;
+//  * rel_width: the largest width / |midpoint| over the components (interval types).
+#include "tradeoff.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <unistd.h>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <vector>
+
+#include "appell/io/scene.hpp"
+
+namespace appell::cli {
+namespace {
+
+struct row {
+  std::string scalar;
+  unsigned bits = 0;
+  double ns = NAN, ratio = NAN, digits = NAN, rel_width = NAN;
+  long batch = 0;
+  std::string note;
+};
+
+using reference_values = std::vector<mpfr_value>;
+
+template <class T>
+std::vector<T> flatten(const evaluation<T>& e) {
+  std::vector<T> v;
+  for (const auto& r : e.results) v.insert(v.end(), r.values.begin(), r.values.end());
+  return v;
+}
+
+// digits and relative width of an evaluation against the reference
+template <class T>
+void accuracy(const evaluation<T>& e, const reference_values& ref, row& out) {
+  const std::vector<T> v = flatten(e);
+  double worst = 0, widest = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    mpfr_value lo, hi, d1(4200), d2(4200), mag(64);
+    scalar_traits<T>::to_mpfr(v[i], lo, hi);
+    mpfr_sub(d1, lo, ref[i], MPFR_RNDU);
+    mpfr_sub(d2, hi, ref[i], MPFR_RNDU);
+    mpfr_abs(d1, d1, MPFR_RNDU);
+    mpfr_abs(d2, d2, MPFR_RNDU);
+    mpfr_max(d1, d1, d2, MPFR_RNDU);
+    mpfr_abs(mag, ref[i], MPFR_RNDN);
+    // relative error, or absolute where the reference is below 1e-300 (an exact 0)
+    if (mpfr_cmp_d(mag, 1e-300) > 0) mpfr_div(d1, d1, mag, MPFR_RNDU);
+    worst = std::max(worst, mpfr_get_d(d1, MPFR_RNDU));
+    if constexpr (scalar_traits<T>::is_interval) {
+      mpfr_value w(64);
+      mpfr_sub(w, hi, lo, MPFR_RNDU);
+      if (mpfr_cmp_d(mag, 1e-300) > 0) mpfr_div(w, w, mag, MPFR_RNDU);
+      widest = std::max(widest, mpfr_get_d(w, MPFR_RNDU));
+    }
+  }
+  out.digits = worst > 0 ? std::min(-std::log10(worst), 1233.0) : 1233.0;  // 4096 bits ~ 1233 digits
+  if constexpr (scalar_traits<T>::is_interval) out.rel_width = widest;
+}
+
+template <class T>
+row measure(const scene_input& scene, const reference_values& ref, unsigned bits, int reps) {
+  row r;
+  r.scalar = scalar_traits<T>::name;
+  std::optional<mp_precision_scope> scope;
+  if (bits) scope.emplace(bits);
+  r.bits = scalar_traits<T>::precision_bits();
+  try {
+    const bound_scene<T> bound = bind<T>(scene);
+    accuracy(compute<T>(bound), ref, r);
+    using clock = std::chrono::steady_clock;
+    // batch size: enough evaluations for >= 100 us
+    long batch = 1;
+    for (;;) {
+      const auto t0 = clock::now();
+      for (long i = 0; i < batch; ++i) (void)compute<T>(bound);
+      const double us = std::chrono::duration<double, std::micro>(clock::now() - t0).count();
+      if (us >= 100 || batch >= (1 << 20)) break;
+      batch *= 2;
+    }
+    for (int w = 0; w < 3; ++w)
+      for (long i = 0; i < batch; ++i) (void)compute<T>(bound);  // warm-up
+    std::vector<double> per_eval;
+    for (int k = 0; k < reps; ++k) {
+      const auto t0 = clock::now();
+      for (long i = 0; i < batch; ++i) (void)compute<T>(bound);
+      per_eval.push_back(std::chrono::duration<double, std::nano>(clock::now() - t0).count() / batch);
+    }
+    std::nth_element(per_eval.begin(), per_eval.begin() + per_eval.size() / 2, per_eval.end());
+    r.ns = per_eval[per_eval.size() / 2];
+    r.batch = batch;
+  } catch (const std::exception& e) {
+    r.note = e.what();
+  }
+  return r;
+}
+
+std::string fmt(double x, int precision = 3) {
+  if (std::isnan(x)) return "";
+  std::ostringstream s;
+  s << std::setprecision(precision) << x;
+  return s.str();
+}
+
+}  // namespace
+
+int tradeoff(const tradeoff_options& o) {
+  const scene_input scene = read_scene_file(o.scene);
+  reference_values ref;
+  {
+    mp_precision_scope scope(4096);
+    for (const mpfr& x : flatten(evaluate<mpfr>(scene))) {
+      mpfr_value v;
+      to_mpfr_exact(x, v);
+      ref.push_back(v);
+    }
+  }
+  struct job {
+    const char* name;
+    unsigned bits;
+  };
+  const std::vector<job> jobs = {{"double", 0},  {"long-double", 0}, {"dd", 0},     {"float128", 0},
+                                 {"mpfr", 64},   {"mpfr", 113},      {"mpfr", 256}, {"mpfr", 1024},
+                                 {"interval", 0}, {"mpfi", 64},      {"mpfi", 113}, {"mpfi", 256},
+                                 {"mpfi", 1024}};
+  std::vector<row> rows;
+  for (std::size_t j = 0; j < jobs.size(); ++j) {
+    std::cerr << "\r[" << j + 1 << "/" << jobs.size() << "] " << jobs[j].name
+              << (jobs[j].bits ? " " + std::to_string(jobs[j].bits) : std::string()) << "          " << std::flush;
+    const std::string n = jobs[j].name;
+    const unsigned b = jobs[j].bits;
+    if (n == "double") rows.push_back(measure<double>(scene, ref, 0, o.reps));
+    else if (n == "long-double") rows.push_back(measure<long double>(scene, ref, 0, o.reps));
+    else if (n == "dd") rows.push_back(measure<dd>(scene, ref, 0, o.reps));
+    else if (n == "float128") rows.push_back(measure<float128>(scene, ref, 0, o.reps));
+    else if (n == "mpfr") rows.push_back(measure<mpfr>(scene, ref, b, o.reps));
+    else if (n == "interval") rows.push_back(measure<interval>(scene, ref, 0, o.reps));
+    else rows.push_back(measure<mpfi>(scene, ref, b, o.reps));
+  }
+  std::cerr << "\r" << std::string(40, ' ') << "\r";
+  const double base = rows.front().ns;
+  for (auto& r : rows) r.ratio = r.ns / base;
+
+  std::filesystem::create_directories(o.out_dir);
+  const std::filesystem::path csv = std::filesystem::path(o.out_dir) / "tradeoff.csv";
+  {
+    std::ofstream f(csv);
+    f << "scalar,bits,ns_per_eval,ratio_to_double,correct_digits,rel_width,batch,reps,note\n";
+    for (const auto& r : rows)
+      f << r.scalar << "," << r.bits << "," << fmt(r.ns, 6) << "," << fmt(r.ratio, 4) << "," << fmt(r.digits, 4) << ","
+        << fmt(r.rel_width, 3) << "," << r.batch << "," << o.reps << ",\"" << r.note << "\"\n";
+  }
+  std::cout << "appell tradeoff " << o.scene << " (" << scene.model << "), median of " << o.reps
+            << " batches, reference: mpfr 4096 bits\n\n";
+  std::cout << std::left << std::setw(12) << "scalar" << std::right << std::setw(6) << "bits" << std::setw(14)
+            << "ns/eval" << std::setw(12) << "x double" << std::setw(10) << "digits" << std::setw(12) << "rel.width"
+            << "\n";
+  for (const auto& r : rows) {
+    std::cout << std::left << std::setw(12) << r.scalar << std::right << std::setw(6) << r.bits << std::setw(14)
+              << fmt(r.ns, 5) << std::setw(12) << fmt(r.ratio, 3) << std::setw(10) << fmt(r.digits, 3) << std::setw(12)
+              << (std::isnan(r.rel_width) ? "-" : fmt(r.rel_width, 2)) << (r.note.empty() ? "" : "  " + r.note) << "\n";
+  }
+  // The plot: correct digits against cost (log scale), one labelled point per row.
+  const std::filesystem::path dat = std::filesystem::temp_directory_path() / ("appell-tradeoff-" + std::to_string(::getpid()) + ".dat");
+  const std::filesystem::path png = std::filesystem::path(o.out_dir) / "tradeoff.png";
+  {
+    std::ofstream f(dat);
+    for (const auto& r : rows)
+      if (!std::isnan(r.ns))
+        f << r.ratio << " " << r.digits << " \"" << r.scalar << (r.bits > 64 && r.scalar.rfind("mp", 0) == 0 ? " " + std::to_string(r.bits) : "")
+          << "\" " << (r.scalar == "interval" || r.scalar == "mpfi" ? 1 : 0) << "\n";
+  }
+  const std::string script = "set terminal png size 900,600 noenhanced\nset output '" + png.string() +
+                             "'\nset logscale x\nset xlabel 'cost: time per evaluation / double'\n"
+                             "set ylabel 'correct decimal digits (intervals: certified)'\nset title 'appell tradeoff: " +
+                             scene.model + "'\nset grid\nset key top left\n"
+                             "plot '" + dat.string() + "' using 1:($4==0?$2:1/0) with points pt 7 ps 1.5 title 'point types', "
+                             "'' using 1:($4==1?$2:1/0) with points pt 5 ps 1.5 title 'interval types (rigorous)', "
+                             "'' using 1:2:3 with labels offset 0,1 notitle\n";
+  FILE* gp = popen("gnuplot 2>&1", "w");
+  bool plotted = false;
+  if (gp) {
+    std::fputs(script.c_str(), gp);
+    plotted = pclose(gp) == 0 && std::filesystem::exists(png);
+  }
+  std::filesystem::remove(dat);
+  std::cout << "\nwrote " << csv.string();
+  if (plotted) std::cout << " and " << png.string();
+  else std::cout << " (no plot: gnuplot not found; install gnuplot-nox)";
+  std::cout << "\n";
+  return 0;
+}
+
+}  // namespace appell::cli
