@@ -9,6 +9,7 @@
 
 #include "appell/io/scene.hpp"
 #include "appell/linalg/solve.hpp"
+#include "extremes.hpp"
 #include "tradeoff.hpp"
 
 namespace {
@@ -16,6 +17,7 @@ namespace {
 constexpr const char* usage_text =
     "usage: appell eval SCENE [--scalar NAME] [--bits N] [--format json|text]\n"
     "       appell tradeoff SCENE [--out DIR] [--reps N]\n"
+    "       appell extremes [--out DIR]\n"
     "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
     "  --bits N: precision of mpfr and mpfi (default 256)\n"
     "  tradeoff: speed and accuracy of every scalar; writes DIR/tradeoff.csv and DIR/tradeoff.png\n";
@@ -58,6 +60,15 @@ int main(int argc, char** argv) {
   if (command == "--help" || command == "-h" || command == "help") {
     std::cout << usage_text;
     return 0;
+  }
+  if (command == "extremes") {
+    appell::cli::extremes_options x;
+    for (int i = 2; i < argc; ++i) {
+      const std::string a = argv[i];
+      if (a == "--out" && i + 1 < argc) x.out_dir = argv[++i];
+      else return usage("extremes: unknown argument '" + a + "'");
+    }
+    return appell::cli::extremes(x);
   }
   if (command == "tradeoff") {
     appell::cli::tradeoff_options t;

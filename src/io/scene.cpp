@@ -2,6 +2,7 @@
 #include "appell/io/scene.hpp"
 
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace appell {
@@ -142,6 +143,28 @@ scene_input read_scene(const json_value& root) {
   }
   scene.finish();
   return out;
+}
+
+double error_amplification(const scene_input& scene) {
+  try {
+    const evaluation<interval> e = compute<interval>(bind<interval>(scene));
+    // relative widths of the components bounded away from 0 (a result that
+    // may be 0 has no relative accuracy to lose); absolute ones if all may be 0
+    double widest = 0, widest_abs = 0;
+    bool any_nonzero = false;
+    for (const auto& r : e.results)
+      for (const interval& x : r.values) {
+        const double w = boost::numeric::width(x);
+        widest_abs = std::max(widest_abs, w);
+        if (x.lower() > 0 || x.upper() < 0) {
+          any_nonzero = true;
+          widest = std::max(widest, w / std::min(std::abs(x.lower()), std::abs(x.upper())));
+        }
+      }
+    return (any_nonzero ? widest : widest_abs) / std::ldexp(1.0, -53);
+  } catch (const std::exception&) {
+    return std::numeric_limits<double>::infinity();
+  }
 }
 
 scene_input read_scene_file(const std::string& path) {

@@ -204,14 +204,14 @@ bound_rolling_sphere<T> bind_model(const rolling_sphere_input& in) {
     const T norm = sqrt(dot(radial, radial));
     m.on_surface = norm - m.surface.rho(m.a);
     m.no_pivot = dot(m.omega, radial) / norm;
-    scale_c = norm + abs(m.surface.rho(m.a));
+    scale_c = norm + m.surface.b + m.a;  // rho = b -+ a may cancel: its error scales with b and a
   }
   auto admissible = [](const T& residual, const T& scale) {
     if constexpr (scalar_traits<T>::is_interval) {
       (void)scale;
       return possibly_zero(residual);
     } else {
-      const T eps = T(std::ldexp(1.0, 1 - static_cast<int>(scalar_traits<T>::precision_bits())));
+      const T eps = pown(T(2), 1 - static_cast<int>(scalar_traits<T>::precision_bits()));  // no double underflow at 2048 bits
       return abs(residual) <= T(64) * eps * scale;
     }
   };
@@ -286,10 +286,22 @@ evaluation<T> compute(const bound_scene<T>& scene) {
   }
 }
 
+/// How much the scene amplifies rounding errors, measured: the largest relative
+/// width of the results of an interval<double> evaluation, divided by 2^-53
+/// (infinity where that evaluation cannot certify).  Point types carry it in
+/// "checks" as `error_amplification`: their relative error is expected below
+/// error_amplification * 2^(1 - precision) (tests/extremes.cpp holds them to 16x that).
+double error_amplification(const scene_input& scene);
+
 /// The scene's results in scalar T (mpfr/mpfi at the current mp precision).
 template <Scalar T>
 evaluation<T> evaluate(const scene_input& scene) {
-  return compute<T>(bind<T>(scene));
+  evaluation<T> e = compute<T>(bind<T>(scene));
+  if constexpr (!scalar_traits<T>::is_interval) {
+    const double a = error_amplification(scene);
+    e.checks.push_back(detail::scalar_result("error_amplification", T(a)));
+  }
+  return e;
 }
 
 /// The `appell eval` JSON document (SCENES.md).

@@ -1,0 +1,171 @@
+// appell extremes [--out DIR]: the stability study.  For every point of every
+// sweep (extremes_sweeps.cpp) and every scalar: the correct digits against
+// mpfr at 2048 bits, the relative width of interval results, the
+// error_amplification check of point results, or the refusal (exit 3 of
+// `appell eval`) where no certificate exists.  Writes DIR/SWEEP.csv and
+// DIR/SWEEP.png (digits against the swept parameter), and a summary on stdout.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "appell/io/scene.hpp"
+#include "extremes.hpp"
+
+namespace appell::cli {
+namespace {
+
+struct outcome {
+  std::string status = "ok";  // ok | refused | bad input
+  double digits = NAN, rel_width = NAN, amplification = NAN;
+  std::string why;
+};
+
+template <class T>
+outcome run(const scene_input& scene, const std::vector<mpfr_value>* ref) {
+  outcome o;
+  try {
+    const evaluation<T> e = evaluate<T>(scene);
+    double worst = 0, widest = 0;
+    std::size_t i = 0;
+    for (const auto& r : e.results)
+      for (const T& x : r.values) {
+        mpfr_value lo, hi;
+        scalar_traits<T>::to_mpfr(x, lo, hi);
+        if (ref) {
+          mpfr_value d1(2200), d2(2200), mag(64);
+          mpfr_sub(d1, lo, (*ref)[i], MPFR_RNDU);
+          mpfr_sub(d2, hi, (*ref)[i], MPFR_RNDU);
+          mpfr_abs(d1, d1, MPFR_RNDU);
+          mpfr_abs(d2, d2, MPFR_RNDU);
+          mpfr_max(d1, d1, d2, MPFR_RNDU);
+          mpfr_abs(mag, (*ref)[i], MPFR_RNDN);
+          if (mpfr_cmp_d(mag, 1e-300) > 0) mpfr_div(d1, d1, mag, MPFR_RNDU);
+          worst = std::max(worst, mpfr_get_d(d1, MPFR_RNDU));
+        }
+        if constexpr (scalar_traits<T>::is_interval) {
+          mpfr_value w(64), m(64);
+          mpfr_sub(w, hi, lo, MPFR_RNDU);
+          mpfr_abs(m, hi, MPFR_RNDN);
+          mpfr_abs(lo, lo, MPFR_RNDN);
+          mpfr_max(m, m, lo, MPFR_RNDN);
+          if (mpfr_cmp_d(m, 1e-300) > 0) mpfr_div(w, w, m, MPFR_RNDU);
+          widest = std::max(widest, mpfr_get_d(w, MPFR_RNDU));
+        }
+        ++i;
+      }
+    if (ref) o.digits = worst > 0 ? std::min(-std::log10(worst), 616.0) : 616.0;
+    if constexpr (scalar_traits<T>::is_interval) o.rel_width = widest;
+    for (const auto& c : e.checks)
+      if (c.name == "error_amplification") o.amplification = approx_double(c.values[0]);
+  } catch (const input_error& x) {
+    o.status = "bad input";
+    o.why = x.what();
+  } catch (const std::exception& x) {
+    o.status = "refused";
+    o.why = x.what();
+  }
+  return o;
+}
+
+std::string fmt(double x, int p = 3) {
+  if (std::isnan(x)) return "";
+  std::ostringstream s;
+  s << std::setprecision(p) << x;
+  return s.str();
+}
+
+}  // namespace
+
+int extremes(const extremes_options& o) {
+  std::filesystem::create_directories(o.out_dir);
+  const auto sweeps = extreme_sweeps();
+  const char* scalars[] = {"double", "long-double", "dd", "float128", "mpfr113", "interval", "mpfi113"};
+  std::cout << "appell extremes: correct digits (vs mpfr 2048 bits); 'R' = refused with a reason (exit 3)\n";
+  std::size_t done = 0, total = 0;
+  for (const auto& w : sweeps) total += w.points.size();
+  for (const auto& w : sweeps) {
+    std::ofstream csv(std::filesystem::path(o.out_dir) / (w.name + ".csv"));
+    csv << "sweep,param,x,scalar,bits,status,correct_digits,rel_width,error_amplification,reason\n";
+    std::cout << "\n" << w.what << "\n" << std::left << std::setw(22) << w.x_label;
+    for (const char* s : scalars) std::cout << std::right << std::setw(12) << s;
+    std::cout << "\n";
+    std::map<std::string, std::vector<std::pair<double, double>>> series;
+    for (const auto& p : w.points) {
+      std::cerr << "\r[" << ++done << "/" << total << "] " << w.name << " " << p.param << "        " << std::flush;
+      const scene_input scene = read_scene(parse_json(p.json));
+      std::optional<std::vector<mpfr_value>> ref;
+      try {
+        mp_precision_scope scope(2048);
+        ref.emplace();
+        for (const auto& r : compute<mpfr>(bind<mpfr>(scene)).results)
+          for (const mpfr& x : r.values) {
+            mpfr_value v;
+            to_mpfr_exact(x, v);
+            ref->push_back(v);
+          }
+      } catch (const std::exception&) {
+        ref.reset();  // no reference: the point is singular even at 2048 bits
+      }
+      const std::vector<mpfr_value>* r = ref ? &*ref : nullptr;
+      std::cout << std::left << std::setw(22) << fmt(p.x, 4);
+      for (const char* s : scalars) {
+        const std::string name = s;
+        outcome out;
+        unsigned bits = 0;
+        if (name == "double") out = run<double>(scene, r), bits = 53;
+        else if (name == "long-double") out = run<long double>(scene, r), bits = 64;
+        else if (name == "dd") out = run<dd>(scene, r), bits = 106;
+        else if (name == "float128") out = run<float128>(scene, r), bits = 113;
+        else if (name == "interval") out = run<interval>(scene, r), bits = 53;
+        else {
+          mp_precision_scope scope(113);
+          bits = scope.bits();
+          out = name == "mpfr113" ? run<mpfr>(scene, r) : run<mpfi>(scene, r);
+        }
+        csv << w.name << "," << p.param << "," << p.x << "," << name << "," << bits << "," << out.status << ","
+            << fmt(out.digits, 4) << "," << fmt(out.rel_width) << "," << fmt(out.amplification) << ",\""
+            << out.why << "\"\n";
+        std::cout << std::right << std::setw(12) << (out.status == "ok" ? fmt(out.digits, 3) : std::string("R"));
+        if (out.status == "ok" && !std::isnan(out.digits)) series[name].push_back({p.x, out.digits});
+      }
+      std::cout << "\n";
+    }
+    // plot
+    const auto dat = std::filesystem::temp_directory_path() / ("appell-extremes-" + std::to_string(::getpid()) + ".dat");
+    std::string plot;
+    {
+      std::ofstream f(dat);
+      int block = 0;
+      for (const char* s : scalars) {
+        for (const auto& [x, d] : series[s]) f << x << " " << d << "\n";
+        f << "\n\n";
+        plot += std::string(block ? ", " : "") + "'" + dat.string() + "' index " + std::to_string(block) +
+                " with linespoints lw 2 title '" + s + "'";
+        ++block;
+      }
+    }
+    const auto png = std::filesystem::path(o.out_dir) / (w.name + ".png");
+    const std::string script = "set terminal png size 900,600 noenhanced\nset output '" + png.string() +
+                               "'\nset title \"" + w.what + "\"\nset xlabel \"" + w.x_label +
+                               "\"\nset ylabel 'correct decimal digits (intervals: certified)'\nset grid\nset key outside right\nplot " +
+                               plot + "\n";
+    if (FILE* gp = popen("gnuplot 2>/dev/null", "w")) {
+      std::fputs(script.c_str(), gp);
+      pclose(gp);
+    }
+    std::filesystem::remove(dat);
+  }
+  std::cerr << "\r" << std::string(60, ' ') << "\r";
+  std::cout << "\nwrote " << o.out_dir << "/<sweep>.csv and .png\n";
+  return 0;
+}
+
+}  // namespace appell::cli

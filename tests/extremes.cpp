@@ -1,0 +1,124 @@
+// Stability at the extremes: the guarantees the study (appell extremes,
+// data/extremes/) relies on, locked in on every point of every sweep:
+//  * interval and mpfi results contain the 2048-bit reference, or the
+//    evaluation refuses with a reason -- never a box that misses;
+//  * point results stay within the documented bound
+//      max_i |x_i - x*_i| <= 16 * error_amplification * 2^(1 - p) * max_i |x*_i|,
+//    error_amplification being the check every point result carries.
+#define BOOST_TEST_MODULE extremes
+#include <boost/test/unit_test.hpp>
+
+#include "../src/cli/extremes.hpp"
+#include "appell/io/scene.hpp"
+
+using namespace appell;
+
+namespace {
+
+struct tally {
+  long contained = 0, refused = 0, within = 0;
+};
+
+// Normwise error of a point result against the reference, relative to the reference's size.
+template <class T>
+double normwise_error(const evaluation<T>& e, const std::vector<mpfr_value>& ref) {
+  mpfr_value worst(64), size(64);
+  mpfr_set_ui(worst, 0, MPFR_RNDN);
+  mpfr_set_ui(size, 0, MPFR_RNDN);
+  std::size_t i = 0;
+  for (const auto& r : e.results)
+    for (const T& x : r.values) {
+      mpfr_value v, d(2200), a(64);
+      to_mpfr_exact(x, v);
+      mpfr_sub(d, v, ref[i], MPFR_RNDU);
+      mpfr_abs(d, d, MPFR_RNDU);
+      if (mpfr_greater_p(d, worst)) mpfr_set(worst, d, MPFR_RNDU);
+      mpfr_abs(a, ref[i], MPFR_RNDN);
+      if (mpfr_greater_p(a, size)) mpfr_set(size, a, MPFR_RNDN);
+      ++i;
+    }
+  if (mpfr_zero_p(size)) return mpfr_get_d(worst, MPFR_RNDU);
+  mpfr_div(worst, worst, size, MPFR_RNDU);
+  return mpfr_get_d(worst, MPFR_RNDU);
+}
+
+template <class T>
+void check(const scene_input& scene, const std::vector<mpfr_value>& ref, tally& t, const std::string& where) {
+  try {
+    const evaluation<T> e = evaluate<T>(scene);
+    if constexpr (scalar_traits<T>::is_interval) {
+      std::size_t i = 0;
+      for (const auto& r : e.results)
+        for (const T& x : r.values) {
+          BOOST_REQUIRE_MESSAGE(contains(x, ref[i]), where << " " << scalar_traits<T>::name << " " << r.name
+                                                           << " = " << to_string(x) << " misses the reference");
+          ++i;
+        }
+      ++t.contained;
+    } else {
+      double amplification = 0;
+      for (const auto& c : e.checks)
+        if (c.name == "error_amplification") amplification = approx_double(c.values[0]);
+      const double eps = std::ldexp(1.0, 1 - static_cast<int>(scalar_traits<T>::precision_bits()));
+      const double err = normwise_error(e, ref);
+      BOOST_REQUIRE_MESSAGE(err <= 16 * std::max(amplification, 1.0) * eps,
+                            where << " " << scalar_traits<T>::name << ": error " << err << " > 16 x amplification "
+                                  << amplification << " x eps");
+      ++t.within;
+    }
+  } catch (const certification_error&) {
+    ++t.refused;  // a refusal with a reason is allowed; a wrong box is not
+  } catch (const domain_error&) {
+    ++t.refused;
+  }
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(every_sweep_point_is_contained_refused_or_within_its_bound) {
+  tally t;
+  long points = 0;
+  for (const auto& w : cli::extreme_sweeps()) {
+    for (const auto& p : w.points) {
+      const scene_input scene = read_scene(parse_json(p.json));
+      std::vector<mpfr_value> ref;
+      {
+        mp_precision_scope scope(2048);
+        for (const auto& r : compute<mpfr>(bind<mpfr>(scene)).results)
+          for (const mpfr& x : r.values) {
+            mpfr_value v;
+            to_mpfr_exact(x, v);
+            ref.push_back(v);
+          }
+      }
+      const std::string where = w.name + " at " + p.param;
+      check<double>(scene, ref, t, where);
+      check<long double>(scene, ref, t, where);
+      check<dd>(scene, ref, t, where);
+      check<float128>(scene, ref, t, where);
+      check<interval>(scene, ref, t, where);
+      {
+        mp_precision_scope scope(113);
+        check<mpfr>(scene, ref, t, where);
+        check<mpfi>(scene, ref, t, where);
+      }
+      ++points;
+    }
+  }
+  BOOST_TEST_MESSAGE(points << " sweep points x 7 scalars: " << t.contained << " interval results contain the reference, "
+                            << t.refused << " refused, " << t.within << " point results within their bound");
+  BOOST_TEST(points >= 50);
+  BOOST_TEST(t.contained + t.refused + t.within == points * 7);
+}
+
+BOOST_AUTO_TEST_CASE(the_euler_angle_singularity_itself_is_refused_not_answered) {
+  // theta = 0 exactly: the couple's J_w is singular; every scalar must refuse.
+  const scene_input scene = read_scene(parse_json(
+      "{\"model\": \"top_on_cone\", \"top\": {\"A\": \"0.08\", \"C\": \"0.02\", \"mass\": \"1.5\", \"l\": \"0.2\"},"
+      " \"gravity\": \"9.81\", \"cone\": \"0.5*theta\", \"state\": {\"theta\": \"0\", \"phi\": \"0\","
+      " \"theta_dot\": \"1\", \"phi_dot\": \"1\"}}"));
+  BOOST_CHECK_THROW(evaluate<interval>(scene), certification_error);
+  BOOST_CHECK_THROW(evaluate<double>(scene), certification_error);
+  mp_precision_scope scope(113);
+  BOOST_CHECK_THROW(evaluate<mpfi>(scene), certification_error);
+}
