@@ -8,6 +8,7 @@
 #define BOOST_TEST_MODULE extremes
 #include <boost/test/unit_test.hpp>
 
+#include "../src/cli/accuracy.hpp"
 #include "../src/cli/extremes.hpp"
 #include "appell/io/scene.hpp"
 
@@ -81,16 +82,7 @@ BOOST_AUTO_TEST_CASE(every_sweep_point_is_contained_refused_or_within_its_bound)
   for (const auto& w : cli::extreme_sweeps()) {
     for (const auto& p : w.points) {
       const scene_input scene = read_scene(parse_json(p.json));
-      std::vector<mpfr_value> ref;
-      {
-        mp_precision_scope scope(2048);
-        for (const auto& r : compute<mpfr>(bind<mpfr>(scene)).results)
-          for (const mpfr& x : r.values) {
-            mpfr_value v;
-            to_mpfr_exact(x, v);
-            ref.push_back(v);
-          }
-      }
+      const std::vector<mpfr_value> ref = cli::reference_values(scene, 2048);
       const std::string where = w.name + " at " + p.param;
       check<double>(scene, ref, t, where);
       check<long double>(scene, ref, t, where);

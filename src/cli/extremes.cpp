@@ -16,7 +16,7 @@
 
 #include <unistd.h>
 
-#include "appell/io/scene.hpp"
+#include "accuracy.hpp"
 #include "extremes.hpp"
 
 namespace appell::cli {
@@ -33,36 +33,11 @@ outcome run(const scene_input& scene, const std::vector<mpfr_value>* ref) {
   outcome o;
   try {
     const evaluation<T> e = evaluate<T>(scene);
-    double worst = 0, widest = 0;
-    std::size_t i = 0;
-    for (const auto& r : e.results)
-      for (const T& x : r.values) {
-        mpfr_value lo, hi;
-        scalar_traits<T>::to_mpfr(x, lo, hi);
-        if (ref) {
-          mpfr_value d1(2200), d2(2200), mag(64);
-          mpfr_sub(d1, lo, (*ref)[i], MPFR_RNDU);
-          mpfr_sub(d2, hi, (*ref)[i], MPFR_RNDU);
-          mpfr_abs(d1, d1, MPFR_RNDU);
-          mpfr_abs(d2, d2, MPFR_RNDU);
-          mpfr_max(d1, d1, d2, MPFR_RNDU);
-          mpfr_abs(mag, (*ref)[i], MPFR_RNDN);
-          if (mpfr_cmp_d(mag, 1e-300) > 0) mpfr_div(d1, d1, mag, MPFR_RNDU);
-          worst = std::max(worst, mpfr_get_d(d1, MPFR_RNDU));
-        }
-        if constexpr (scalar_traits<T>::is_interval) {
-          mpfr_value w(64), m(64);
-          mpfr_sub(w, hi, lo, MPFR_RNDU);
-          mpfr_abs(m, hi, MPFR_RNDN);
-          mpfr_abs(lo, lo, MPFR_RNDN);
-          mpfr_max(m, m, lo, MPFR_RNDN);
-          if (mpfr_cmp_d(m, 1e-300) > 0) mpfr_div(w, w, m, MPFR_RNDU);
-          widest = std::max(widest, mpfr_get_d(w, MPFR_RNDU));
-        }
-        ++i;
-      }
-    if (ref) o.digits = worst > 0 ? std::min(-std::log10(worst), 616.0) : 616.0;
-    if constexpr (scalar_traits<T>::is_interval) o.rel_width = widest;
+    if (ref) {
+      const accuracy a = measure_accuracy(e, *ref, 616.0);  // 2048 bits ~ 616 digits
+      o.digits = a.digits;
+      o.rel_width = a.rel_width;
+    }
     for (const auto& c : e.checks)
       if (c.name == "error_amplification") o.amplification = approx_double(c.values[0]);
   } catch (const input_error& x) {
@@ -103,14 +78,7 @@ int extremes(const extremes_options& o) {
       const scene_input scene = read_scene(parse_json(p.json));
       std::optional<std::vector<mpfr_value>> ref;
       try {
-        mp_precision_scope scope(2048);
-        ref.emplace();
-        for (const auto& r : compute<mpfr>(bind<mpfr>(scene)).results)
-          for (const mpfr& x : r.values) {
-            mpfr_value v;
-            to_mpfr_exact(x, v);
-            ref->push_back(v);
-          }
+        ref = reference_values(scene, 2048);
       } catch (const std::exception&) {
         ref.reset();  // no reference: the point is singular even at 2048 bits
       }

@@ -25,7 +25,7 @@
 #include <sstream>
 #include <vector>
 
-#include "appell/io/scene.hpp"
+#include "accuracy.hpp"
 
 namespace appell::cli {
 namespace {
@@ -38,45 +38,8 @@ struct row {
   std::string note;
 };
 
-using reference_values = std::vector<mpfr_value>;
-
 template <class T>
-std::vector<T> flatten(const evaluation<T>& e) {
-  std::vector<T> v;
-  for (const auto& r : e.results) v.insert(v.end(), r.values.begin(), r.values.end());
-  return v;
-}
-
-// digits and relative width of an evaluation against the reference
-template <class T>
-void accuracy(const evaluation<T>& e, const reference_values& ref, row& out) {
-  const std::vector<T> v = flatten(e);
-  double worst = 0, widest = 0;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    mpfr_value lo, hi, d1(4200), d2(4200), mag(64);
-    scalar_traits<T>::to_mpfr(v[i], lo, hi);
-    mpfr_sub(d1, lo, ref[i], MPFR_RNDU);
-    mpfr_sub(d2, hi, ref[i], MPFR_RNDU);
-    mpfr_abs(d1, d1, MPFR_RNDU);
-    mpfr_abs(d2, d2, MPFR_RNDU);
-    mpfr_max(d1, d1, d2, MPFR_RNDU);
-    mpfr_abs(mag, ref[i], MPFR_RNDN);
-    // relative error, or absolute where the reference is below 1e-300 (an exact 0)
-    if (mpfr_cmp_d(mag, 1e-300) > 0) mpfr_div(d1, d1, mag, MPFR_RNDU);
-    worst = std::max(worst, mpfr_get_d(d1, MPFR_RNDU));
-    if constexpr (scalar_traits<T>::is_interval) {
-      mpfr_value w(64);
-      mpfr_sub(w, hi, lo, MPFR_RNDU);
-      if (mpfr_cmp_d(mag, 1e-300) > 0) mpfr_div(w, w, mag, MPFR_RNDU);
-      widest = std::max(widest, mpfr_get_d(w, MPFR_RNDU));
-    }
-  }
-  out.digits = worst > 0 ? std::min(-std::log10(worst), 1233.0) : 1233.0;  // 4096 bits ~ 1233 digits
-  if constexpr (scalar_traits<T>::is_interval) out.rel_width = widest;
-}
-
-template <class T>
-row measure(const scene_input& scene, const reference_values& ref, unsigned bits, int reps) {
+row measure(const scene_input& scene, const std::vector<mpfr_value>& ref, unsigned bits, int reps) {
   row r;
   r.scalar = scalar_traits<T>::name;
   std::optional<mp_precision_scope> scope;
@@ -84,7 +47,9 @@ row measure(const scene_input& scene, const reference_values& ref, unsigned bits
   r.bits = scalar_traits<T>::precision_bits();
   try {
     const bound_scene<T> bound = bind<T>(scene);
-    accuracy(compute<T>(bound), ref, r);
+    const accuracy a = measure_accuracy(compute<T>(bound), ref, 1233.0);  // 4096 bits ~ 1233 digits
+    r.digits = a.digits;
+    r.rel_width = a.rel_width;
     using clock = std::chrono::steady_clock;
     // batch size: enough evaluations for >= 100 us
     long batch = 1;
@@ -123,15 +88,7 @@ std::string fmt(double x, int precision = 3) {
 
 int tradeoff(const tradeoff_options& o) {
   const scene_input scene = read_scene_file(o.scene);
-  reference_values ref;
-  {
-    mp_precision_scope scope(4096);
-    for (const mpfr& x : flatten(evaluate<mpfr>(scene))) {
-      mpfr_value v;
-      to_mpfr_exact(x, v);
-      ref.push_back(v);
-    }
-  }
+  const std::vector<mpfr_value> ref = reference_values(scene, 4096);
   struct job {
     const char* name;
     unsigned bits;
