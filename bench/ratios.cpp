@@ -8,6 +8,7 @@
 // Run: build/bench/appell_bench  (or with --benchmark_min_time=0.5 for steadier numbers).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -41,6 +42,7 @@ class ratio_reporter : public benchmark::ConsoleReporter {
     for (const char* s : scenes) {
       auto t = [&](const std::string& name) { return ns_[name + "/" + s]; };
       auto line = [&](const std::string& what, double ratio, double goal) {
+        if (!(ratio > 0) || !std::isfinite(ratio)) return;  // filtered out of this run
         std::cout << "  " << std::left << std::setw(26) << s << std::setw(24) << what << std::right << std::setw(8)
                   << std::setprecision(3) << ratio << "  [<= " << goal << "]  " << (ratio <= goal ? "met" : "MISSED")
                   << "\n";

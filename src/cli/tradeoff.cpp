@@ -3,7 +3,8 @@
 // For each scalar (mpfr and mpfi at 64, 113, 256 and 1024 bits), in one run:
 //  * ns_per_eval: the median over N batches of the time of one evaluation of
 //    the scene's dynamics (inputs converted to the scalar once, before timing;
-//    a batch holds enough evaluations to last >= 100 us; warm-up excluded);
+//    a batch holds enough evaluations to last >= 100 us; warm-up excluded;
+//    the scalars take turns, one batch each per repetition);
 //  * ratio_to_double: that median over double's, from the same run;
 //  * correct_digits: -log10 of the largest relative error over every result
 //    component against a reference computed with mpfr at 4096 bits (4x the
@@ -20,7 +21,9 @@
 #include <unistd.h>
 #include <fstream>
 #include <iomanip>
+#include <functional>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <vector>
@@ -38,43 +41,46 @@ struct row {
   std::string note;
 };
 
-template <class T>
-row measure(const scene_input& scene, const std::vector<mpfr_value>& ref, unsigned bits, int reps) {
+// One row: the scene bound in its scalar, and a batch runner for the timing loop.
+struct contestant {
   row r;
-  r.scalar = scalar_traits<T>::name;
+  std::function<void()> batch;  ///< runs r.batch evaluations
+};
+
+template <class T>
+contestant prepare(const scene_input& scene, const std::vector<mpfr_value>& ref, unsigned bits) {
+  contestant c;
+  c.r.scalar = scalar_traits<T>::name;
   std::optional<mp_precision_scope> scope;
   if (bits) scope.emplace(bits);
-  r.bits = scalar_traits<T>::precision_bits();
+  c.r.bits = scalar_traits<T>::precision_bits();
   try {
-    const bound_scene<T> bound = bind<T>(scene);
-    const accuracy a = measure_accuracy(compute<T>(bound), ref, 1233.0);  // 4096 bits ~ 1233 digits
-    r.digits = a.digits;
-    r.rel_width = a.rel_width;
-    using clock = std::chrono::steady_clock;
+    auto bound = std::make_shared<bound_scene<T>>(bind<T>(scene));
+    const accuracy a = measure_accuracy(compute<T>(*bound), ref, 1233.0);  // 4096 bits ~ 1233 digits
+    c.r.digits = a.digits;
+    c.r.rel_width = a.rel_width;
+    auto run = [bound, bits](long n) {
+      std::optional<mp_precision_scope> s;
+      if (bits) s.emplace(bits);
+      for (long i = 0; i < n; ++i) (void)compute<T>(*bound);
+    };
     // batch size: enough evaluations for >= 100 us
+    using clock = std::chrono::steady_clock;
     long batch = 1;
     for (;;) {
       const auto t0 = clock::now();
-      for (long i = 0; i < batch; ++i) (void)compute<T>(bound);
+      run(batch);
       const double us = std::chrono::duration<double, std::micro>(clock::now() - t0).count();
       if (us >= 100 || batch >= (1 << 20)) break;
       batch *= 2;
     }
-    for (int w = 0; w < 3; ++w)
-      for (long i = 0; i < batch; ++i) (void)compute<T>(bound);  // warm-up
-    std::vector<double> per_eval;
-    for (int k = 0; k < reps; ++k) {
-      const auto t0 = clock::now();
-      for (long i = 0; i < batch; ++i) (void)compute<T>(bound);
-      per_eval.push_back(std::chrono::duration<double, std::nano>(clock::now() - t0).count() / batch);
-    }
-    std::nth_element(per_eval.begin(), per_eval.begin() + per_eval.size() / 2, per_eval.end());
-    r.ns = per_eval[per_eval.size() / 2];
-    r.batch = batch;
+    run(3 * batch);  // warm-up
+    c.r.batch = batch;
+    c.batch = [run, batch] { run(batch); };
   } catch (const std::exception& e) {
-    r.note = e.what();
+    c.r.note = e.what();
   }
-  return r;
+  return c;
 }
 
 std::string fmt(double x, int precision = 3) {
@@ -97,19 +103,41 @@ int tradeoff(const tradeoff_options& o) {
                                  {"mpfr", 64},   {"mpfr", 113},      {"mpfr", 256}, {"mpfr", 1024},
                                  {"interval", 0}, {"mpfi", 64},      {"mpfi", 113}, {"mpfi", 256},
                                  {"mpfi", 1024}};
-  std::vector<row> rows;
+  std::vector<contestant> field;
   for (std::size_t j = 0; j < jobs.size(); ++j) {
-    std::cerr << "\r[" << j + 1 << "/" << jobs.size() << "] " << jobs[j].name
+    std::cerr << "\rpreparing [" << j + 1 << "/" << jobs.size() << "] " << jobs[j].name
               << (jobs[j].bits ? " " + std::to_string(jobs[j].bits) : std::string()) << "          " << std::flush;
     const std::string n = jobs[j].name;
     const unsigned b = jobs[j].bits;
-    if (n == "double") rows.push_back(measure<double>(scene, ref, 0, o.reps));
-    else if (n == "long-double") rows.push_back(measure<long double>(scene, ref, 0, o.reps));
-    else if (n == "dd") rows.push_back(measure<dd>(scene, ref, 0, o.reps));
-    else if (n == "float128") rows.push_back(measure<float128>(scene, ref, 0, o.reps));
-    else if (n == "mpfr") rows.push_back(measure<mpfr>(scene, ref, b, o.reps));
-    else if (n == "interval") rows.push_back(measure<interval>(scene, ref, 0, o.reps));
-    else rows.push_back(measure<mpfi>(scene, ref, b, o.reps));
+    if (n == "double") field.push_back(prepare<double>(scene, ref, 0));
+    else if (n == "long-double") field.push_back(prepare<long double>(scene, ref, 0));
+    else if (n == "dd") field.push_back(prepare<dd>(scene, ref, 0));
+    else if (n == "float128") field.push_back(prepare<float128>(scene, ref, 0));
+    else if (n == "mpfr") field.push_back(prepare<mpfr>(scene, ref, b));
+    else if (n == "interval") field.push_back(prepare<interval>(scene, ref, 0));
+    else field.push_back(prepare<mpfi>(scene, ref, b));
+  }
+  // Round robin: each repetition times one batch of every scalar in turn, so a
+  // slow spell of the machine falls on all of them and the ratios stay fair.
+  using clock = std::chrono::steady_clock;
+  std::vector<std::vector<double>> samples(field.size());
+  for (int k = 0; k < o.reps; ++k) {
+    if (k % 10 == 0) std::cerr << "\rtiming: repetition " << k + 1 << "/" << o.reps << "          " << std::flush;
+    for (std::size_t j = 0; j < field.size(); ++j) {
+      if (!field[j].batch) continue;
+      const auto t0 = clock::now();
+      field[j].batch();
+      samples[j].push_back(std::chrono::duration<double, std::nano>(clock::now() - t0).count() / field[j].r.batch);
+    }
+  }
+  std::vector<row> rows;
+  for (std::size_t j = 0; j < field.size(); ++j) {
+    row r = field[j].r;
+    if (!samples[j].empty()) {
+      std::nth_element(samples[j].begin(), samples[j].begin() + samples[j].size() / 2, samples[j].end());
+      r.ns = samples[j][samples[j].size() / 2];
+    }
+    rows.push_back(r);
   }
   std::cerr << "\r" << std::string(40, ' ') << "\r";
   const double base = rows.front().ns;

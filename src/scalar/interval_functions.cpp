@@ -23,6 +23,20 @@ namespace {
 
 using unary_mpfr = int (*)(mpfr_ptr, mpfr_srcptr, mpfr_rnd_t);
 
+// Directed double operations for the mean-value bounds (the SSE unit is in
+// round-to-nearest here: switch it for the one operation).
+double directed(double a, double b, bool add, unsigned mode) {
+  const unsigned csr = detail::read_mxcsr();
+  detail::write_mxcsr((csr & ~detail::mxcsr_rounding) | mode);
+  const double r = add ? interval_arith::opaque(interval_arith::opaque(a) + interval_arith::opaque(b))
+                       : interval_arith::opaque(interval_arith::opaque(a) - interval_arith::opaque(b));
+  detail::write_mxcsr(csr);
+  return r;
+}
+double up_add(double a, double b) { return directed(a, b, true, detail::mxcsr_upward); }
+double up_sub(double a, double b) { return directed(a, b, false, detail::mxcsr_upward); }
+double down_sub(double a, double b) { return directed(a, b, false, 0x2000); }
+
 // Two 53-bit MPFR numbers per thread, made once (mpfr_init/clear per call cost
 // as much as a 53-bit sine).
 struct scratch {
@@ -65,6 +79,23 @@ struct memo {
     std::memcpy(&a, &lo, 8);
     std::memcpy(&b, &hi, 8);
     return static_cast<std::size_t>(mix(a ^ mix(b ^ mix(reinterpret_cast<std::uintptr_t>(fn)))) % size);
+  }
+  bool find(const void* fn, const interval& x, interval& out) {
+    const entry& e = slots[slot(fn, x.lower(), x.upper())];
+    if (e.epoch == epoch && e.fn == fn && std::memcmp(&e.lo, &x.lower(), 8) == 0 &&
+        std::memcmp(&e.hi, &x.upper(), 8) == 0) {
+      out = e.value;
+      return true;
+    }
+    return false;
+  }
+  void put(const void* fn, const interval& x, const interval& v) {
+    entry& e = slots[slot(fn, x.lower(), x.upper())];
+    e.epoch = epoch;
+    e.fn = fn;
+    e.lo = x.lower();
+    e.hi = x.upper();
+    e.value = v;
   }
   template <class F>
   interval get(const void* fn, const interval& x, F compute) {
@@ -196,12 +227,22 @@ bool covers_period(const interval& x) { return x.upper() - x.lower() > 6.3; }
 
 }  // namespace
 
+// IEEE 754 square root is correctly rounded in every rounding mode: the
+// hardware's, under downward and upward rounding of the SSE unit (the flag
+// -fno-builtin-sqrt keeps GCC from folding it under the wrong mode).
+double sqrt_directed(double x, unsigned mode) {
+  const unsigned csr = detail::read_mxcsr();
+  detail::write_mxcsr((csr & ~detail::mxcsr_rounding) | mode);
+  const double r = interval_arith::opaque(std::sqrt(interval_arith::opaque(x)));
+  detail::write_mxcsr(csr);
+  return r;
+}
+
 static interval sqrt_uncached(const interval& x) {
-  const nearest_rounding mpfr_mode;  // MPFR and the bound logic below assume round-to-nearest
   if (boost::numeric::empty(x)) return x;
   if (x.upper() < 0) throw domain_error("sqrt of an interval below 0");
-  double lo = x.lower() <= 0 ? 0.0 : down(mpfr_sqrt, x.lower());
-  return interval(lo, up(mpfr_sqrt, x.upper()));
+  const double lo = x.lower() <= 0 ? 0.0 : sqrt_directed(x.lower(), 0x2000);
+  return interval(lo, sqrt_directed(x.upper(), detail::mxcsr_upward));
 }
 
 static interval exp_uncached(const interval& x) {
@@ -265,15 +306,64 @@ static interval tan_uncached(const interval& x) {
   return interval(both(mpfr_tan, x.lower()).first, both(mpfr_tan, x.upper()).second);
 }
 
-interval sin(const interval& x) {
-  static const char tag = 0;
-  return cache().get(&tag, x, [&] { return sin_uncached(x); });
+namespace {
+const char sin_tag = 0, cos_tag = 0;
+
+// sin and cos of a narrow argument from one MPFR call: both are 1-Lipschitz,
+// so with m a double in x and r >= max |x - m|,
+//   sin(x) in [RD(sin m) - r, RU(sin m) + r],  cos(x) likewise,
+// the two roundings of each value read off mpfr_sin_cos's ternary result.
+bool sin_cos_narrow(const interval& x, interval& s, interval& c) {
+  const double lo = x.lower(), hi = x.upper();
+  if (!std::isfinite(lo) || !std::isfinite(hi)) return false;
+  const double m = lo + (hi - lo) / 2;  // any double in [lo, hi] will do
+  if (!(lo <= m && m <= hi)) return false;
+  const double r = std::max(up_sub(hi, m), up_sub(m, lo));
+  if (!(r <= 1e-9 * std::max(1.0, std::abs(m)))) return false;  // narrow arguments only
+  scratch& w = work();
+  mpfr_set_d(w.a, m, MPFR_RNDN);
+  thread_local mpfr_value cm(53);
+  const int t = mpfr_sin_cos(w.r, cm, w.a, MPFR_RNDN);
+  // t = ts + 4 tc, with ts, tc = 0 (exact), 1 (rounded up) or 2 (rounded down)
+  auto bounds = [](mpfr_ptr y, int ternary, double& b_lo, double& b_hi) {
+    thread_local mpfr_value n(53);
+    mpfr_set(n, y, MPFR_RNDN);
+    if (ternary == 1) mpfr_nextbelow(n);  // y above the exact value
+    if (ternary == 2) mpfr_nextabove(n);  // y below it
+    b_lo = mpfr_get_d(ternary == 1 ? n.get() : y, MPFR_RNDD);
+    b_hi = mpfr_get_d(ternary == 2 ? n.get() : y, MPFR_RNDU);
+  };
+  double s_lo, s_hi, c_lo, c_hi;
+  bounds(w.r, t & 3, s_lo, s_hi);
+  bounds(cm, (t >> 2) & 3, c_lo, c_hi);
+  s = interval(std::max(-1.0, down_sub(s_lo, r)), std::min(1.0, up_add(s_hi, r)));
+  c = interval(std::max(-1.0, down_sub(c_lo, r)), std::min(1.0, up_add(c_hi, r)));
+  return true;
 }
 
-interval cos(const interval& x) {
-  static const char tag = 0;
-  return cache().get(&tag, x, [&] { return cos_uncached(x); });
+// both values at once, remembered under both tags
+interval sin_or_cos(const interval& x, bool want_sin) {
+  const char* mine = want_sin ? &sin_tag : &cos_tag;
+  interval value;
+  if (cache().find(mine, x, value)) return value;
+  const nearest_rounding mpfr_mode;
+  interval s, c;
+  if (sin_cos_narrow(x, s, c)) {
+    cache().put(&sin_tag, x, s);
+    cache().put(&cos_tag, x, c);
+    return want_sin ? s : c;
+  }
+  const interval v = want_sin ? sin_uncached(x) : cos_uncached(x);
+  cache().put(mine, x, v);
+  return v;
 }
+}  // namespace
+
+interval sin(const interval& x) { return sin_or_cos(x, true); }
+
+interval cos(const interval& x) { return sin_or_cos(x, false); }
+
+
 
 interval tan(const interval& x) {
   static const char tag = 0;
