@@ -53,42 +53,42 @@ std::vector<sweep> extreme_sweeps() {
   std::vector<sweep> s;
   {
     sweep w{"top_theta_to_0", "top: axis near vertical, theta = 10^-k (Euler-angle singularity)", "log10 theta", {}};
-    for (int k : {1, 2, 4, 6, 8, 10, 12}) w.points.push_back({pow10(-k), -k, top("0.5*theta + 0.1*sin(2*theta)", pow10(-k), "40")});
+    for (int k : {1, 2, 4, 6, 8, 10, 12}) w.points.push_back({pow10(-k), static_cast<double>(-k), top("0.5*theta + 0.1*sin(2*theta)", pow10(-k), "40")});
     s.push_back(w);
   }
   {
     sweep w{"top_theta_to_pi", "top: axis near downward vertical, theta = pi - 10^-k", "log10 (pi - theta)", {}};
-    for (int k : {1, 2, 4, 6, 8, 10, 12}) w.points.push_back({"pi-" + pow10(-k), -k, top("0.5*theta + 0.1*sin(2*theta)", pi_minus(k), "40")});
+    for (int k : {1, 2, 4, 6, 8, 10, 12}) w.points.push_back({"pi-" + pow10(-k), static_cast<double>(-k), top("0.5*theta + 0.1*sin(2*theta)", pi_minus(k), "40")});
     s.push_back(w);
   }
   {
     sweep w{"top_steep_cone", "top: cone psi = K theta with a huge slope K", "log10 K", {}};
-    for (int k : {0, 2, 4, 6, 8}) w.points.push_back({pow10(k), k, top(pow10(k) + "*theta", "0.7", "40")});
+    for (int k : {0, 2, 4, 6, 8}) w.points.push_back({pow10(k), static_cast<double>(k), top(pow10(k) + "*theta", "0.7", "40")});
     s.push_back(w);
   }
   {
     sweep w{"top_spin", "top: spin phi' from 1e-6 to 1e7", "log10 phi'", {}};
-    for (int k : {-6, -3, 0, 2, 4, 6, 7}) w.points.push_back({pow10(k), k, top("0.5*theta + 0.1*sin(2*theta)", "0.7", pow10(k))});
+    for (int k : {-6, -3, 0, 2, 4, 6, 7}) w.points.push_back({pow10(k), static_cast<double>(k), top("0.5*theta + 0.1*sin(2*theta)", "0.7", pow10(k))});
     s.push_back(w);
   }
   {
     sweep w{"euler_near_equal_inertias", "Euler's body: B = 3, C = 3 + 10^-k (near-equal inertias)", "log10 (C - B)", {}};
-    for (int k : {1, 3, 5, 7, 9, 11, 13, 15}) w.points.push_back({three_plus(k), -k, euler(three_plus(k))});
+    for (int k : {1, 3, 5, 7, 9, 11, 13, 15}) w.points.push_back({three_plus(k), static_cast<double>(-k), euler(three_plus(k))});
     s.push_back(w);
   }
   {
     sweep w{"sphere_mass_scale", "sphere on a plane: mass from 1e-12 to 1e12", "log10 mass", {}};
-    for (int k : {-12, -8, -4, 0, 4, 8, 12}) w.points.push_back({pow10(k), k, plane(pow10(k), "0.2")});
+    for (int k : {-12, -8, -4, 0, 4, 8, 12}) w.points.push_back({pow10(k), static_cast<double>(k), plane(pow10(k), "0.2")});
     s.push_back(w);
   }
   {
     sweep w{"sphere_radius_to_0", "sphere on a plane: radius a = 10^-k", "log10 a", {}};
-    for (int k : {1, 3, 5, 7, 9, 11}) w.points.push_back({pow10(-k), -k, plane("1.5", pow10(-k))});
+    for (int k : {1, 3, 5, 7, 9, 11}) w.points.push_back({pow10(-k), static_cast<double>(-k), plane("1.5", pow10(-k))});
     s.push_back(w);
   }
   {
     sweep w{"bowl_gap_to_0", "sphere in a bowl: b - a = 10^-k (sphere nearly as large as the bowl)", "log10 (b - a)", {}};
-    for (int k : {1, 3, 5, 7, 9, 11}) w.points.push_back({pow10(-k), -k, bowl(k)});
+    for (int k : {1, 3, 5, 7, 9, 11}) w.points.push_back({pow10(-k), static_cast<double>(-k), bowl(k)});
     s.push_back(w);
   }
   return s;
