@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "appell/io/scene.hpp"
@@ -58,6 +61,14 @@ accuracy measure_accuracy(const evaluation<T>& e, const std::vector<mpfr_value>&
   a.digits = worst > 0 ? std::min(-std::log10(worst), cap) : cap;
   if constexpr (scalar_traits<T>::is_interval) a.rel_width = widest;
   return a;
+}
+
+/// A measured figure for tables and CSV files: `precision` significant digits, "" for NaN.
+inline std::string figure(double x, int precision = 3) {
+  if (std::isnan(x)) return "";
+  std::ostringstream s;
+  s << std::setprecision(precision) << x;
+  return s.str();
 }
 
 }  // namespace appell::cli

@@ -50,13 +50,6 @@ outcome run(const scene_input& scene, const std::vector<mpfr_value>* ref) {
   return o;
 }
 
-std::string fmt(double x, int p = 3) {
-  if (std::isnan(x)) return "";
-  std::ostringstream s;
-  s << std::setprecision(p) << x;
-  return s.str();
-}
-
 }  // namespace
 
 int extremes(const extremes_options& o) {
@@ -83,7 +76,7 @@ int extremes(const extremes_options& o) {
         ref.reset();  // no reference: the point is singular even at 2048 bits
       }
       const std::vector<mpfr_value>* r = ref ? &*ref : nullptr;
-      std::cout << std::left << std::setw(22) << fmt(p.x, 4);
+      std::cout << std::left << std::setw(22) << figure(p.x, 4);
       for (const char* s : scalars) {
         const std::string name = s;
         outcome out;
@@ -99,9 +92,9 @@ int extremes(const extremes_options& o) {
           out = name == "mpfr113" ? run<mpfr>(scene, r) : run<mpfi>(scene, r);
         }
         csv << w.name << "," << p.param << "," << p.x << "," << name << "," << bits << "," << out.status << ","
-            << fmt(out.digits, 4) << "," << fmt(out.rel_width) << "," << fmt(out.amplification) << ",\""
+            << figure(out.digits, 4) << "," << figure(out.rel_width) << "," << figure(out.amplification) << ",\""
             << out.why << "\"\n";
-        std::cout << std::right << std::setw(12) << (out.status == "ok" ? fmt(out.digits, 3) : std::string("R"));
+        std::cout << std::right << std::setw(12) << (out.status == "ok" ? figure(out.digits, 3) : std::string("R"));
         if (out.status == "ok" && !std::isnan(out.digits)) series[name].push_back({p.x, out.digits});
       }
       std::cout << "\n";

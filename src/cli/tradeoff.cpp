@@ -83,13 +83,6 @@ contestant prepare(const scene_input& scene, const std::vector<mpfr_value>& ref,
   return c;
 }
 
-std::string fmt(double x, int precision = 3) {
-  if (std::isnan(x)) return "";
-  std::ostringstream s;
-  s << std::setprecision(precision) << x;
-  return s.str();
-}
-
 }  // namespace
 
 int tradeoff(const tradeoff_options& o) {
@@ -149,8 +142,8 @@ int tradeoff(const tradeoff_options& o) {
     std::ofstream f(csv);
     f << "scalar,bits,ns_per_eval,ratio_to_double,correct_digits,rel_width,batch,reps,note\n";
     for (const auto& r : rows)
-      f << r.scalar << "," << r.bits << "," << fmt(r.ns, 6) << "," << fmt(r.ratio, 4) << "," << fmt(r.digits, 4) << ","
-        << fmt(r.rel_width, 3) << "," << r.batch << "," << o.reps << ",\"" << r.note << "\"\n";
+      f << r.scalar << "," << r.bits << "," << figure(r.ns, 6) << "," << figure(r.ratio, 4) << "," << figure(r.digits, 4) << ","
+        << figure(r.rel_width, 3) << "," << r.batch << "," << o.reps << ",\"" << r.note << "\"\n";
   }
   std::cout << "appell tradeoff " << o.scene << " (" << scene.model << "), median of " << o.reps
             << " batches, reference: mpfr 4096 bits\n\n";
@@ -159,8 +152,8 @@ int tradeoff(const tradeoff_options& o) {
             << "\n";
   for (const auto& r : rows) {
     std::cout << std::left << std::setw(12) << r.scalar << std::right << std::setw(6) << r.bits << std::setw(14)
-              << fmt(r.ns, 5) << std::setw(12) << fmt(r.ratio, 3) << std::setw(10) << fmt(r.digits, 3) << std::setw(12)
-              << (std::isnan(r.rel_width) ? "-" : fmt(r.rel_width, 2)) << (r.note.empty() ? "" : "  " + r.note) << "\n";
+              << figure(r.ns, 5) << std::setw(12) << figure(r.ratio, 3) << std::setw(10) << figure(r.digits, 3) << std::setw(12)
+              << (std::isnan(r.rel_width) ? "-" : figure(r.rel_width, 2)) << (r.note.empty() ? "" : "  " + r.note) << "\n";
   }
   // The plot: correct digits against cost (log scale), one labelled point per row.
   const std::filesystem::path dat = std::filesystem::temp_directory_path() / ("appell-tradeoff-" + std::to_string(::getpid()) + ".dat");

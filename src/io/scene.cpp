@@ -8,16 +8,20 @@
 namespace appell {
 namespace {
 
+/// d > 0 exactly, or input_error naming the field ("WHAT must be positive").
+void require_positive(const object_reader& r, const std::string& key, const decimal_field& d,
+                      const std::string& what = "") {
+  if (decimal_sign_of_sum({{1, d.text}}) <= 0)
+    throw input_error(r.path(key) + ": " + (what.empty() ? "" : what + " ") + "must be positive, got " + d.text);
+}
+
 euler_body_input read_euler_body(object_reader& scene) {
   euler_body_input in;
   object_reader inertia = scene.object("inertia");
   in.inertia = {inertia.number("A"), inertia.number("B"), inertia.number("C")};
   inertia.finish();
   const char* names[3] = {"A", "B", "C"};
-  for (int i = 0; i < 3; ++i)
-    if (decimal_sign_of_sum({{1, in.inertia[i].text}}) <= 0)
-      throw input_error(inertia.path(names[i]) + ": a principal moment must be positive, got " +
-                        in.inertia[i].text);
+  for (int i = 0; i < 3; ++i) require_positive(inertia, names[i], in.inertia[i], "a principal moment");
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;  // moment k must not exceed the sum of the others
     if (decimal_sign_of_sum({{1, in.inertia[i].text}, {1, in.inertia[j].text}, {-1, in.inertia[k].text}}) < 0)
@@ -31,10 +35,6 @@ euler_body_input read_euler_body(object_reader& scene) {
   in.omega = state.numbers("omega", 3);
   state.finish();
   return in;
-}
-
-void require_positive(const object_reader& r, const std::string& key, const decimal_field& d) {
-  if (decimal_sign_of_sum({{1, d.text}}) <= 0) throw input_error(r.path(key) + ": must be positive, got " + d.text);
 }
 
 top_on_cone_input read_top_on_cone(object_reader& scene) {

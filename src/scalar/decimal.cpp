@@ -308,22 +308,9 @@ int decimal_sign_of_polynomial(const std::vector<decimal_term>& terms) {
 }
 
 int decimal_sign_of_sum(std::initializer_list<std::pair<int, std::string_view>> terms) {
-  mpq_t sum, term;
-  mpq_init(sum);
-  mpq_init(term);
-  for (const auto& [coefficient, text] : terms) {
-    decimal_to_mpq(text, term);
-    mpq_t c;
-    mpq_init(c);
-    mpq_set_si(c, coefficient, 1);
-    mpq_mul(term, term, c);
-    mpq_add(sum, sum, term);
-    mpq_clear(c);
-  }
-  int sign = mpq_sgn(sum);
-  mpq_clear(term);
-  mpq_clear(sum);
-  return sign;
+  std::vector<decimal_term> polynomial;
+  for (const auto& [coefficient, text] : terms) polynomial.push_back({coefficient, {std::string(text)}});
+  return decimal_sign_of_polynomial(polynomial);
 }
 
 // --- mpfi helpers ------------------------------------------------------------
