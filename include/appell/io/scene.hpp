@@ -139,8 +139,11 @@ evaluation<T> compute_model(const bound_top_on_cone<T>& m) {
   const T f = m.f.eval(m.theta), fp = m.fprime.eval(m.theta), fpp = m.fsecond.eval(m.theta);
   vector_t<T> q(3);
   q << f, m.theta, m.phi;
-  // Cotton (sec. 6): speeds (theta', phi', psi_1'), the cone is psi_1' = 0.
-  const auto sys = change_speeds(m.top, cone_speeds<T>{&m.fprime}, 3);
+  // Cotton (sec. 6): speeds (theta', phi', psi_1'), the cone is psi_1' = 0.  The top is
+  // described on Resal's trihedron (tight enclosures, top_on_cone.hpp); the Lagrange
+  // check below uses the fixed-axis description, an independent route.
+  const heavy_top_resal<T> resal{m.top.A, m.top.C, m.top.mass, m.top.l, m.top.g};
+  const auto sys = change_speeds(resal, cone_speeds<T>{&m.fprime}, 3);
   vector_t<T> v_a(2);
   v_a << m.theta_dot, m.phi_dot;
   const cotton_result<T> c = cotton_reactions(sys, q, v_a, t, 1);
@@ -153,7 +156,7 @@ evaluation<T> compute_model(const bound_top_on_cone<T>& m) {
   vdot << theta_ddot, phi_ddot, T(0);
   generalized << T(0), T(0), H;
   const auto kin = differentiate_kinematics(sys, q, v, t);
-  const vec3<T> couple = constraint_couple(kin[0], generalized);
+  const vec3<T> couple = mat_vec(heavy_top_resal<T>::axes(q), constraint_couple(kin[0], generalized));  // fixed axes
   // Checks: eq. (4) and Lagrange's multiplier on the unconstrained top.
   const vector_t<T> ones = vector_t<T>::Ones(3);
   const T vw = virtual_work_residual(sys, c.equations, q, v, t, vdot, ones);

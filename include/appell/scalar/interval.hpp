@@ -25,7 +25,11 @@
 #include <boost/numeric/interval/arith.hpp>
 #include <boost/numeric/interval/arith2.hpp>
 
+#include <emmintrin.h>
+
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #if !defined(__x86_64__)
@@ -153,6 +157,79 @@ using interval = boost::numeric::interval<
 template <>
 template <>
 inline appell::interval::interval(int const& v) : low(static_cast<double>(v)), up(static_cast<double>(v)) {}
+
+// + - * of two intervals, forced inline (GCC kept Boost's out of line: 40% of
+// an interval evaluation was calls to them).  Same rounding protocol as
+// interval_rounding: upward mode, lower bounds by negation.  The product is
+// branch-free: the four bound products rounded up give the upper bound, the
+// four products with x negated, rounded up, give minus the lower bound (Boost
+// picks two of them by nine sign cases, whose branches mispredict on the sign
+// patterns of dynamics).  Bounds that are infinite go to a slow path that uses
+// 0 x inf = 0 (IEEE 1788's rule for bound products); empty sets stay empty.
+namespace appell::detail {
+[[gnu::always_inline]] inline __m128d opaque_pd(__m128d v) {
+  asm volatile("" : "+x"(v));
+  return v;
+}
+inline double bound_product_up(double a, double b) {  // a*b rounded up, 0 x inf = 0
+  return (a == 0 || b == 0) ? 0.0 : interval_arith::opaque(interval_arith::opaque(a) * interval_arith::opaque(b));
+}
+[[gnu::noinline]] inline interval multiply_slow(double xl, double xu, double yl, double yu) {
+  if (!(xl <= xu) || !(yl <= yu)) return interval::empty();
+  const interval_rounding rnd;
+  const double hi = std::max(std::max(bound_product_up(xl, yl), bound_product_up(xl, yu)),
+                             std::max(bound_product_up(xu, yl), bound_product_up(xu, yu)));
+  const double mlo = std::max(std::max(bound_product_up(-xl, yl), bound_product_up(-xl, yu)),
+                              std::max(bound_product_up(-xu, yl), bound_product_up(-xu, yu)));
+  return interval(-mlo, hi, true);
+}
+[[gnu::always_inline]] inline bool finite_bounds(double xl, double xu, double yl, double yu) {
+  constexpr double big = std::numeric_limits<double>::max();
+  return std::fabs(xl) <= big && std::fabs(xu) <= big && std::fabs(yl) <= big && std::fabs(yu) <= big;
+}
+[[gnu::always_inline]] inline interval multiply(const interval& x, const interval& y) {
+  const double xl = x.lower(), xu = x.upper(), yl = y.lower(), yu = y.upper();
+  if (!finite_bounds(xl, xu, yl, yu) || !(xl <= xu) || !(yl <= yu)) [[unlikely]]
+    return multiply_slow(xl, xu, yl, yu);
+  const interval_rounding rnd;
+  const __m128d xs = opaque_pd(_mm_set_pd(xu, xl));             // (xl, xu)
+  const __m128d neg = _mm_set1_pd(-0.0);
+  const __m128d ys_l = opaque_pd(_mm_set1_pd(yl)), ys_u = opaque_pd(_mm_set1_pd(yu));
+  const __m128d nxs = _mm_xor_pd(xs, neg);                         // (-xl, -xu), exact
+  const __m128d up = _mm_max_pd(_mm_mul_pd(xs, ys_l), _mm_mul_pd(xs, ys_u));
+  const __m128d dn = _mm_max_pd(_mm_mul_pd(nxs, ys_l), _mm_mul_pd(nxs, ys_u));
+  // (max dn, max up) lane-wise: r = (-lower, upper)
+  const __m128d r = opaque_pd(_mm_max_pd(_mm_unpacklo_pd(dn, up), _mm_unpackhi_pd(dn, up)));
+  return interval(-_mm_cvtsd_f64(r), _mm_cvtsd_f64(_mm_unpackhi_pd(r, r)), true);
+}
+[[gnu::always_inline]] inline interval add(const interval& x, const interval& y) {
+  if (!(x.lower() <= x.upper()) || !(y.lower() <= y.upper())) [[unlikely]]
+    return interval::empty();
+  interval_rounding rnd;
+  return interval(rnd.add_down(x.lower(), y.lower()), rnd.add_up(x.upper(), y.upper()), true);
+}
+[[gnu::always_inline]] inline interval subtract(const interval& x, const interval& y) {
+  if (!(x.lower() <= x.upper()) || !(y.lower() <= y.upper())) [[unlikely]]
+    return interval::empty();
+  interval_rounding rnd;
+  return interval(rnd.sub_down(x.lower(), y.upper()), rnd.sub_up(x.upper(), y.lower()), true);
+}
+}  // namespace appell::detail
+
+namespace boost::numeric {
+template <>
+[[gnu::always_inline]] inline appell::interval operator*(const appell::interval& x, const appell::interval& y) {
+  return appell::detail::multiply(x, y);
+}
+template <>
+[[gnu::always_inline]] inline appell::interval operator+(const appell::interval& x, const appell::interval& y) {
+  return appell::detail::add(x, y);
+}
+template <>
+[[gnu::always_inline]] inline appell::interval operator-(const appell::interval& x, const appell::interval& y) {
+  return appell::detail::subtract(x, y);
+}
+}  // namespace boost::numeric
 
 namespace appell {
 
