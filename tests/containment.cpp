@@ -236,3 +236,57 @@ BOOST_AUTO_TEST_CASE(mpfi_200_results_contain_the_320_bit_values) {
   mp_precision_scope scope(200);
   run_all<mpfi>("mpfi at " + std::to_string(scope.bits()) + " bits", scope.bits());
 }
+
+// sin and cos of narrow arguments (|x| < 2^20) take a Cody-Waite reduction and
+// Taylor polynomials in interval<double> arithmetic (interval_functions.cpp).
+// Check that path on its own: thin and narrow arguments, uniform in size and
+// clustered at multiples of pi/2 (where the reduction cancels), containment of
+// MPFR's 320-bit values at the endpoints and the midpoint, and tightness: the
+// width stays within 6 ulps of the result plus the argument's width (and 2 of its ulps).
+BOOST_AUTO_TEST_CASE(sin_cos_of_narrow_arguments_contain_and_are_tight) {
+  std::mt19937_64 gen(1907);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  mpfr_value half_pi(ref_prec), v(ref_prec), r(ref_prec);
+  mpfr_const_pi(half_pi, MPFR_RNDN);
+  mpfr_div_2ui(half_pi, half_pi, 1, MPFR_RNDN);
+  long cases = 0, misses = 0, loose = 0;
+  std::vector<std::string> first;
+  for (int c = 0; c < 40000; ++c) {
+    double x;
+    if (c % 2 == 0) {
+      x = std::ldexp(unit(gen) * 2 - 1, static_cast<int>(unit(gen) * 40) - 20);  // |x| < 2^20
+    } else {  // next to k pi/2, k up to 2^19
+      const long k = static_cast<long>(unit(gen) * 524288) - 262144;
+      mpfr_mul_si(v, half_pi, k, MPFR_RNDN);
+      x = mpfr_get_d(v, MPFR_RNDN);
+      x = std::nextafter(x, unit(gen) < 0.5 ? -INFINITY : INFINITY);
+    }
+    const double w = c % 3 == 0 ? 0.0 : std::abs(x) * 1e-12 * unit(gen);
+    const interval X(x, x + w);  // nearest-mode sum: X is some narrow interval, fine
+    for (int f = 0; f < 2; ++f) {
+      const interval y = f == 0 ? appell::sin(X) : appell::cos(X);
+      ++cases;
+      const double points[3] = {X.lower(), X.upper(), X.lower() + (X.upper() - X.lower()) / 2};
+      for (double p : points) {
+        mpfr_set_d(v, p, MPFR_RNDN);
+        if (f == 0) mpfr_sin(r, v, MPFR_RNDN);
+        else mpfr_cos(r, v, MPFR_RNDN);
+        if (!contains(y, r)) {
+          ++misses;
+          if (first.size() < 5) first.push_back((f ? "cos " : "sin ") + to_string(X) + " -> " + to_string(y));
+        }
+      }
+      const double mag = std::max(std::abs(y.lower()), std::abs(y.upper()));
+      const double eps = std::ldexp(1.0, -52);  // the mid of x is within an ulp of its centre: allow 2 ulps of x
+      if (y.upper() - y.lower() > 6 * eps * mag + (X.upper() - X.lower()) + 2 * eps * std::abs(x) + 1e-300) {
+        ++loose;
+        if (loose < 8) BOOST_TEST_MESSAGE("  loose " << (f ? "cos " : "sin ") << to_string(X) << " -> " << to_string(y));
+      }
+    }
+  }
+  BOOST_TEST_MESSAGE("narrow sin/cos: " << cases << " cases, " << misses << " misses, " << loose
+                                        << " wider than 6 ulps + the argument's width");
+  for (const auto& m : first) BOOST_TEST_MESSAGE("  MISS " << m);
+  BOOST_TEST(misses == 0);
+  BOOST_TEST(loose == 0);
+}

@@ -5,6 +5,9 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cfenv>
+#include <cmath>
+#include <random>
+#include <vector>
 
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/interval.hpp"
@@ -69,4 +72,89 @@ BOOST_AUTO_TEST_CASE(no_fast_math) {
 #else
   BOOST_TEST(true);
 #endif
+}
+
+// Inside an upward_rounding scope interval operations trust a thread-local flag
+// instead of reading MXCSR.  Check them there on random operands, exactly:
+// for a product p of doubles, fma(a, b, -p) (round to nearest, one rounding) has
+// the sign of a*b - p; for a sum, the two-sum error term does the same.
+namespace {
+double exact_minus_product(double a, double b, double p) { return std::fma(a, b, -p); }
+int sign_of_sum_minus(double a, double b, double s) {  // sign of a + b - s, exactly (round to nearest)
+  const double h = a + b, bb = h - a, err = (a - (h - bb)) + (b - bb);  // h + err = a + b exactly
+  const double d = h - s;                                                 // exact (Sterbenz) when s is near h
+  if (d != 0) return d > 0 ? 1 : -1;
+  return err > 0 ? 1 : (err < 0 ? -1 : 0);
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(operations_inside_an_upward_scope_enclose_exactly) {
+  std::mt19937_64 rng(20261121);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> expo(-30, 30);
+  constexpr int n = 20000;
+  std::vector<double> a(n), b(n), c(n), d(n);
+  for (int i = 0; i < n; ++i) {
+    a[i] = std::ldexp(unit(rng), expo(rng));
+    b[i] = std::ldexp(unit(rng), expo(rng));
+    c[i] = std::ldexp(unit(rng), expo(rng));
+    d[i] = std::ldexp(unit(rng), expo(rng));
+  }
+  std::vector<interval> prod(n), sum(n), diff(n), prod_nearest(n);
+  {
+    const appell::upward_rounding scope;
+    BOOST_TEST(appell::detail::upward_known);
+    for (int i = 0; i < n; ++i) {
+      prod[i] = interval(a[i]) * interval(b[i]);
+      sum[i] = interval(a[i]) + interval(b[i]);
+      diff[i] = interval(c[i]) - interval(d[i]);
+    }
+    {
+      const appell::nearest_rounding inner;  // the flag is off again: operations switch for themselves
+      BOOST_TEST(!appell::detail::upward_known);
+      for (int i = 0; i < n; ++i) prod_nearest[i] = interval(a[i]) * interval(b[i]);
+    }
+    BOOST_TEST(appell::detail::upward_known);
+    BOOST_TEST(scope.intact());
+  }
+  BOOST_TEST(!appell::detail::upward_known);
+  BOOST_TEST(std::fegetround() == FE_TONEAREST);
+  int missed = 0, wide = 0;
+  for (int i = 0; i < n; ++i) {
+    // enclosure, and tightness: each bound is the exact value rounded outward (at most 1 ulp away)
+    missed += exact_minus_product(a[i], b[i], prod[i].lower()) < 0 || exact_minus_product(a[i], b[i], prod[i].upper()) > 0;
+    missed += !(prod_nearest[i].lower() == prod[i].lower() && prod_nearest[i].upper() == prod[i].upper());
+    wide += std::nextafter(prod[i].lower(), INFINITY) < prod[i].upper() &&
+            std::nextafter(std::nextafter(prod[i].lower(), INFINITY), INFINITY) < prod[i].upper();
+    missed += sign_of_sum_minus(a[i], b[i], sum[i].lower()) < 0 || sign_of_sum_minus(a[i], b[i], sum[i].upper()) > 0;
+    missed += sign_of_sum_minus(c[i], -d[i], diff[i].lower()) < 0 || sign_of_sum_minus(c[i], -d[i], diff[i].upper()) > 0;
+  }
+  BOOST_TEST(missed == 0);
+  BOOST_TEST(wide == 0);
+}
+
+BOOST_AUTO_TEST_CASE(a_mode_changed_behind_the_scope_is_detected) {
+  const appell::upward_rounding scope;
+  std::fesetround(FE_TONEAREST);  // what a careless callback could do
+  BOOST_TEST(!scope.intact());
+  std::fesetround(FE_UPWARD);
+  BOOST_TEST(scope.intact());
+}
+
+BOOST_AUTO_TEST_CASE(products_with_infinite_bounds_use_zero_times_infinity_is_zero) {
+  const double inf = INFINITY;
+  const appell::upward_rounding scope;  // the fast path's slow branch, under the flag
+  const interval p1 = interval(0.0, 1.0) * interval(1.0, inf);
+  BOOST_TEST(p1.lower() == 0.0);
+  BOOST_TEST(p1.upper() == inf);
+  const interval p2 = interval(0.0, 0.0) * interval(-inf, inf);
+  BOOST_TEST(p2.lower() == 0.0);
+  BOOST_TEST(p2.upper() == 0.0);
+  const interval p3 = interval(-1.0, 2.0) * interval(-inf, 3.0);
+  BOOST_TEST(p3.lower() == -inf);
+  BOOST_TEST(p3.upper() == inf);
+  const interval p4 = interval(-3.0, -2.0) * interval(4.0, inf);
+  BOOST_TEST(p4.lower() == -inf);
+  BOOST_TEST(p4.upper() == -8.0);
+  BOOST_TEST(boost::numeric::empty(interval::empty() * interval(1.0, 2.0)));
 }

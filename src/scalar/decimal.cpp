@@ -28,6 +28,15 @@ unsigned set_mp_precision_bits(unsigned bits) {
   return mp_precision_bits();
 }
 
+unsigned mp_precision_filling_limbs(unsigned least_bits) {
+  namespace bmd = boost::multiprecision::detail;
+  const unsigned limb_bits = (least_bits + 63) / 64 * 64;
+  unsigned d10 = 1;
+  while (bmd::digits10_2_2(d10) < least_bits) ++d10;  // the smallest setting of least_bits or more
+  while (bmd::digits10_2_2(d10 + 1) <= limb_bits) ++d10;
+  return static_cast<unsigned>(bmd::digits10_2_2(d10));
+}
+
 unsigned mp_precision_bits() {
   return boost::multiprecision::detail::digits10_2_2(mpfr::default_precision());
 }

@@ -75,6 +75,16 @@ template <class T> struct base_scalar { using type = T; };
 template <class T> struct base_scalar<dual<T>> { using type = typename base_scalar<T>::type; };
 template <class T> using base_scalar_t = typename base_scalar<T>::type;
 
+/// Exactly 0 / exactly 1 (value and every derivative part) for scalars and duals alike.
+template <class S> bool structurally_zero(const S& x) {
+  if constexpr (is_dual<S>::value) return structurally_zero(x.v) && structurally_zero(x.d);
+  else return exactly_zero(x);
+}
+template <class S> bool structurally_one(const S& x) {
+  if constexpr (is_dual<S>::value) return structurally_one(x.v) && structurally_zero(x.d);
+  else return exactly_one(x);
+}
+
 /// x^n for scalars and duals alike.
 template <class S> S power(const S& x, int n) {
   if constexpr (is_dual<S>::value) return pown(x, n);

@@ -75,24 +75,30 @@ struct adapted_change {
     vector_t<S> u(n);
     for (int i = 0; i < k; ++i) u(free_columns[i]) = v(i);
     // A_b u_b = v_c + a - A_f u_f, by elimination in the order fixed at the state.
+    // Entries that are exactly 0 (or pivots exactly 1) are skipped: constraint
+    // matrices are sparse (the rolling sphere's A_b is the identity), and the
+    // skipped operations would give the same values (0 * x = 0, x / 1 = x).
     matrix_t<S> Ab(s, s);
     vector_t<S> rhs(s);
     for (int r = 0; r < s; ++r) {
       S x = v(k + r) + a(r);
-      for (int i = 0; i < k; ++i) x -= A(r, free_columns[i]) * v(i);
+      for (int i = 0; i < k; ++i)
+        if (!structurally_zero(A(r, free_columns[i]))) x -= A(r, free_columns[i]) * v(i);
       rhs(r) = x;
       for (int c = 0; c < s; ++c) Ab(r, c) = A(r, bound_columns[c]);
     }
     for (int p = 0; p < s; ++p)
       for (int r = p + 1; r < s; ++r) {
+        if (structurally_zero(Ab(r, p))) continue;
         const S f = Ab(r, p) / Ab(p, p);
         for (int c = p; c < s; ++c) Ab(r, c) -= f * Ab(p, c);
         rhs(r) -= f * rhs(p);
       }
     for (int p = s - 1; p >= 0; --p) {
       S x = rhs(p);
-      for (int c = p + 1; c < s; ++c) x -= Ab(p, c) * u(bound_columns[c]);
-      u(bound_columns[p]) = x / Ab(p, p);
+      for (int c = p + 1; c < s; ++c)
+        if (!structurally_zero(Ab(p, c))) x -= Ab(p, c) * u(bound_columns[c]);
+      u(bound_columns[p]) = structurally_one(Ab(p, p)) ? x : S(x / Ab(p, p));
     }
     return u;
   }

@@ -252,16 +252,21 @@ template <Scalar T>
 using bound_scene = std::variant<detail::bound_euler_body<T>, detail::bound_top_on_cone<T>,
                                  detail::bound_rolling_sphere<T>>;
 
-/// mpfi works with 32 guard bits inside (inputs enclosed and dynamics computed
-/// at p + 32 bits, results rounded outward to p bits at the end): the
+/// mpfi works with guard bits inside (inputs enclosed and dynamics computed at
+/// a higher precision, results rounded outward to p bits at the end): the
 /// dependency effects of naive interval evaluation, which magnify the input
-/// enclosures' width by the thousands on the top, are paid in the guard bits.
-constexpr unsigned mpfi_guard_bits = 32;
+/// enclosures' width by up to ~10^3 on the paper scenes, are paid in the guard
+/// bits.  At least 12 of them, and the rest of the last 64-bit limb, which costs
+/// nothing (MPFR works limb by limb): 114 bits work at 128, 257 at 320.
+inline unsigned mpfi_working_bits(unsigned bits) {
+  constexpr unsigned least_guard = 12;
+  return mp_precision_filling_limbs(bits + least_guard);
+}
 
 template <Scalar T>
 bound_scene<T> bind(const scene_input& scene) {
   std::optional<mp_precision_scope> guard;
-  if constexpr (std::is_same_v<T, mpfi>) guard.emplace(mp_precision_bits() + mpfi_guard_bits);
+  if constexpr (std::is_same_v<T, mpfi>) guard.emplace(mpfi_working_bits(mp_precision_bits()));
   return std::visit([](const auto& in) { return bound_scene<T>(detail::bind_model<T>(in)); }, scene.input);
 }
 
@@ -271,13 +276,16 @@ evaluation<T> compute(const bound_scene<T>& scene) {
   if constexpr (std::is_same_v<T, interval>) {
     forget_interval_function_values();
     const upward_rounding mode;
-    return std::visit([](const auto& m) { return detail::compute_model<T>(m); }, scene);
+    evaluation<T> e = std::visit([](const auto& m) { return detail::compute_model<T>(m); }, scene);
+    if (!mode.intact())  // the operations assumed upward rounding (interval.hpp): refuse, never return an unproved box
+      throw certification_error("the rounding mode was changed during the interval evaluation");
+    return e;
   } else if constexpr (std::is_same_v<T, mpfi>) {
-    // Guard bits (see bind): compute at p + 32, round the results outward to p.
+    // Guard bits (see bind): compute at mpfi_working_bits(p), round the results outward to p.
     const unsigned bits = mp_precision_bits();
     evaluation<T> e;
     {
-      const mp_precision_scope guard(bits + mpfi_guard_bits);
+      const mp_precision_scope guard(mpfi_working_bits(bits));
       e = std::visit([](const auto& m) { return detail::compute_model<T>(m); }, scene);
     }
     for (auto* group : {&e.results, &e.checks})

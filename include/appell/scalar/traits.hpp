@@ -209,6 +209,19 @@ template <Scalar T> bool possibly_negative(const T& x) { return lower(x) < 0; }
 template <Scalar T> bool certainly_less(const T& a, const T& b) { return upper(a) < lower(b); }
 template <Scalar T> bool certainly_less_equal(const T& a, const T& b) { return upper(a) <= lower(b); }
 template <Scalar T> bool possibly_less(const T& a, const T& b) { return lower(a) < upper(b); }
+/// x is exactly 0 (the point 0, or [0, 0]): a structural zero that a computation may skip.
+template <Scalar T> bool exactly_zero(const T& x) {
+  if constexpr (std::is_same_v<T, mpfi>) return mpfi_is_zero(x.backend().data()) > 0;  // no bound copies
+  else if constexpr (!scalar_traits<T>::is_interval) return x == 0;
+  else return lower(x) == 0 && upper(x) == 0;
+}
+/// x is exactly 1 (the point 1, or [1, 1]).
+template <Scalar T> bool exactly_one(const T& x) {
+  if constexpr (std::is_same_v<T, mpfi>)
+    return mpfr_cmp_ui(&x.backend().data()->left, 1) == 0 && mpfr_cmp_ui(&x.backend().data()->right, 1) == 0;
+  else if constexpr (!scalar_traits<T>::is_interval) return x == 1;
+  else return lower(x) == 1 && upper(x) == 1;
+}
 /// Both bounds finite (point types: the value is finite).
 template <Scalar T> bool is_finite(const T& x) {
   using std::isfinite;

@@ -37,6 +37,10 @@ using dd = ::dd_real;
 unsigned set_mp_precision_bits(unsigned bits);
 /// The precision, in bits, that new `mpfr` and `mpfi` values get.
 unsigned mp_precision_bits();
+/// The largest precision set_mp_precision_bits can set that takes no more
+/// 64-bit limbs than `least_bits` does (and is at least `least_bits`): extra
+/// bits that MPFR computes for free.
+unsigned mp_precision_filling_limbs(unsigned least_bits);
 
 /// RAII: sets the mp precision for a scope and restores it.
 class mp_precision_scope {
