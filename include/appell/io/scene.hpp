@@ -154,9 +154,9 @@ evaluation<T> compute_model(const bound_top_on_cone<T>& m) {
   vector_t<T> v(3), vdot(3), generalized(3);
   v << m.theta_dot, m.phi_dot, T(0);
   vdot << theta_ddot, phi_ddot, T(0);
-  generalized << T(0), T(0), H;
+  generalized << T(0), T(0), T(1);  // the couple is linear in H: solve for H = 1, scale once (H enters one product, not a cancellation)
   const auto kin = differentiate_kinematics(sys, q, v, t);
-  const vec3<T> couple = mat_vec(heavy_top_resal<T>::axes(q), constraint_couple(kin[0], generalized));  // fixed axes
+  const vec3<T> couple = mat_vec(heavy_top_resal<T>::axes(q), constraint_couple(kin[0], generalized)) * H;  // fixed axes
   // Checks: eq. (4) and Lagrange's multiplier on the unconstrained top.
   const vector_t<T> ones = vector_t<T>::Ones(3);
   const T vw = virtual_work_residual(sys, c.equations, q, v, t, vdot, ones);
