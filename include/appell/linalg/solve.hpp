@@ -3,7 +3,14 @@
 //   solve_spd(A, b)   A symmetric positive definite (the mass matrix M of
 //                     Appell's equations M u' + b = Q).  Point types: Cholesky.
 //   solve(A, b)       general A.  Point types: LU with partial pivoting.
-// Interval types go, for both, to verified_solve: Krawczyk's operator with a
+// Interval types go, for both, to verified_solve.  It first tries a residual
+// bound (src/linalg/verified_solve.cpp): with R ~ mid(A)^-1 in double and
+// r = b - A x~ enclosed at the working precision, if every row sum of
+// |I - R A| is at most beta <= 2^-10, then x lies in
+// x~ + R r + [-s_i eps, s_i eps] with eps = ||R r||/(1 - beta); for mpfi only
+// r is computed at p bits (scaled by a power of 2 into double's range), the
+// n^3 part in double.  Otherwise (ill-conditioned systems, entries outside
+// double's range) it runs Krawczyk's operator with a
 // midpoint-inverse preconditioner and epsilon-inflation (Rump 1983).  With
 // R ~ mid(A)^-1, x~ ~ R mid(b), z = R (b - A x~) and C = I - R A (both in
 // interval arithmetic), if  z + C Y  lies in the interior of Y then every
@@ -16,6 +23,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -121,6 +129,19 @@ inline matrix_t<interval> identity_minus_product(const Eigen::MatrixXd& R, const
   return C;
 }
 
+/// The largest row sum of |I - R A| the residual bound accepts: beyond it the
+/// norm bound is loose and Krawczyk's iteration is used instead.
+inline constexpr double max_contraction = 1.0 / 1024;
+
+/// Encloses A^-1 r for every A in [A] and r in [r] given an approximate
+/// inverse R of mid(A), or nullopt if no row sum of |I - R A| can be shown to
+/// be at most max_contraction.
+std::optional<vector_t<interval>> residual_enclosure(const Eigen::MatrixXd& R, const matrix_t<interval>& A,
+                                                     const vector_t<interval>& r);
+/// mpfi systems by the residual bound: x~ by mpfr LU, r = b - A x~ in mpfi,
+/// the rest in double.  nullopt where it does not apply (the caller falls back).
+std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const vector_t<mpfi>& b);
+
 template <class M>
 void check_square(const M& A, Eigen::Index rhs_rows) {
   if (A.rows() != A.cols() || A.rows() != rhs_rows)
@@ -131,18 +152,14 @@ void check_square(const M& A, Eigen::Index rhs_rows) {
 
 }  // namespace detail
 
-/// Every solution of A x = b for A in [A], b in [b], enclosed; or certification_error.
-template <Scalar I>
-  requires(scalar_traits<I>::is_interval)
-vector_t<I> verified_solve(const matrix_t<I>& A, const vector_t<I>& b) {
+namespace detail {
+/// verified_solve without the mpfi residual path (finite data checked by the
+/// caller): for interval, the residual bound first (try_residual_bound), then
+/// Krawczyk's iteration.  Exposed for tests that compare the two.
+template <class I>
+vector_t<I> krawczyk_solve(const matrix_t<I>& A, const vector_t<I>& b, bool try_residual_bound) {
   using P = bound_t<I>;
-  detail::check_square(A, b.rows());
   const Eigen::Index n = A.rows();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    if (!is_finite(b(i))) throw certification_error("verified solve: right-hand side is not finite");
-    for (Eigen::Index j = 0; j < n; ++j)
-      if (!is_finite(A(i, j))) throw certification_error("verified solve: matrix is not finite");
-  }
   // Midpoint system, in the bound type.
   matrix_t<P> Am(n, n);
   vector_t<P> bm(n);
@@ -163,7 +180,11 @@ vector_t<I> verified_solve(const matrix_t<I>& A, const vector_t<I>& b) {
   // Krawczyk operator in interval arithmetic.
   const matrix_t<I> RI = R.unaryExpr([](const P& p) { return detail::thin<I>(p); });
   const vector_t<I> xI = xt.unaryExpr([](const P& p) { return detail::thin<I>(p); });
-  const vector_t<I> z = detail::product(RI, vector_t<I>(b - detail::product(A, xI)));
+  const vector_t<I> residual = b - detail::product(A, xI);
+  if constexpr (std::is_same_v<I, interval>)
+    if (try_residual_bound)
+      if (auto e = detail::residual_enclosure(R, A, residual)) return xI + *e;
+  const vector_t<I> z = detail::product(RI, residual);
   matrix_t<I> C;
   if constexpr (std::is_same_v<I, interval>) {
     C = detail::identity_minus_product(R, A);  // midpoint-radius, O(n^3) in double
@@ -223,6 +244,25 @@ vector_t<I> verified_solve(const matrix_t<I>& A, const vector_t<I>& b) {
       << static_cast<double>(cond) << " at " << scalar_traits<I>::precision_bits() << " bits)";
   throw certification_error(why.str());
 }
+}  // namespace detail
+
+/// Every solution of A x = b for A in [A], b in [b], enclosed; or certification_error.
+template <Scalar I>
+  requires(scalar_traits<I>::is_interval)
+vector_t<I> verified_solve(const matrix_t<I>& A, const vector_t<I>& b) {
+  detail::check_square(A, b.rows());
+  const Eigen::Index n = A.rows();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (!is_finite(b(i))) throw certification_error("verified solve: right-hand side is not finite");
+    for (Eigen::Index j = 0; j < n; ++j)
+      if (!is_finite(A(i, j))) throw certification_error("verified solve: matrix is not finite");
+  }
+  if (n == 0) return vector_t<I>(0);
+  if constexpr (std::is_same_v<I, mpfi>)
+    if (auto x = detail::mpfi_residual_solve(A, b)) return *x;
+  return detail::krawczyk_solve(A, b, /*try_residual_bound=*/true);
+}
+
 
 template <Scalar T>
 vector_t<T> solve(const matrix_t<T>& A, const vector_t<T>& b);

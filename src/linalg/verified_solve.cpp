@@ -1,0 +1,143 @@
+// The residual fast path of the verified solver (declared in appell/linalg/solve.hpp).
+//
+// With an approximate inverse R (double) and an approximate solution x~, the error
+// e = x - x~ of every system A x = b, A in [A], b in [b], satisfies A e = r with
+// r = b - A x~ in [r], hence  e = R r + C e,  C = I - R A.  If every row sum of
+// |C| is at most beta < 1 (C enclosed for every A in [A] by midpoint-radius
+// products), every such A is nonsingular, ||e||_inf <= ||R r||_inf / (1 - beta)
+// =: eps, and e_i lies in (R r)_i + [-s_i eps, s_i eps] with s_i the i-th row sum.
+// Only r needs the working precision: for mpfi it is computed at p bits, then
+// scaled by a power of two and enclosed in double, where the rest runs (n^3
+// double operations for C instead of n^3 mpfi ones).  The result is x~ + e-box,
+// as wide as the residual's enclosure makes it; where beta is not small the
+// caller falls back to Krawczyk's iteration at full precision.
+#include <mpfi.h>
+
+#include <climits>
+#include <cmath>
+#include <vector>
+
+#include "appell/linalg/solve.hpp"
+
+namespace appell::detail {
+
+std::optional<vector_t<interval>> residual_enclosure(const Eigen::MatrixXd& R, const matrix_t<interval>& A,
+                                                     const vector_t<interval>& r) {
+  const Eigen::Index n = A.rows();
+  const upward_rounding mode;  // plain double operations below round upward
+  const auto opaque = [](double v) { return interval_arith::opaque(v); };
+  const matrix_t<interval> C = identity_minus_product(R, A);
+  std::vector<double> row_sum(static_cast<std::size_t>(n));
+  double beta = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double s = 0;
+    for (Eigen::Index j = 0; j < n; ++j) s = opaque(s + std::max(-C(i, j).lower(), C(i, j).upper()));
+    row_sum[static_cast<std::size_t>(i)] = s;
+    if (!(s <= beta)) beta = s;  // a NaN row sum makes beta NaN
+  }
+  if (!(beta <= max_contraction)) return std::nullopt;
+  vector_t<interval> z(n);
+  double z_max = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    interval s(0);
+    for (Eigen::Index j = 0; j < n; ++j)
+      if (R(i, j) != 0) s += interval(R(i, j)) * r(j);
+    z(i) = s;
+    z_max = std::max(z_max, std::max(-s.lower(), s.upper()));
+  }
+  if (!(z_max <= std::numeric_limits<double>::max())) return std::nullopt;
+  const double one_minus_beta_down = -opaque(opaque(beta) - 1.0);  // 1 - beta rounded down (> 0)
+  const double eps = opaque(opaque(z_max) / one_minus_beta_down);  // >= ||e||_inf, rounded up
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double delta = opaque(row_sum[static_cast<std::size_t>(i)] * eps);
+    z(i) += interval(-delta, delta, true);
+  }
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (!is_finite(z(i))) return std::nullopt;
+  return z;
+}
+
+std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const vector_t<mpfi>& b) {
+  const Eigen::Index n = A.rows();
+  // Approximate solution at the working precision (mpfr LU on the midpoints).
+  matrix_t<mpfr> Am(n, n);
+  vector_t<mpfr> bm(n);
+  Eigen::MatrixXd Ad_mid(n, n);
+  matrix_t<interval> Ad(n, n);  // outward double enclosure of [A]
+  for (Eigen::Index i = 0; i < n; ++i) {
+    bm(i) = mpfi_mid(b(i));
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const mpfi_srcptr a = A(i, j).backend().data();
+      Am(i, j) = mpfi_mid(A(i, j));
+      const double lo = mpfr_get_d(&a->left, MPFR_RNDD), hi = mpfr_get_d(&a->right, MPFR_RNDU);
+      if (!(std::fabs(lo) <= std::numeric_limits<double>::max() && std::fabs(hi) <= std::numeric_limits<double>::max()))
+        return std::nullopt;  // outside double's range: the full-precision path
+      Ad(i, j) = interval(lo, hi, true);
+      Ad_mid(i, j) = lo / 2 + hi / 2;
+    }
+  }
+  const Eigen::PartialPivLU<matrix_t<mpfr>> lu(Am);
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (!(abs(lu.matrixLU()(i, i)) > 0)) return std::nullopt;  // the fallback explains the refusal
+  const vector_t<mpfr> xt = lu.solve(bm);
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lud(Ad_mid);
+  const Eigen::MatrixXd R = lud.inverse();
+  if (!R.allFinite()) return std::nullopt;
+
+  // r = b - A x~ at the working precision, exact zeros of A skipped.
+  const mpfr_prec_t prec = static_cast<mpfr_prec_t>(mp_precision_bits());
+  vector_t<mpfi> r = b;
+  mpfi_t t;
+  mpfi_init2(t, prec);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const mpfi_srcptr a = A(i, j).backend().data();
+      if ((mpfr_zero_p(&a->left) && mpfr_zero_p(&a->right)) || mpfr_zero_p(xt(j).backend().data())) continue;
+      mpfi_mul_fr(t, a, xt(j).backend().data());
+      mpfi_sub(r(i).backend().data(), r(i).backend().data(), t);
+    }
+  // Scale r by 2^k (exact) so that its largest bound is about 1, and enclose it in double.
+  long e_max = LONG_MIN;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const mpfi_srcptr ri = r(i).backend().data();
+    for (mpfr_srcptr v : {&ri->left, &ri->right}) {
+      if (!mpfr_number_p(v)) {
+        mpfi_clear(t);
+        return std::nullopt;
+      }
+      if (!mpfr_zero_p(v)) e_max = std::max<long>(e_max, mpfr_get_exp(v));
+    }
+  }
+  const long k = e_max == LONG_MIN ? 0 : -e_max;
+  vector_t<interval> rd(n);
+  {
+    mpfr_t s;
+    mpfr_init2(s, prec);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const mpfi_srcptr ri = r(i).backend().data();
+      mpfr_mul_2si(s, &ri->left, k, MPFR_RNDN);  // exact
+      const double lo = mpfr_get_d(s, MPFR_RNDD);
+      mpfr_mul_2si(s, &ri->right, k, MPFR_RNDN);
+      const double hi = mpfr_get_d(s, MPFR_RNDU);
+      rd(i) = interval(lo, hi, true);
+    }
+    mpfr_clear(s);
+  }
+  const std::optional<vector_t<interval>> e = residual_enclosure(R, Ad, rd);
+  if (!e) {
+    mpfi_clear(t);
+    return std::nullopt;
+  }
+  vector_t<mpfi> x(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    mpfi_ptr xi = x(i).backend().data();
+    mpfi_set_prec(xi, prec);
+    mpfi_interv_d(t, (*e)(i).lower(), (*e)(i).upper());  // exact: prec >= 53
+    mpfi_mul_2si(t, t, -k);                              // exact
+    mpfi_add_fr(xi, t, xt(i).backend().data());          // outward
+  }
+  mpfi_clear(t);
+  return x;
+}
+
+}  // namespace appell::detail
