@@ -5,13 +5,16 @@
 // cheap" tracks are printed from this same run, with their goals:
 //   interval / double <= 4,  dd / double <= 12,  float128 / double <= 80,
 //   mpfi / mpfr <= 2.2 at equal bits.
-// Run: build/bench/appell_bench  (or with --benchmark_min_time=0.5 for steadier numbers).
+// Run: build/bench/appell_bench  (or, steadier on a shared machine, with
+//   --benchmark_min_time=0.2 --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true:
+//   the ratios then use the median of the repetitions).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <set>
 
 #include "appell/io/scene.hpp"
 
@@ -30,10 +33,34 @@ void bench_scene(benchmark::State& state, const char* file, unsigned bits) {
   for (auto _ : state) benchmark::DoNotOptimize(compute<T>(bound));
 }
 
+// The floor of the mpfi/mpfr ratio: one product and one sum, s = a b + c (plus
+// a = s - b to keep the values moving), as the scenes' code does them -- a
+// fresh value per operation.  mpfi at its working precision (guard bits), as compute uses.
+template <class T>
+void bench_elementary(benchmark::State& state, unsigned bits) {
+  const mp_precision_scope scope(std::is_same_v<T, mpfi> ? mpfi_working_bits(bits) : bits);
+  T a = T(1) / 3, b = T(2) / 7, c = T(5) / 11;
+  for (auto _ : state) {
+    T s = a * b + c;
+    benchmark::DoNotOptimize(s);
+    a = s - b;
+  }
+}
+
 class ratio_reporter : public benchmark::ConsoleReporter {
  public:
   void ReportRuns(const std::vector<Run>& runs) override {
-    for (const auto& r : runs) ns_[r.benchmark_name()] = r.GetAdjustedRealTime();
+    // With --benchmark_repetitions the median of the repetitions is used; without, the one run.
+    for (const auto& r : runs) {
+      if (r.run_type == Run::RT_Aggregate) {
+        if (r.aggregate_name == "median") {
+          ns_[r.run_name.function_name] = r.GetAdjustedRealTime();
+          medians_.insert(r.run_name.function_name);
+        }
+      } else if (!medians_.count(r.run_name.function_name)) {
+        ns_[r.run_name.function_name] = r.GetAdjustedRealTime();
+      }
+    }
     ConsoleReporter::ReportRuns(runs);
   }
   void Finalize() override {
@@ -53,10 +80,16 @@ class ratio_reporter : public benchmark::ConsoleReporter {
       line("mpfi / mpfr at 113 bits", t("mpfi113") / t("mpfr113"), 2.2);
       line("mpfi / mpfr at 256 bits", t("mpfi256") / t("mpfr256"), 2.2);
     }
+    const double e113 = ns_["elementary/mpfi113"] / ns_["elementary/mpfr113"];
+    const double e256 = ns_["elementary/mpfi256"] / ns_["elementary/mpfr256"];
+    if (e113 > 0 && std::isfinite(e113))
+      std::cout << "  elementary s = a b + c: mpfi / mpfr " << std::setprecision(3) << e113 << " at 113 bits, " << e256
+                << " at 256 bits (what one MPFI operation costs against one MPFR operation)\n";
   }
 
  private:
   std::map<std::string, double> ns_;
+  std::set<std::string> medians_;
 };
 
 }  // namespace
@@ -71,6 +104,10 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark((std::string("mpfi113/") + s).c_str(), bench_scene<mpfi>, s, 113u);
     benchmark::RegisterBenchmark((std::string("mpfr256/") + s).c_str(), bench_scene<mpfr>, s, 256u);
     benchmark::RegisterBenchmark((std::string("mpfi256/") + s).c_str(), bench_scene<mpfi>, s, 256u);
+  }
+  for (unsigned bits : {113u, 256u}) {
+    benchmark::RegisterBenchmark(("elementary/mpfr" + std::to_string(bits)).c_str(), bench_elementary<mpfr>, bits);
+    benchmark::RegisterBenchmark(("elementary/mpfi" + std::to_string(bits)).c_str(), bench_elementary<mpfi>, bits);
   }
   benchmark::Initialize(&argc, argv);
   ratio_reporter reporter;

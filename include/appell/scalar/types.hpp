@@ -20,6 +20,7 @@
 
 #include "appell/scalar/interval.hpp"
 #include "appell/scalar/mpfi_domain.hpp"
+#include "appell/scalar/mpfi_ops.hpp"
 
 namespace appell {
 
