@@ -42,15 +42,25 @@ inline mpfr_ptr mpfi_scratch(mpfr_prec_t prec) {
   return h.v;
 }
 
-inline bool mpfi_all_regular(mpfi_srcptr a, mpfi_srcptr b) {
-  return mpfr_regular_p(&a->left) && mpfr_regular_p(&a->right) && mpfr_regular_p(&b->left) &&
-         mpfr_regular_p(&b->right);
+inline bool mpfi_all_finite(mpfi_srcptr a, mpfi_srcptr b) {
+  return mpfr_number_p(&a->left) && mpfr_number_p(&a->right) && mpfr_number_p(&b->left) && mpfr_number_p(&b->right);
 }
+inline bool mpfi_no_nan(mpfi_srcptr a, mpfi_srcptr b) {
+  return !mpfr_nan_p(&a->left) && !mpfr_nan_p(&a->right) && !mpfr_nan_p(&b->left) && !mpfr_nan_p(&b->right);
+}
+inline bool mpfi_is_zero(mpfi_srcptr a) { return mpfr_zero_p(&a->left) && mpfr_zero_p(&a->right); }
 
 /// r = a * b by the endpoint product of its sign case; false (nothing written)
-/// where MPFI must do it (a bound not regular, both operands straddling 0).
+/// where MPFI must do it (an infinite or NaN bound, both operands straddling 0).
+/// Zero bounds need no case of their own: a bound that is 0 enters the
+/// products of its case as 0 (a = [0, x] is handled as straddling 0).
 inline bool mpfi_mul_endpoints(mpfi_ptr r, mpfi_srcptr a, mpfi_srcptr b) {
-  if (!mpfi_all_regular(a, b)) return false;
+  if (!mpfi_all_finite(a, b)) return false;
+  if (mpfi_is_zero(a) || mpfi_is_zero(b)) {  // [0, 0] times a finite interval
+    mpfr_set_zero(&r->left, 1);
+    mpfr_set_zero(&r->right, -1);
+    return true;
+  }
   const bool a_pos = mpfr_sgn(&a->left) > 0, a_neg = mpfr_sgn(&a->right) < 0;
   const bool b_pos = mpfr_sgn(&b->left) > 0, b_neg = mpfr_sgn(&b->right) < 0;
   mpfr_srcptr l1, l2, u1, u2;  // lower = l1 l2 rounded down, upper = u1 u2 rounded up
@@ -76,7 +86,7 @@ inline bool mpfi_mul_endpoints(mpfi_ptr r, mpfi_srcptr a, mpfi_srcptr b) {
     mpfr_mul(&r->left, l1, l2, MPFR_RNDD);
     mpfr_mul(&r->right, u1, u2, MPFR_RNDU);
   }
-  mpfi_fix_zero_signs(r);  // a product of regular numbers can only reach 0 by underflow
+  mpfi_fix_zero_signs(r);
   return true;
 }
 
@@ -93,18 +103,19 @@ inline void eval_multiply(mpfi_float_backend<0>& r, const mpfi_float_backend<0>&
   else if (!appell::detail::mpfi_mul_endpoints(r.data(), r.data(), b.data())) mpfi_mul(r.data(), r.data(), b.data());
 }
 inline void eval_add(mpfi_float_backend<0>& r, const mpfi_float_backend<0>& a, const mpfi_float_backend<0>& b) {
-  if (!appell::detail::mpfi_all_regular(a.data(), b.data())) {
+  if (!appell::detail::mpfi_no_nan(a.data(), b.data())) {
     mpfi_add(r.data(), a.data(), b.data());
     return;
   }
-  // Lower bounds only from lower bounds, upper from upper: aliasing is harmless.
+  // Lower bounds only from lower bounds, upper from upper: aliasing is harmless.  Infinite
+  // bounds are fine (MPFI never has a lower bound +inf or an upper bound -inf, so no inf - inf).
   mpfr_add(&r.data()->left, &a.data()->left, &b.data()->left, MPFR_RNDD);
   mpfr_add(&r.data()->right, &a.data()->right, &b.data()->right, MPFR_RNDU);
   appell::detail::mpfi_fix_zero_signs(r.data());
 }
 inline void eval_add(mpfi_float_backend<0>& r, const mpfi_float_backend<0>& b) { eval_add(r, r, b); }
 inline void eval_subtract(mpfi_float_backend<0>& r, const mpfi_float_backend<0>& a, const mpfi_float_backend<0>& b) {
-  if ((void*)&r == (void*)&b || !appell::detail::mpfi_all_regular(a.data(), b.data())) {
+  if ((void*)&r == (void*)&b || !appell::detail::mpfi_no_nan(a.data(), b.data())) {
     mpfi_sub(r.data(), a.data(), b.data());  // r aliasing b: b's lower bound is read after r's is written
     return;
   }
