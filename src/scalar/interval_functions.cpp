@@ -313,13 +313,20 @@ const char sin_tag = 0, cos_tag = 0;
 // so with m a double in x and r >= max |x - m|,
 //   sin(x) in [RD(sin m) - r, RU(sin m) + r],  cos(x) likewise,
 // the two roundings of each value read off mpfr_sin_cos's ternary result.
-bool sin_cos_narrow(const interval& x, interval& s, interval& c) {
+// The mean-value form of both methods below: a double m in x and r >= max |x - m|
+// (rounded up), for finite arguments no wider than 1e-9 relative; false otherwise.
+bool narrow_midpoint(const interval& x, double& m, double& r) {
   const double lo = x.lower(), hi = x.upper();
   if (!std::isfinite(lo) || !std::isfinite(hi)) return false;
-  const double m = lo + (hi - lo) / 2;  // any double in [lo, hi] will do
+  m = lo + (hi - lo) / 2;  // any double in [lo, hi] will do
   if (!(lo <= m && m <= hi)) return false;
-  const double r = std::max(up_sub(hi, m), up_sub(m, lo));
-  if (!(r <= 1e-9 * std::max(1.0, std::abs(m)))) return false;  // narrow arguments only
+  r = std::max(up_sub(hi, m), up_sub(m, lo));
+  return r <= 1e-9 * std::max(1.0, std::abs(m));  // narrow arguments only
+}
+
+bool sin_cos_narrow(const interval& x, interval& s, interval& c) {
+  double m, r;
+  if (!narrow_midpoint(x, m, r)) return false;
   scratch& w = work();
   mpfr_set_d(w.a, m, MPFR_RNDN);
   thread_local mpfr_value cm(53);
@@ -391,17 +398,15 @@ struct sin_cos_tables {
 };
 
 bool sin_cos_polynomial(const interval& x, interval& s, interval& c) {
-  const double lo = x.lower(), hi = x.upper();
-  if (!(std::abs(lo) < 1048576.0 && std::abs(hi) < 1048576.0)) return false;
-  if (!(hi - lo <= 1e-9 * std::max(1.0, std::abs(lo)))) return false;  // narrow arguments (wider ones: endpoints and quadrants)
-  static const sin_cos_tables tab;
+  if (!(std::abs(x.lower()) < 1048576.0 && std::abs(x.upper()) < 1048576.0)) return false;
   // Mean-value form, as in sin_cos_narrow: evaluate at a double mid in x, then
-  // widen by r >= max |x - mid| (sin and cos are 1-Lipschitz).
-  const double mid = lo + (hi - lo) / 2;
-  if (!(lo <= mid && mid <= hi)) return false;
+  // widen by r >= max |x - mid| (sin and cos are 1-Lipschitz).  Wider arguments:
+  // endpoints and quadrants.
+  double mid, r;
+  if (!narrow_midpoint(x, mid, r)) return false;
+  static const sin_cos_tables tab;
   const double k = std::nearbyint(mid * 0.63661977236758134);  // any integer near mid / (pi/2)
   const upward_rounding mode;
-  const double r = std::max(interval_arith::opaque(hi - mid), interval_arith::opaque(mid - lo));  // rounded up
   const interval kI(k);
   // mid - k P1 - k P2 - k P3; the first two products are exact, the rest is interval arithmetic
   const interval y = ((interval(mid) - interval(k * tab.P1)) - interval(k * tab.P2)) - kI * tab.P3;
