@@ -29,8 +29,11 @@ euler_body_input read_euler_body(object_reader& scene) {
                         " + " + names[j] + " >= " + names[k] + " (" + in.inertia[i].text + " + " +
                         in.inertia[j].text + " < " + in.inertia[k].text + ")");
   }
-  in.torque = scene.has("torque") ? scene.numbers("torque", 3)
-                                  : std::vector<decimal_field>{{"0", "torque[0]"}, {"0", "torque[1]"}, {"0", "torque[2]"}};
+  if (scene.has("torque")) {
+    in.torque = scene.numbers("torque", 3);
+  } else {  // default 0 (an if, not ?: with a braced list, which GCC 12 flags as maybe-uninitialized)
+    for (const char* field : {"torque[0]", "torque[1]", "torque[2]"}) in.torque.push_back({"0", field});
+  }
   object_reader state = scene.object("state");
   in.omega = state.numbers("omega", 3);
   state.finish();
