@@ -290,3 +290,77 @@ BOOST_AUTO_TEST_CASE(sin_cos_of_narrow_arguments_contain_and_are_tight) {
   BOOST_TEST(misses == 0);
   BOOST_TEST(loose == 0);
 }
+
+// mpfi's sin and cos of narrow arguments come from one mpfr_sin_cos at the midpoint
+// plus a mean-value bound (sin_cos_mpfi, src/scalar/mpfi_functions.cpp).  On thin
+// and narrow arguments at 128 and 320 bits, uniform in size and next to k pi/2:
+// the endpoints, the midpoint and random interior points (at 640 bits) are
+// contained, and the width exceeds MPFI's own endpoint enclosure (mpfi_sin,
+// mpfi_cos) by at most 8 ulps of the result's magnitude plus 17/16 r^2, r the
+// argument's radius (the mean-value form's second-order term is r^2/2 on each
+// side), plus 2 ulps of the argument (the midpoint is placed to within half an
+// ulp of its centre).
+BOOST_AUTO_TEST_CASE(mpfi_sin_cos_of_narrow_arguments_contain_and_are_tight) {
+  std::mt19937_64 gen(1788);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  long cases = 0, misses = 0, loose = 0;
+  for (mpfr_prec_t prec : {128, 320}) {
+    const mp_precision_scope scope(static_cast<unsigned>(prec));
+    mpfr_value half_pi(640), v(640), r(640), lo(prec), hi(prec), w(prec);
+    mpfr_const_pi(half_pi, MPFR_RNDN);
+    mpfr_div_2ui(half_pi, half_pi, 1, MPFR_RNDN);
+    for (int c = 0; c < 6000; ++c) {
+      if (c % 2 == 0) {
+        mpfr_set_d(lo, std::ldexp(unit(gen) * 2 - 1, static_cast<int>(unit(gen) * 40) - 20), MPFR_RNDN);
+      } else {  // next to k pi/2
+        const long k = static_cast<long>(unit(gen) * 524288) - 262144;
+        mpfr_mul_si(v, half_pi, k, MPFR_RNDN);
+        mpfr_set(lo, v, MPFR_RNDN);
+      }
+      // width 0, up to 2^-(p/2) relative, or up to 2^-18 relative (inside and beyond the narrow path's 2^-20)
+      const int kind = c % 3;
+      mpfr_abs(w, lo, MPFR_RNDN);
+      mpfr_mul_d(w, w, kind == 0 ? 0.0 : unit(gen), MPFR_RNDN);
+      mpfr_mul_2si(w, w, kind == 1 ? -static_cast<long>(prec) / 2 : -18, MPFR_RNDN);
+      mpfr_add(hi, lo, w, MPFR_RNDU);
+      const mpfi X = mpfi_from_bounds(mpfr(lo.get()), mpfr(hi.get()));
+      mpfi s, co;
+      sin_cos_mpfi(X, s, co);
+      const mpfi s2 = sin(X), c2 = cos(X);  // the plain overloads: the same values
+      BOOST_REQUIRE(mpfr_equal_p(&s.backend().data()->left, &s2.backend().data()->left) &&
+                    mpfr_equal_p(&co.backend().data()->right, &c2.backend().data()->right));
+      for (int f = 0; f < 2; ++f) {
+        const mpfi& y = f == 0 ? s : co;
+        ++cases;
+        for (int sample = 0; sample < 5; ++sample) {
+          // lo, hi, the midpoint, two random interior points, all at 640 bits
+          mpfr_set(v, lo, MPFR_RNDN);
+          if (sample == 1) mpfr_set(v, hi, MPFR_RNDN);
+          if (sample >= 2) {
+            mpfr_sub(r, hi, lo, MPFR_RNDN);
+            mpfr_mul_d(r, r, sample == 2 ? 0.5 : unit(gen), MPFR_RNDN);
+            mpfr_add(v, v, r, MPFR_RNDN);
+          }
+          if (f == 0) mpfr_sin(r, v, MPFR_RNDN);
+          else mpfr_cos(r, v, MPFR_RNDN);
+          if (mpfr_cmp(r, &y.backend().data()->left) < 0 || mpfr_cmp(r, &y.backend().data()->right) > 0) ++misses;
+        }
+        mpfi ref;
+        if (f == 0) mpfi_sin(ref.backend().data(), X.backend().data());
+        else mpfi_cos(ref.backend().data(), X.backend().data());
+        const mpfr a1 = abs(mpfi_lower(y)), a2 = abs(mpfi_upper(y));
+        const mpfr mag = a1 > a2 ? a1 : a2;
+        mpfr rx = mpfi_width(X);  // the mean-value form's second-order term: about r^2 = (width / 2)^2
+        rx = rx * rx / 4;
+        // and the midpoint sits within half an ulp of x's centre: 2 ulps of |x| (as for interval above)
+        const mpfr x_ulps = ldexp(abs(mpfi_upper(X)), 2 - static_cast<int>(prec));
+        const mpfr allowed = mpfi_width(ref) + ldexp(mpfr(mag), 3 - static_cast<int>(prec)) + rx * mpfr(1.0625) + x_ulps;
+        if (mpfi_width(y) > allowed) ++loose;
+      }
+    }
+  }
+  BOOST_TEST_MESSAGE("mpfi narrow sin/cos: " << cases << " cases, " << misses << " misses, " << loose
+                                             << " wider than MPFI's enclosure + 8 ulps + 17/16 r^2 + 2 ulps of x");
+  BOOST_TEST(misses == 0);
+  BOOST_TEST(loose == 0);
+}

@@ -329,6 +329,8 @@ namespace {
 struct scaled_run {
   int certified = 0;
   double worst_excess_ulps = 0;
+  int residual_path = 0;  ///< systems the residual path certified by itself (no fallback)
+  int point_systems = 0;  ///< exact point systems of thick boxes checked
 };
 scaled_run scaled_mpfi_systems(int count, int max_shift, bool thick) {
   scaled_run out;
@@ -345,13 +347,25 @@ scaled_run scaled_mpfi_systems(int count, int max_shift, bool thick) {
     qmatrix Aq(n);
     qvector bq(n), xq(n);
     const mpfr eps_a = thick ? mpfr(std::ldexp(1.0, -100)) : mpfr(0);  // relative radius of thick entries
+    // Half the right-hand sides carry more bits than the working precision
+    // (b (1 + 2^-(p+30)), exact at 2p + 128 bits): the residual keeps b's precision.
+    const bool wide_b = c % 2 == 1;
+    const mpfr_prec_t bp = wide_b ? static_cast<mpfr_prec_t>(2 * mp_precision_bits() + 128)
+                                  : static_cast<mpfr_prec_t>(mp_precision_bits());
+    const long extra = static_cast<long>(mp_precision_bits()) + 30;
     for (int i = 0; i < n; ++i) {
       const double bi = random_entry();
-      mpfr bm = ldexp(mpfr(bi), static_cast<int>(sb));
-      bI(i) = mpfi_from_bounds(bm, bm);
-      mpq_set_d(bq[i], bi);
-      if (sb >= 0) mpq_mul_2exp(bq[i], bq[i], static_cast<mp_bitcnt_t>(sb));
-      else mpq_div_2exp(bq[i], bq[i], static_cast<mp_bitcnt_t>(-sb));
+      mpfi_ptr bp_i = bI(i).backend().data();
+      mpfi_set_prec(bp_i, bp);
+      mpfr_set_d(&bp_i->left, bi, MPFR_RNDN);
+      if (wide_b) {
+        mpfr_value t(bp);
+        mpfr_mul_2si(t, &bp_i->left, -extra, MPFR_RNDN);
+        mpfr_add(&bp_i->left, &bp_i->left, t, MPFR_RNDN);  // exact at bp bits
+      }
+      mpfr_mul_2si(&bp_i->left, &bp_i->left, sb, MPFR_RNDN);
+      mpfr_set(&bp_i->right, &bp_i->left, MPFR_RNDN);
+      mpfr_get_q(bq[i], &bp_i->left);  // exact
       for (int j = 0; j < n; ++j) {
         const mpfr am = ldexp(mpfr(A(i, j)), static_cast<int>(sa));
         const mpfr r = abs(am) * eps_a;
@@ -364,6 +378,24 @@ scaled_run scaled_mpfi_systems(int count, int max_shift, bool thick) {
     BOOST_REQUIRE(exact_solve(Aq, bq, xq));  // the midpoint system: its solution lies in every enclosure
     const vector_t<mpfi> x = solve(AI, bI);  // diagonally dominant: must certify
     const vector_t<mpfi> xk = detail::krawczyk_solve(AI, bI, false);
+    if (detail::mpfi_residual_solve(AI, bI)) ++out.residual_path;
+    if (thick) {  // vertex systems of the box [A] (exact_solve has reduced Aq, bq: rebuilt from the boxes)
+      std::uniform_int_distribution<int> coin(0, 1);
+      for (int sample = 0; sample < 4; ++sample) {
+        qmatrix As(n);
+        qvector bs(n), xs(n);
+        for (int i = 0; i < n; ++i) {
+          mpfr_get_q(bs[i], &bI(i).backend().data()->left);  // b is thin
+          for (int j = 0; j < n; ++j) {
+            const mpfi_srcptr a = AI(i, j).backend().data();
+            mpfr_get_q(As(i, j), coin(rng) == 0 ? &a->left : &a->right);
+          }
+        }
+        BOOST_REQUIRE(exact_solve(As, bs, xs));
+        for (int i = 0; i < n; ++i) BOOST_REQUIRE_MESSAGE(encloses(x(i), xs[i]), "a point system of the box misses");
+        ++out.point_systems;
+      }
+    }
     mpfr xk_norm = 0;
     for (int i = 0; i < n; ++i) {
       BOOST_REQUIRE_MESSAGE(encloses(x(i), xq[i]), "n " << n << " sa " << sa << " sb " << sb << " misses");
@@ -391,11 +423,15 @@ BOOST_AUTO_TEST_CASE(mpfi_residual_path_encloses_at_every_scale_and_precision) {
       const scaled_run beyond = scaled_mpfi_systems(30, 1500, thick);
       BOOST_TEST_MESSAGE("mpfi " << bits << " bits" << (thick ? ", thick" : ", thin") << ": " << in_range.certified
                                  << " + " << beyond.certified << " certified; largest excess width over Krawczyk's box "
-                                 << std::max(in_range.worst_excess_ulps, beyond.worst_excess_ulps) << " ulps");
+                                 << std::max(in_range.worst_excess_ulps, beyond.worst_excess_ulps) << " ulps; residual path "
+                                 << in_range.residual_path << "/60 in range, " << beyond.residual_path
+                                 << "/30 beyond; " << in_range.point_systems + beyond.point_systems
+                                 << " exact point systems of the boxes enclosed");
       // The residual path may be a little wider than Krawczyk's contracted box, by a few ulps at most
       // (measured: up to 11 ulps on thin systems of up to 10 unknowns).
       BOOST_TEST(in_range.certified == 60);
       BOOST_TEST(beyond.certified == 30);
+      BOOST_TEST(in_range.residual_path == 60);  // in double's range the residual path certifies alone
       BOOST_TEST(std::max(in_range.worst_excess_ulps, beyond.worst_excess_ulps) <= 16.0);
     }
   }

@@ -115,9 +115,13 @@ std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const
     mpfr_init2(s, prec);
     for (Eigen::Index i = 0; i < n; ++i) {
       const mpfi_srcptr ri = r(i).backend().data();
-      mpfr_mul_2si(s, &ri->left, k, MPFR_RNDN);  // exact
+      // at the bound's own precision the scaling is exact (r may carry b's precision,
+      // above the working one); the directions keep it an enclosure even if it were not
+      mpfr_set_prec(s, mpfr_get_prec(&ri->left));
+      mpfr_mul_2si(s, &ri->left, k, MPFR_RNDD);
       const double lo = mpfr_get_d(s, MPFR_RNDD);
-      mpfr_mul_2si(s, &ri->right, k, MPFR_RNDN);
+      mpfr_set_prec(s, mpfr_get_prec(&ri->right));
+      mpfr_mul_2si(s, &ri->right, k, MPFR_RNDU);
       const double hi = mpfr_get_d(s, MPFR_RNDU);
       rd(i) = interval(lo, hi, true);
     }
@@ -132,7 +136,7 @@ std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const
   for (Eigen::Index i = 0; i < n; ++i) {
     mpfi_ptr xi = x(i).backend().data();
     mpfi_set_prec(xi, prec);
-    mpfi_interv_d(t, (*e)(i).lower(), (*e)(i).upper());  // exact: prec >= 53
+    mpfi_interv_d(t, (*e)(i).lower(), (*e)(i).upper());  // outward (exact at 53 bits and more)
     mpfi_mul_2si(t, t, -k);                              // exact
     mpfi_add_fr(xi, t, xt(i).backend().data());          // outward
   }

@@ -59,3 +59,95 @@ appell_mpfi log(const appell_mpfi& x) {
 }
 
 }  // namespace boost::multiprecision
+
+namespace appell {
+
+// sin and cos of a narrow mpfi argument from one mpfr_sin_cos at its midpoint m:
+// with r >= max |x - m|, |sin x - sin m| <= r |cos m| + r^2 / 2 (Taylor, Lagrange
+// remainder), and likewise for cos: wider than the endpoint enclosure by about r^2.  sin m and cos m come
+// correctly rounded to nearest, the direction of each rounding read off the
+// ternary value; every bound below is rounded outward.  Arguments that are not
+// narrow (r > 2^-20) or not finite go to MPFI's endpoint functions.
+void sin_cos_mpfi(const mpfi& x, mpfi& s, mpfi& c) {
+  mpfi_srcptr xp = x.backend().data();
+  mpfi_ptr sp = s.backend().data(), cp = c.backend().data();
+  const mpfr_prec_t pw = std::max(mpfi_get_prec(sp), mpfi_get_prec(cp));
+  auto fallback = [&] {
+    mpfi_sin(sp, xp);
+    mpfi_cos(cp, xp);
+  };
+  if (!mpfr_number_p(&xp->left) || !mpfr_number_p(&xp->right) || sp == xp || cp == xp) return fallback();
+  struct scratch {
+    mpfr_t m, r, t, sm, cm, lo, hi;
+    scratch() { mpfr_inits2(64, m, r, t, sm, cm, lo, hi, static_cast<mpfr_ptr>(nullptr)); }
+    ~scratch() { mpfr_clears(m, r, t, sm, cm, lo, hi, static_cast<mpfr_ptr>(nullptr)); }
+  };
+  thread_local scratch w;
+  // m in [lo, hi]: (lo + hi) / 2 with one more bit than x (exact when lo and hi share
+  // an exponent; otherwise rounded to nearest, still between lo and hi)
+  mpfr_set_prec(w.m, mpfi_get_prec(xp) + 1);
+  mpfr_add(w.m, &xp->left, &xp->right, MPFR_RNDN);
+  mpfr_div_2ui(w.m, w.m, 1, MPFR_RNDN);
+  if (mpfr_cmp(w.m, &xp->left) < 0 || mpfr_cmp(w.m, &xp->right) > 0) return fallback();
+  mpfr_set_prec(w.r, pw);
+  mpfr_set_prec(w.t, pw);
+  mpfr_sub(w.r, &xp->right, w.m, MPFR_RNDU);
+  mpfr_sub(w.t, w.m, &xp->left, MPFR_RNDU);
+  mpfr_max(w.r, w.r, w.t, MPFR_RNDU);  // r >= max |x - m| (rounded up)
+  // not narrow: r > 2^-20 (radians, whatever |m|: the overestimation r^2 is absolute)
+  if (mpfr_cmp_ui_2exp(w.r, 1, -20) > 0) return fallback();
+  mpfr_set_prec(w.sm, pw);
+  mpfr_set_prec(w.cm, pw);
+  const int ternary = mpfr_sin_cos(w.sm, w.cm, w.m, MPFR_RNDN);
+  // delta(y) = r (|y| + 2^(1-pw) + r/2), rounded up: |y| + 2^(1-pw) bounds |cos m| (resp.
+  // |sin m|), as y is within one ulp <= 2^-pw of it (|y| <= 1); Taylor with Lagrange remainder,
+  // |sin x - sin m| <= |cos m| r + r^2/2 (likewise cos)
+  auto delta = [&](mpfr_srcptr y, mpfr_ptr out) {
+    mpfr_abs(out, y, MPFR_RNDU);
+    mpfr_set_ui_2exp(w.t, 1, 1 - pw, MPFR_RNDU);
+    mpfr_add(out, out, w.t, MPFR_RNDU);
+    mpfr_div_2ui(w.t, w.r, 1, MPFR_RNDU);
+    mpfr_add(out, out, w.t, MPFR_RNDU);
+    mpfr_mul(out, out, w.r, MPFR_RNDU);
+  };
+  // the exact value v of a rounded y: ternary 1: y > v, so v in [y-, y]; 2: v in [y, y+]; 0: v = y
+  // (y- and y+ the neighbours of y at y's own precision pw)
+  auto enclose = [&](mpfi_ptr out, mpfr_srcptr y, int t, mpfr_srcptr d) {
+    mpfr_set_prec(w.lo, pw);
+    mpfr_set_prec(w.hi, pw);
+    mpfr_set(w.lo, y, MPFR_RNDN);  // exact
+    mpfr_set(w.hi, y, MPFR_RNDN);
+    if (t == 1) mpfr_nextbelow(w.lo);
+    if (t == 2) mpfr_nextabove(w.hi);
+    mpfr_sub(&out->left, w.lo, d, MPFR_RNDD);
+    mpfr_add(&out->right, w.hi, d, MPFR_RNDU);
+    if (mpfr_cmp_si(&out->left, -1) < 0) mpfr_set_si(&out->left, -1, MPFR_RNDD);
+    if (mpfr_cmp_ui(&out->right, 1) > 0) mpfr_set_ui(&out->right, 1, MPFR_RNDU);
+    detail::mpfi_fix_zero_signs(out);
+  };
+  mpfr_t ds, dc;
+  mpfr_inits2(pw, ds, dc, static_cast<mpfr_ptr>(nullptr));
+  delta(w.cm, ds);  // sin moves by at most r (|cos m| + r)
+  delta(w.sm, dc);
+  enclose(sp, w.sm, ternary & 3, ds);
+  enclose(cp, w.cm, (ternary >> 2) & 3, dc);
+  mpfr_clears(ds, dc, static_cast<mpfr_ptr>(nullptr));
+}
+
+}  // namespace appell
+
+namespace boost::multiprecision {
+
+appell_mpfi sin(const appell_mpfi& x) {
+  appell_mpfi s, c;
+  appell::sin_cos_mpfi(x, s, c);
+  return s;
+}
+
+appell_mpfi cos(const appell_mpfi& x) {
+  appell_mpfi s, c;
+  appell::sin_cos_mpfi(x, s, c);
+  return c;
+}
+
+}  // namespace boost::multiprecision

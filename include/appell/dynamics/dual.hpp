@@ -46,8 +46,16 @@ struct dual {
   }
 };
 
-template <class T> dual<T> sin(const dual<T>& x) { using std::sin, std::cos; return {sin(x.v), cos(x.v) * x.d}; }
-template <class T> dual<T> cos(const dual<T>& x) { using std::sin, std::cos; return {cos(x.v), -sin(x.v) * x.d}; }
+template <class T> dual<T> sin(const dual<T>& x) {
+  T s, c;
+  sin_cos(x.v, s, c);
+  return {s, c * x.d};
+}
+template <class T> dual<T> cos(const dual<T>& x) {
+  T s, c;
+  sin_cos(x.v, s, c);
+  return {c, -s * x.d};
+}
 template <class T> dual<T> tan(const dual<T>& x) {  // tan' = 1 + tan^2
   using std::tan;
   const T t = tan(x.v);

@@ -17,6 +17,24 @@ namespace appell {
 /// x^n for mpfi, tight: each bound from mpfr_pow_si with directed rounding.
 mpfi pown_mpfi(const mpfi& x, int n);
 
+/// sin and cos of an mpfi together (src/scalar/mpfi_functions.cpp): for a narrow
+/// argument, one mpfr_sin_cos at its midpoint plus a mean-value bound; otherwise MPFI's.
+void sin_cos_mpfi(const mpfi& x, mpfi& s, mpfi& c);
+
+/// s = sin x, c = cos x: one MPFR call for mpfr and mpfi (a dual number needs both).
+template <class T>
+void sin_cos(const T& x, T& s, T& c) {
+  if constexpr (std::is_same_v<T, mpfr>) {
+    mpfr_sin_cos(s.backend().data(), c.backend().data(), x.backend().data(), MPFR_RNDN);  // each correctly rounded
+  } else if constexpr (std::is_same_v<T, mpfi>) {
+    sin_cos_mpfi(x, s, c);
+  } else {
+    using std::sin, std::cos;
+    s = sin(x);
+    c = cos(x);
+  }
+}
+
 /// x^n for an integer n.
 template <Scalar T>
 T pown(const T& x, int n) {
