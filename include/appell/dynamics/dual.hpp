@@ -19,6 +19,8 @@
 
 namespace appell {
 
+template <class S> bool structurally_zero(const S& x);
+
 template <class T>
 struct dual {
   T v;  ///< value
@@ -39,7 +41,18 @@ struct dual {
   friend dual operator+(const dual& a) { return a; }
   friend dual operator+(const dual& a, const dual& b) { return {a.v + b.v, a.d + b.d}; }
   friend dual operator-(const dual& a, const dual& b) { return {a.v - b.v, a.d - b.d}; }
-  friend dual operator*(const dual& a, const dual& b) { return {a.v * b.v, a.d * b.v + a.v * b.d}; }
+  friend dual operator*(const dual& a, const dual& b) {
+    if constexpr (!std::is_floating_point_v<T>) {
+      // For scalars whose product costs more than a test (intervals, multiple precision, dd),
+      // exact zero derivatives -- constants, unseeded variables -- skip their products.
+      const bool az = structurally_zero(a.d), bz = structurally_zero(b.d);
+      if (az || bz) {
+        if (az && bz) return {a.v * b.v, T(0)};
+        return {a.v * b.v, az ? T(a.v * b.d) : T(a.d * b.v)};
+      }
+    }
+    return {a.v * b.v, a.d * b.v + a.v * b.d};
+  }
   friend dual operator/(const dual& a, const dual& b) {  // (a/b)' = (a' - (a/b) b') / b
     const T q = a.v / b.v;
     return {q, (a.d - q * b.d) / b.v};
