@@ -76,7 +76,11 @@ void sin_cos_mpfi(const mpfi& x, mpfi& s, mpfi& c) {
     mpfi_sin(sp, xp);
     mpfi_cos(cp, xp);
   };
-  if (!mpfr_number_p(&xp->left) || !mpfr_number_p(&xp->right) || sp == xp || cp == xp) return fallback();
+  if (sp == xp || cp == xp) {  // s or c is x itself: work on a copy (review: sin_cos(X, X, C) gave cos(sin X))
+    const mpfi copy = x;
+    return sin_cos_mpfi(copy, s, c);
+  }
+  if (!mpfr_number_p(&xp->left) || !mpfr_number_p(&xp->right)) return fallback();
   struct scratch {
     mpfr_t m, r, t, sm, cm, lo, hi;
     scratch() { mpfr_inits2(64, m, r, t, sm, cm, lo, hi, static_cast<mpfr_ptr>(nullptr)); }
