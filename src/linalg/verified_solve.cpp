@@ -21,12 +21,11 @@
 
 namespace appell::detail {
 
-std::optional<vector_t<interval>> residual_enclosure(const Eigen::MatrixXd& R, const matrix_t<interval>& A,
+std::optional<vector_t<interval>> residual_enclosure(const Eigen::MatrixXd& R, const matrix_t<interval>& C,
                                                      const vector_t<interval>& r) {
-  const Eigen::Index n = A.rows();
+  const Eigen::Index n = C.rows();
   const upward_rounding mode;  // plain double operations below round upward
   const auto opaque = [](double v) { return interval_arith::opaque(v); };
-  const matrix_t<interval> C = identity_minus_product(R, A);
   std::vector<double> row_sum(static_cast<std::size_t>(n));
   double beta = 0;
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -84,63 +83,50 @@ std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const
   const Eigen::MatrixXd R = lud.inverse();
   if (!R.allFinite()) return std::nullopt;
 
-  // r = b - A x~ at the working precision, exact zeros of A skipped.
+  // r = b - A x~ at the working precision, exact zeros skipped.
   const mpfr_prec_t prec = static_cast<mpfr_prec_t>(mp_precision_bits());
   vector_t<mpfi> r = b;
-  mpfi_t t;
-  mpfi_init2(t, prec);
+  mpfi t;  // scratch at the working precision
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j) {
-      const mpfi_srcptr a = A(i, j).backend().data();
-      if ((mpfr_zero_p(&a->left) && mpfr_zero_p(&a->right)) || mpfr_zero_p(xt(j).backend().data())) continue;
-      mpfi_mul_fr(t, a, xt(j).backend().data());
-      mpfi_sub(r(i).backend().data(), r(i).backend().data(), t);
+      if (exactly_zero(A(i, j)) || exactly_zero(xt(j))) continue;
+      mpfi_mul_fr(t.backend().data(), A(i, j).backend().data(), xt(j).backend().data());
+      mpfi_sub(r(i).backend().data(), r(i).backend().data(), t.backend().data());
     }
   // Scale r by 2^k (exact) so that its largest bound is about 1, and enclose it in double.
   long e_max = LONG_MIN;
   for (Eigen::Index i = 0; i < n; ++i) {
     const mpfi_srcptr ri = r(i).backend().data();
     for (mpfr_srcptr v : {&ri->left, &ri->right}) {
-      if (!mpfr_number_p(v)) {
-        mpfi_clear(t);
-        return std::nullopt;
-      }
+      if (!mpfr_number_p(v)) return std::nullopt;
       if (!mpfr_zero_p(v)) e_max = std::max<long>(e_max, mpfr_get_exp(v));
     }
   }
   const long k = e_max == LONG_MIN ? 0 : -e_max;
   vector_t<interval> rd(n);
-  {
-    mpfr_t s;
-    mpfr_init2(s, prec);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const mpfi_srcptr ri = r(i).backend().data();
-      // at the bound's own precision the scaling is exact (r may carry b's precision,
-      // above the working one); the directions keep it an enclosure even if it were not
-      mpfr_set_prec(s, mpfr_get_prec(&ri->left));
-      mpfr_mul_2si(s, &ri->left, k, MPFR_RNDD);
-      const double lo = mpfr_get_d(s, MPFR_RNDD);
-      mpfr_set_prec(s, mpfr_get_prec(&ri->right));
-      mpfr_mul_2si(s, &ri->right, k, MPFR_RNDU);
-      const double hi = mpfr_get_d(s, MPFR_RNDU);
-      rd(i) = interval(lo, hi, true);
-    }
-    mpfr_clear(s);
+  mpfr_value s(prec);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const mpfi_srcptr ri = r(i).backend().data();
+    // at the bound's own precision the scaling is exact (r may carry b's precision,
+    // above the working one); the directions keep it an enclosure even if it were not
+    mpfr_set_prec(s, mpfr_get_prec(&ri->left));
+    mpfr_mul_2si(s, &ri->left, k, MPFR_RNDD);
+    const double lo = mpfr_get_d(s, MPFR_RNDD);
+    mpfr_set_prec(s, mpfr_get_prec(&ri->right));
+    mpfr_mul_2si(s, &ri->right, k, MPFR_RNDU);
+    const double hi = mpfr_get_d(s, MPFR_RNDU);
+    rd(i) = interval(lo, hi, true);
   }
-  const std::optional<vector_t<interval>> e = residual_enclosure(R, Ad, rd);
-  if (!e) {
-    mpfi_clear(t);
-    return std::nullopt;
-  }
+  const std::optional<vector_t<interval>> e = residual_enclosure(R, identity_minus_product(R, Ad), rd);
+  if (!e) return std::nullopt;
   vector_t<mpfi> x(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     mpfi_ptr xi = x(i).backend().data();
     mpfi_set_prec(xi, prec);
-    mpfi_interv_d(t, (*e)(i).lower(), (*e)(i).upper());  // outward (exact at 53 bits and more)
-    mpfi_mul_2si(t, t, -k);                              // exact
-    mpfi_add_fr(xi, t, xt(i).backend().data());          // outward
+    mpfi_interv_d(t.backend().data(), (*e)(i).lower(), (*e)(i).upper());  // outward (exact at 53 bits and more)
+    mpfi_mul_2si(t.backend().data(), t.backend().data(), -k);             // exact
+    mpfi_add_fr(xi, t.backend().data(), xt(i).backend().data());          // outward
   }
-  mpfi_clear(t);
   return x;
 }
 

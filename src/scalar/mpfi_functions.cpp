@@ -64,9 +64,9 @@ namespace appell {
 
 // sin and cos of a narrow mpfi argument from one mpfr_sin_cos at its midpoint m:
 // with r >= max |x - m|, |sin x - sin m| <= r |cos m| + r^2 / 2 (Taylor, Lagrange
-// remainder), and likewise for cos: wider than the endpoint enclosure by about r^2.  sin m and cos m come
-// correctly rounded to nearest, the direction of each rounding read off the
-// ternary value; every bound below is rounded outward.  Arguments that are not
+// remainder), and likewise for cos: wider than the endpoint enclosure by about
+// r^2.  sin m and cos m come correctly rounded to nearest, the direction of each
+// rounding read off the ternary value; every bound below is rounded outward.  Arguments that are not
 // narrow (r > 2^-20) or not finite go to MPFI's endpoint functions.
 void sin_cos_mpfi(const mpfi& x, mpfi& s, mpfi& c) {
   mpfi_srcptr xp = x.backend().data();
@@ -82,9 +82,9 @@ void sin_cos_mpfi(const mpfi& x, mpfi& s, mpfi& c) {
   }
   if (!mpfr_number_p(&xp->left) || !mpfr_number_p(&xp->right)) return fallback();
   struct scratch {
-    mpfr_t m, r, t, sm, cm, lo, hi;
-    scratch() { mpfr_inits2(64, m, r, t, sm, cm, lo, hi, static_cast<mpfr_ptr>(nullptr)); }
-    ~scratch() { mpfr_clears(m, r, t, sm, cm, lo, hi, static_cast<mpfr_ptr>(nullptr)); }
+    mpfr_t m, r, t, sm, cm, lo, hi, ds, dc;
+    scratch() { mpfr_inits2(64, m, r, t, sm, cm, lo, hi, ds, dc, static_cast<mpfr_ptr>(nullptr)); }
+    ~scratch() { mpfr_clears(m, r, t, sm, cm, lo, hi, ds, dc, static_cast<mpfr_ptr>(nullptr)); }
   };
   thread_local scratch w;
   // m in [lo, hi]: (lo + hi) / 2 with one more bit than x (exact when lo and hi share
@@ -100,8 +100,7 @@ void sin_cos_mpfi(const mpfi& x, mpfi& s, mpfi& c) {
   mpfr_max(w.r, w.r, w.t, MPFR_RNDU);  // r >= max |x - m| (rounded up)
   // not narrow: r > 2^-20 (radians, whatever |m|: the overestimation r^2 is absolute)
   if (mpfr_cmp_ui_2exp(w.r, 1, -20) > 0) return fallback();
-  mpfr_set_prec(w.sm, pw);
-  mpfr_set_prec(w.cm, pw);
+  for (mpfr_ptr v : {w.sm, w.cm, w.ds, w.dc}) mpfr_set_prec(v, pw);
   const int ternary = mpfr_sin_cos(w.sm, w.cm, w.m, MPFR_RNDN);
   // delta(y) = r (|y| + 2^(1-pw) + r/2), rounded up: |y| + 2^(1-pw) bounds |cos m| (resp.
   // |sin m|), as y is within one ulp <= 2^-pw of it (|y| <= 1); Taylor with Lagrange remainder,
@@ -129,13 +128,10 @@ void sin_cos_mpfi(const mpfi& x, mpfi& s, mpfi& c) {
     if (mpfr_cmp_ui(&out->right, 1) > 0) mpfr_set_ui(&out->right, 1, MPFR_RNDU);
     detail::mpfi_fix_zero_signs(out);
   };
-  mpfr_t ds, dc;
-  mpfr_inits2(pw, ds, dc, static_cast<mpfr_ptr>(nullptr));
-  delta(w.cm, ds);  // sin moves by at most r (|cos m| + r)
-  delta(w.sm, dc);
-  enclose(sp, w.sm, ternary & 3, ds);
-  enclose(cp, w.cm, (ternary >> 2) & 3, dc);
-  mpfr_clears(ds, dc, static_cast<mpfr_ptr>(nullptr));
+  delta(w.cm, w.ds);  // sin moves by at most r |cos m| + r^2/2
+  delta(w.sm, w.dc);
+  enclose(sp, w.sm, ternary & 3, w.ds);
+  enclose(cp, w.cm, (ternary >> 2) & 3, w.dc);
 }
 
 }  // namespace appell

@@ -134,9 +134,9 @@ inline matrix_t<interval> identity_minus_product(const Eigen::MatrixXd& R, const
 inline constexpr double max_contraction = 1.0 / 1024;
 
 /// Encloses A^-1 r for every A in [A] and r in [r] given an approximate
-/// inverse R of mid(A), or nullopt if no row sum of |I - R A| can be shown to
-/// be at most max_contraction.
-std::optional<vector_t<interval>> residual_enclosure(const Eigen::MatrixXd& R, const matrix_t<interval>& A,
+/// inverse R of mid(A) and C enclosing I - R A for every A in [A]
+/// (identity_minus_product), or nullopt if some row sum of |C| exceeds max_contraction.
+std::optional<vector_t<interval>> residual_enclosure(const Eigen::MatrixXd& R, const matrix_t<interval>& C,
                                                      const vector_t<interval>& r);
 /// mpfi systems by the residual bound: x~ by mpfr LU, r = b - A x~ in mpfi,
 /// the rest in double.  nullopt where it does not apply (the caller falls back).
@@ -181,17 +181,16 @@ vector_t<I> krawczyk_solve(const matrix_t<I>& A, const vector_t<I>& b, bool try_
   const matrix_t<I> RI = R.unaryExpr([](const P& p) { return detail::thin<I>(p); });
   const vector_t<I> xI = xt.unaryExpr([](const P& p) { return detail::thin<I>(p); });
   const vector_t<I> residual = b - detail::product(A, xI);
-  if constexpr (std::is_same_v<I, interval>)
-    if (try_residual_bound)
-      if (auto e = detail::residual_enclosure(R, A, residual)) return xI + *e;
-  const vector_t<I> z = detail::product(RI, residual);
   matrix_t<I> C;
   if constexpr (std::is_same_v<I, interval>) {
     C = detail::identity_minus_product(R, A);  // midpoint-radius, O(n^3) in double
+    if (try_residual_bound)                    // one pass; C serves the iteration below if it fails
+      if (auto e = detail::residual_enclosure(R, C, residual)) return xI + *e;
   } else {
     C = -detail::product(RI, A);
     for (Eigen::Index i = 0; i < n; ++i) C(i, i) += I(1);
   }
+  const vector_t<I> z = detail::product(RI, residual);
 
   const I inflate = scalar_traits<I>::from_bounds(P(-0.1), P(0.1));  // Rump's epsilon-inflation
   const I tiny = scalar_traits<I>::from_bounds(-std::numeric_limits<double>::min(),
@@ -262,7 +261,6 @@ vector_t<I> verified_solve(const matrix_t<I>& A, const vector_t<I>& b) {
     if (auto x = detail::mpfi_residual_solve(A, b)) return *x;
   return detail::krawczyk_solve(A, b, /*try_residual_bound=*/true);
 }
-
 
 template <Scalar T>
 vector_t<T> solve(const matrix_t<T>& A, const vector_t<T>& b);

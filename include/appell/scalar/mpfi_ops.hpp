@@ -48,6 +48,7 @@ inline bool mpfi_all_finite(mpfi_srcptr a, mpfi_srcptr b) {
 inline bool mpfi_no_nan(mpfi_srcptr a, mpfi_srcptr b) {
   return !mpfr_nan_p(&a->left) && !mpfr_nan_p(&a->right) && !mpfr_nan_p(&b->left) && !mpfr_nan_p(&b->right);
 }
+/// [0, 0] (MPFI's mpfi_is_zero, inline: it sits in the product's hot path).
 inline bool mpfi_is_zero(mpfi_srcptr a) { return mpfr_zero_p(&a->left) && mpfr_zero_p(&a->right); }
 
 /// r = a * b by the endpoint product of its sign case; false (nothing written)
@@ -95,8 +96,8 @@ inline bool mpfi_mul_endpoints(mpfi_ptr r, mpfi_srcptr a, mpfi_srcptr b) {
 namespace boost::multiprecision::backends {
 
 inline void eval_multiply(mpfi_float_backend<0>& r, const mpfi_float_backend<0>& a, const mpfi_float_backend<0>& b) {
-  if ((void*)&a == (void*)&b || !appell::detail::mpfi_mul_endpoints(r.data(), a.data(), b.data()))
-    (void*)&a == (void*)&b ? mpfi_sqr(r.data(), a.data()) : mpfi_mul(r.data(), a.data(), b.data());
+  if ((void*)&a == (void*)&b) mpfi_sqr(r.data(), a.data());
+  else if (!appell::detail::mpfi_mul_endpoints(r.data(), a.data(), b.data())) mpfi_mul(r.data(), a.data(), b.data());
 }
 inline void eval_multiply(mpfi_float_backend<0>& r, const mpfi_float_backend<0>& b) {
   if ((void*)&r == (void*)&b) mpfi_sqr(r.data(), r.data());

@@ -211,7 +211,7 @@ template <Scalar T> bool certainly_less_equal(const T& a, const T& b) { return u
 template <Scalar T> bool possibly_less(const T& a, const T& b) { return lower(a) < upper(b); }
 /// x is exactly 0 (the point 0, or [0, 0]): a structural zero that a computation may skip.
 template <Scalar T> bool exactly_zero(const T& x) {
-  if constexpr (std::is_same_v<T, mpfi>) return mpfi_is_zero(x.backend().data()) > 0;  // no bound copies
+  if constexpr (std::is_same_v<T, mpfi>) return detail::mpfi_is_zero(x.backend().data());  // no bound copies
   else if constexpr (!scalar_traits<T>::is_interval) return x == 0;
   else return lower(x) == 0 && upper(x) == 0;
 }
