@@ -99,15 +99,21 @@ double random_entry() {
                     -20 - std::uniform_int_distribution<int>(0, 20)(rng));
 }
 
+// An n x n matrix of random_entry() values, filled row by row.
+Eigen::MatrixXd random_matrix(int n) {
+  Eigen::MatrixXd G(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) G(i, j) = random_entry();
+  return G;
+}
+
 // Random systems with exact (thin) data: the exact rational solution is enclosed.
 template <class I>
 int random_thin_systems(bool spd, int count) {
   int solved = 0;
   for (int c = 0; c < count; ++c) {
     const int n = std::uniform_int_distribution<int>(1, 12)(rng);
-    Eigen::MatrixXd G(n, n);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) G(i, j) = random_entry();
+    const Eigen::MatrixXd G = random_matrix(n);
     Eigen::MatrixXd A = G;
     if (spd) {  // G^T G + n I, rounded: still exactly symmetric, and positive definite
       A = G.transpose() * G;
@@ -164,9 +170,7 @@ BOOST_AUTO_TEST_CASE(thick_systems_enclose_every_vertex_solution) {
   int checked = 0;
   for (int c = 0; c < 60; ++c) {
     const int n = std::uniform_int_distribution<int>(2, 6)(rng);
-    Eigen::MatrixXd A0 = Eigen::MatrixXd::Zero(n, n);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) A0(i, j) = random_entry();
+    Eigen::MatrixXd A0 = random_matrix(n);
     A0 += 4.0 * Eigen::MatrixXd::Identity(n, n);
     const double r = 1e-3;
     matrix_t<interval> AI(n, n);
@@ -281,9 +285,7 @@ BOOST_AUTO_TEST_CASE(singular_systems_are_refused) {
 BOOST_AUTO_TEST_CASE(point_types_agree_with_the_exact_solution_to_their_precision) {
   mp_precision_scope scope(256);
   const int n = 6;
-  Eigen::MatrixXd G(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) G(i, j) = random_entry();
+  const Eigen::MatrixXd G = random_matrix(n);
   Eigen::MatrixXd A = G.transpose() * G + n * Eigen::MatrixXd::Identity(n, n);
   A = (A + A.transpose()) / 2;
   qmatrix Aq(n);
@@ -338,9 +340,7 @@ scaled_run scaled_mpfi_systems(int count, int max_shift, bool thick) {
     const int n = std::uniform_int_distribution<int>(1, 10)(rng);
     const long sa = std::uniform_int_distribution<int>(-max_shift, max_shift)(rng);
     const long sb = std::uniform_int_distribution<int>(-max_shift, max_shift)(rng);
-    Eigen::MatrixXd A(n, n);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) A(i, j) = random_entry();
+    Eigen::MatrixXd A = random_matrix(n);
     A += n * Eigen::MatrixXd::Identity(n, n);
     matrix_t<mpfi> AI(n, n);
     vector_t<mpfi> bI(n);
@@ -446,9 +446,7 @@ BOOST_AUTO_TEST_CASE(interval_residual_bound_is_as_tight_as_krawczyk) {
   for (int c = 0; c < 400; ++c) {
     const int n = std::uniform_int_distribution<int>(1, 12)(rng);
     const double r = c % 2 ? 0.0 : 1e-9;
-    Eigen::MatrixXd A0(n, n);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) A0(i, j) = random_entry();
+    Eigen::MatrixXd A0 = random_matrix(n);
     A0 += n * Eigen::MatrixXd::Identity(n, n);
     matrix_t<interval> AI(n, n);
     vector_t<interval> bI(n);
