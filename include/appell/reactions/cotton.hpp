@@ -52,10 +52,13 @@ struct constrained_motion {
 };
 
 /// Cotton's method in given adapted speeds (adapted_change): u' in the original
-/// speeds, and the reactions Q'_c.
+/// speeds, and the reactions Q'_c.  If adapted_equations is given it receives the
+/// Appell equations of change_speeds(sys, change, n) at (q, (v_a, 0), t), which
+/// the method computes anyway (for checks such as eq. (4) in the adapted speeds).
 template <Scalar T, class Sys, class Constraint>
 constrained_motion<T> cotton_reactions(const Sys& sys, const adapted_change<Constraint>& change,
-                                       const vector_t<T>& q, const vector_t<T>& u, const T& t) {
+                                       const vector_t<T>& q, const vector_t<T>& u, const T& t,
+                                       appell_equations<T>* adapted_equations = nullptr) {
   const int n = sys.speeds(), s = change.con.count(), k = n - s;
   const auto adapted = change_speeds(sys, change, n);
   vector_t<T> v_a(k);
@@ -70,6 +73,7 @@ constrained_motion<T> cotton_reactions(const Sys& sys, const adapted_change<Cons
                                                               dual<T>(t, T(1)));
   vector_t<T> udot(n);
   for (int i = 0; i < n; ++i) udot(i) = ud(i).d;
+  if (adapted_equations) *adapted_equations = c.equations;
   return {udot, c.reactions};
 }
 

@@ -165,7 +165,8 @@ rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const 
   const T t = T(0);
   const rolling_constraint<T> con{a};
   const auto change = adapt_speeds_keeping(con, 6, {3, 4});  // eq. (23): free speeds p, q
-  const constrained_motion<T> m = cotton_reactions(sys, change, q, u, t);
+  appell_equations<T> adapted_eq;  // Cotton's speeds (p, q, u_1, v_1, w, r), for eq. (4) below
+  const constrained_motion<T> m = cotton_reactions(sys, change, q, u, t, &adapted_eq);
   r.speeds_dot = m.accelerations;
   r.reactions = m.reactions;
   r.multipliers = lagrange_multipliers(sys, con, q, u, t).reactions;
@@ -180,15 +181,15 @@ rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const 
   r.tangential_x = m.reactions(0);
   r.tangential_y = m.reactions(1);
   r.pivot_couple = m.reactions(3);
-  // eq. (4) in Cotton's speeds (p, q, u_1, v_1, w, r)
+  // eq. (4) in Cotton's speeds (p, q, u_1, v_1, w, r), with the equations cotton_reactions formed there
   const auto adapted = change_speeds(sys, change, 6);
   vector_t<T> vv = vector_t<T>::Zero(6), vdot = vector_t<T>::Zero(6);
   vv(0) = w(0);
   vv(1) = w(1);
   vdot(0) = m.accelerations(3);
   vdot(1) = m.accelerations(4);
-  const appell_equations<T> eq = gibbs_appell(adapted, q, vv, t);
-  r.virtual_work_residual = virtual_work_residual(adapted, eq, q, vv, t, vdot, vector_t<T>(vector_t<T>::Ones(6)));
+  r.virtual_work_residual =
+      virtual_work_residual(adapted, adapted_eq, q, vv, t, vdot, vector_t<T>(vector_t<T>::Ones(6)));
   return r;
 }
 
