@@ -35,7 +35,7 @@ void random_value(mpfr_ptr v) {
 
 mpfi random_interval(mpfr_prec_t prec) {
   mpfi x;
-  mpfi_set_prec(x.backend().data(), prec);
+  x.backend().set_prec(prec);
   mpfi_ptr p = x.backend().data();
   const int shape = std::uniform_int_distribution<int>(0, 4)(rng);
   random_value(&p->left);

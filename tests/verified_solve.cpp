@@ -355,8 +355,8 @@ scaled_run scaled_mpfi_systems(int count, int max_shift, bool thick) {
     const long extra = static_cast<long>(mp_precision_bits()) + 30;
     for (int i = 0; i < n; ++i) {
       const double bi = random_entry();
+      bI(i).backend().set_prec(bp);
       mpfi_ptr bp_i = bI(i).backend().data();
-      mpfi_set_prec(bp_i, bp);
       mpfr_set_d(&bp_i->left, bi, MPFR_RNDN);
       if (wide_b) {
         mpfr_value t(bp);

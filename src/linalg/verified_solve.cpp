@@ -121,8 +121,8 @@ std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const
   if (!e) return std::nullopt;
   vector_t<mpfi> x(n);
   for (Eigen::Index i = 0; i < n; ++i) {
+    x(i).backend().set_prec(prec);
     mpfi_ptr xi = x(i).backend().data();
-    mpfi_set_prec(xi, prec);
     mpfi_interv_d(t.backend().data(), (*e)(i).lower(), (*e)(i).upper());  // outward (exact at 53 bits and more)
     mpfi_mul_2si(t.backend().data(), t.backend().data(), -k);             // exact
     mpfi_add_fr(xi, t.backend().data(), xt(i).backend().data());          // outward

@@ -1,4 +1,4 @@
-// Tight integer powers of mpfi values (MPFI has sqr but no pown).
+// Tight integer powers of mpfi values (MPFI has sqr but no pown); sin and cos of narrow arguments.
 #include <mpfi.h>
 
 #include "appell/scalar/functions.hpp"
@@ -39,27 +39,6 @@ mpfi pown_mpfi(const mpfi& x, int n) {
 
 }  // namespace appell
 
-namespace boost::multiprecision {
-
-appell_mpfi sqrt(const appell_mpfi& x) {
-  if (mpfr_sgn(&x.backend().data()->right) < 0) throw appell::domain_error("sqrt of an interval below 0");
-  appell_mpfi r, clipped = x;
-  if (mpfr_sgn(&x.backend().data()->left) < 0) mpfr_set_ui(&clipped.backend().data()->left, 0, MPFR_RNDD);
-  mpfi_sqrt(r.backend().data(), clipped.backend().data());
-  return r;
-}
-
-appell_mpfi log(const appell_mpfi& x) {
-  if (mpfr_sgn(&x.backend().data()->right) <= 0)
-    throw appell::domain_error("log of an interval with no positive point");
-  appell_mpfi r, clipped = x;  // log 0 = -inf in MPFI
-  if (mpfr_sgn(&x.backend().data()->left) < 0) mpfr_set_ui(&clipped.backend().data()->left, 0, MPFR_RNDD);
-  mpfi_log(r.backend().data(), clipped.backend().data());
-  return r;
-}
-
-}  // namespace boost::multiprecision
-
 namespace appell {
 
 // sin and cos of a narrow mpfi argument from one mpfr_sin_cos at its midpoint m:
@@ -68,16 +47,18 @@ namespace appell {
 // r^2.  sin m and cos m come correctly rounded to nearest, the direction of each
 // rounding read off the ternary value; every bound below is rounded outward.  Arguments that are not
 // narrow (r > 2^-20) or not finite go to MPFI's endpoint functions.
-void sin_cos_mpfi(const mpfi& x, mpfi& s, mpfi& c) {
-  mpfi_srcptr xp = x.backend().data();
-  mpfi_ptr sp = s.backend().data(), cp = c.backend().data();
+void sin_cos_mpfi(const mpfi& x, mpfi& s, mpfi& c) { sin_cos_mpfi(x.backend(), s.backend(), c.backend()); }
+
+void sin_cos_mpfi(const mp::mpfi_backend& x, mp::mpfi_backend& s, mp::mpfi_backend& c) {
+  mpfi_srcptr xp = x.data();
+  mpfi_ptr sp = s.data(), cp = c.data();
   const mpfr_prec_t pw = std::max(mpfi_get_prec(sp), mpfi_get_prec(cp));
   auto fallback = [&] {
     mpfi_sin(sp, xp);
     mpfi_cos(cp, xp);
   };
   if (sp == xp || cp == xp) {  // s or c is x itself: work on a copy (review: sin_cos(X, X, C) gave cos(sin X))
-    const mpfi copy = x;
+    const mp::mpfi_backend copy = x;
     return sin_cos_mpfi(copy, s, c);
   }
   if (!mpfr_number_p(&xp->left) || !mpfr_number_p(&xp->right)) return fallback();
@@ -136,18 +117,19 @@ void sin_cos_mpfi(const mpfi& x, mpfi& s, mpfi& c) {
 
 }  // namespace appell
 
-namespace boost::multiprecision {
+namespace appell::mp {
 
-appell_mpfi sin(const appell_mpfi& x) {
-  appell_mpfi s, c;
-  appell::sin_cos_mpfi(x, s, c);
-  return s;
+// r = sin x: the cosine goes to a scratch value of r's precision.
+void eval_sin(mpfi_backend& r, const mpfi_backend& x) {
+  mpfi_backend c;
+  c.set_prec(r.prec());
+  appell::sin_cos_mpfi(x, r, c);
 }
 
-appell_mpfi cos(const appell_mpfi& x) {
-  appell_mpfi s, c;
-  appell::sin_cos_mpfi(x, s, c);
-  return c;
+void eval_cos(mpfi_backend& r, const mpfi_backend& x) {
+  mpfi_backend s;
+  s.set_prec(r.prec());
+  appell::sin_cos_mpfi(x, s, r);
 }
 
-}  // namespace boost::multiprecision
+}  // namespace appell::mp

@@ -290,7 +290,7 @@ evaluation<T> compute(const bound_scene<T>& scene) {
     }
     for (auto* group : {&e.results, &e.checks})
       for (auto& r : *group)
-        for (auto& x : r.values) mpfi_round_prec(x.backend().data(), static_cast<mpfr_prec_t>(bits));
+        for (auto& x : r.values) x.backend().round_prec(static_cast<mpfr_prec_t>(bits));
     return e;
   } else {
     return std::visit([](const auto& m) { return detail::compute_model<T>(m); }, scene);

@@ -20,6 +20,7 @@ mpfi pown_mpfi(const mpfi& x, int n);
 /// sin and cos of an mpfi together (src/scalar/mpfi_functions.cpp): for a narrow
 /// argument, one mpfr_sin_cos at its midpoint plus a Taylor bound; otherwise MPFI's.
 void sin_cos_mpfi(const mpfi& x, mpfi& s, mpfi& c);
+void sin_cos_mpfi(const mp::mpfi_backend& x, mp::mpfi_backend& s, mp::mpfi_backend& c);
 
 /// s = sin x, c = cos x: one MPFR call for mpfr and mpfi (a dual number needs both).
 template <class T>

@@ -1,26 +1,24 @@
-// appell/scalar/mpfi_ops.hpp -- + - * of mpfi values as direct endpoint operations.
+// appell/scalar/mpfi_ops.hpp -- + - * of MPFI intervals as direct endpoint operations.
 //
-// Boost.Multiprecision implements a + b, a - b, a * b of mpfi numbers by
-// mpfi_add, mpfi_sub, mpfi_mul.  Each of those computes the two bounds with
-// MPFR under directed rounding, and around that spends time on checks this
-// library does not need on finite data: NaN flags, bound reversal, and for
-// products two extra MPFR products (and a temporary) whenever a bound's sign
-// case is not the simplest.  Measured (bench/appell_bench, `elementary`):
-// a*b + c cost 2.55-2.8x the same in mpfr; with these, about 2.1x.
+// MPFI's mpfi_add, mpfi_sub, mpfi_mul compute the two bounds with MPFR under
+// directed rounding, and around that spend time on checks this library does
+// not need on finite data: NaN flags, bound reversal, and for products two
+// extra MPFR products (and a temporary) whenever a bound's sign case is not the
+// simplest.  Measured (bench/appell_bench, `elementary`): a*b + c cost
+// 2.55-2.8x the same in mpfr; with these, about 2.1x.
 //
-// The overloads below are found by argument-dependent lookup from Boost's
-// operators (non-templates win over Boost's templates).  They compute exactly
-// what MPFI computes -- the same endpoint formulas, each rounded outward, with
-// MPFI's signed-zero convention (a lower bound is never -0, an upper bound
-// never +0) -- and defer to MPFI for every other case: a bound that is zero,
-// infinite or NaN, a product of two intervals that both straddle 0, and
-// aliasing that the endpoint formulas cannot handle.  tests/mpfi_ops.cpp
-// checks bound-for-bound equality with MPFI on random operands of every sign case.
+// The functions below compute exactly what MPFI computes -- the same endpoint
+// formulas, each rounded outward, with MPFI's signed-zero convention (a lower
+// bound is never -0, an upper bound never +0) -- and defer to MPFI for every
+// other case: a NaN bound, a product with an infinite bound or of two
+// intervals that both straddle 0, and aliasing that the endpoint formulas
+// cannot handle.  They serve appell::mp::mpfi_backend (mpfi_backend.hpp) and
+// write a bound only through MPFR's arithmetic (never a swap with another
+// number), as that backend requires.  tests/mpfi_ops.cpp checks bound-for-bound
+// equality with MPFI on random operands of every sign case.
 #pragma once
 
 #include <mpfi.h>
-
-#include <boost/multiprecision/mpfi.hpp>
 
 namespace appell::detail {
 
@@ -82,7 +80,7 @@ inline bool mpfi_mul_endpoints(mpfi_ptr r, mpfi_srcptr a, mpfi_srcptr b) {
     mpfr_ptr t = mpfi_scratch(mpfr_get_prec(&r->left));
     mpfr_mul(t, l1, l2, MPFR_RNDD);
     mpfr_mul(&r->right, u1, u2, MPFR_RNDU);  // MPFR allows its output to be an input
-    mpfr_swap(t, &r->left);
+    mpfr_set(&r->left, t, MPFR_RNDD);        // exact: same precision (a copy, not a swap: see above)
   } else {
     mpfr_mul(&r->left, l1, l2, MPFR_RNDD);
     mpfr_mul(&r->right, u1, u2, MPFR_RNDU);
@@ -91,39 +89,28 @@ inline bool mpfi_mul_endpoints(mpfi_ptr r, mpfi_srcptr a, mpfi_srcptr b) {
   return true;
 }
 
+/// r = a + b.  Lower bounds only from lower bounds, upper from upper: aliasing is
+/// harmless.  Infinite bounds are fine (MPFI never has a lower bound +inf or an
+/// upper bound -inf, so no inf - inf).
+inline void mpfi_add_endpoints(mpfi_ptr r, mpfi_srcptr a, mpfi_srcptr b) {
+  if (!mpfi_no_nan(a, b)) {
+    mpfi_add(r, a, b);
+    return;
+  }
+  mpfr_add(&r->left, &a->left, &b->left, MPFR_RNDD);
+  mpfr_add(&r->right, &a->right, &b->right, MPFR_RNDU);
+  mpfi_fix_zero_signs(r);
+}
+
+/// r = a - b.
+inline void mpfi_sub_endpoints(mpfi_ptr r, mpfi_srcptr a, mpfi_srcptr b) {
+  if (r == b || !mpfi_no_nan(a, b)) {
+    mpfi_sub(r, a, b);  // r aliasing b: b's lower bound is read after r's is written
+    return;
+  }
+  mpfr_sub(&r->left, &a->left, &b->right, MPFR_RNDD);
+  mpfr_sub(&r->right, &a->right, &b->left, MPFR_RNDU);
+  mpfi_fix_zero_signs(r);
+}
+
 }  // namespace appell::detail
-
-namespace boost::multiprecision::backends {
-
-inline void eval_multiply(mpfi_float_backend<0>& r, const mpfi_float_backend<0>& a, const mpfi_float_backend<0>& b) {
-  if ((void*)&a == (void*)&b) mpfi_sqr(r.data(), a.data());
-  else if (!appell::detail::mpfi_mul_endpoints(r.data(), a.data(), b.data())) mpfi_mul(r.data(), a.data(), b.data());
-}
-inline void eval_multiply(mpfi_float_backend<0>& r, const mpfi_float_backend<0>& b) {
-  if ((void*)&r == (void*)&b) mpfi_sqr(r.data(), r.data());
-  else if (!appell::detail::mpfi_mul_endpoints(r.data(), r.data(), b.data())) mpfi_mul(r.data(), r.data(), b.data());
-}
-inline void eval_add(mpfi_float_backend<0>& r, const mpfi_float_backend<0>& a, const mpfi_float_backend<0>& b) {
-  if (!appell::detail::mpfi_no_nan(a.data(), b.data())) {
-    mpfi_add(r.data(), a.data(), b.data());
-    return;
-  }
-  // Lower bounds only from lower bounds, upper from upper: aliasing is harmless.  Infinite
-  // bounds are fine (MPFI never has a lower bound +inf or an upper bound -inf, so no inf - inf).
-  mpfr_add(&r.data()->left, &a.data()->left, &b.data()->left, MPFR_RNDD);
-  mpfr_add(&r.data()->right, &a.data()->right, &b.data()->right, MPFR_RNDU);
-  appell::detail::mpfi_fix_zero_signs(r.data());
-}
-inline void eval_add(mpfi_float_backend<0>& r, const mpfi_float_backend<0>& b) { eval_add(r, r, b); }
-inline void eval_subtract(mpfi_float_backend<0>& r, const mpfi_float_backend<0>& a, const mpfi_float_backend<0>& b) {
-  if ((void*)&r == (void*)&b || !appell::detail::mpfi_no_nan(a.data(), b.data())) {
-    mpfi_sub(r.data(), a.data(), b.data());  // r aliasing b: b's lower bound is read after r's is written
-    return;
-  }
-  mpfr_sub(&r.data()->left, &a.data()->left, &b.data()->right, MPFR_RNDD);
-  mpfr_sub(&r.data()->right, &a.data()->right, &b.data()->left, MPFR_RNDU);
-  appell::detail::mpfi_fix_zero_signs(r.data());
-}
-inline void eval_subtract(mpfi_float_backend<0>& r, const mpfi_float_backend<0>& b) { eval_subtract(r, r, b); }
-
-}  // namespace boost::multiprecision::backends

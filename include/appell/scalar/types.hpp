@@ -11,24 +11,23 @@
 //
 // The Boost.Multiprecision types are used without expression templates
 // (et_off): Eigen's own expression templates do not compose with Boost's.
+// appell::mpfi is MPFI under appell's own backend (mpfi_backend.hpp: both
+// bounds in one allocation), not Boost's mpfi_float_backend.
 #pragma once
 
 #include <boost/multiprecision/float128.hpp>
 #include <boost/multiprecision/mpfr.hpp>
-#include <boost/multiprecision/mpfi.hpp>
 #include <qd/dd_real.h>
 
 #include "appell/scalar/interval.hpp"
-#include "appell/scalar/mpfi_domain.hpp"
-#include "appell/scalar/mpfi_ops.hpp"
+#include "appell/scalar/mpfi_backend.hpp"
 
 namespace appell {
 
 using float128 = boost::multiprecision::float128;
 using mpfr = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>,
                                            boost::multiprecision::et_off>;
-using mpfi = boost::multiprecision::number<boost::multiprecision::mpfi_float_backend<0>,
-                                           boost::multiprecision::et_off>;
+using mpfi = boost::multiprecision::number<mp::mpfi_backend, boost::multiprecision::et_off>;
 using dd = ::dd_real;
 
 /// Sets the working precision of `mpfr` and `mpfi` (for values created after the
