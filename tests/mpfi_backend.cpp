@@ -1,0 +1,262 @@
+// appell::mpfi's backend (include/appell/scalar/mpfi_backend.hpp: both bounds in
+// one allocation) against Boost's own mpfi_float_backend<0>, which it replaced:
+//  * a differential run: 300,000 random steps on 48 pairs of values -- copies,
+//    moves (and assignment to the moved-from value), swaps, precision changes of
+//    the default and of values, mixed-precision + - * / (also in place and
+//    aliased), sqrt, exp, atan, abs, negation, built-in numbers -- after each of
+//    which the two agree bound for bound, sign of zero and precision included;
+//  * the cases where appell differs on purpose: sqrt and log restricted to
+//    their domain, round_prec/set_prec, and self-assignment (x = x keeps x;
+//    Boost's backend makes it NaN);
+//  * the rest of the backend's surface: str, conversions, pow, floor/ceil, frexp.
+// Run under valgrind, the differential run also checks the block ownership.
+#define BOOST_TEST_MODULE mpfi_backend
+#include <boost/test/unit_test.hpp>
+
+#include <boost/multiprecision/mpfi.hpp>
+#include <cmath>
+#include <random>
+
+#include "appell/scalar/functions.hpp"
+
+using namespace appell;
+using boost_mpfi = boost::multiprecision::number<boost::multiprecision::mpfi_float_backend<0>, boost::multiprecision::et_off>;
+
+namespace {
+
+std::mt19937_64 rng(20261121);
+int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
+
+// Bound for bound (NaN matches NaN; zeros must agree in sign), and precision.
+bool same(mpfr_srcptr a, mpfr_srcptr b) {
+  if (mpfr_get_prec(a) != mpfr_get_prec(b)) return false;
+  if (mpfr_nan_p(a) || mpfr_nan_p(b)) return mpfr_nan_p(a) && mpfr_nan_p(b);
+  return mpfr_equal_p(a, b) && mpfr_signbit(a) == mpfr_signbit(b);
+}
+bool same(const mpfi& x, const boost_mpfi& y) {
+  return same(&x.backend().data()->left, &y.backend().data()->left) &&
+         same(&x.backend().data()->right, &y.backend().data()->right);
+}
+std::string show(mpfi_srcptr p) {
+  char buf[200];
+  mpfr_snprintf(buf, sizeof buf, "[%.20Rg, %.20Rg] (%ld bits)", &p->left, &p->right, (long)mpfi_get_prec(p));
+  return buf;
+}
+
+double random_double() {
+  const int kind = uniform(0, 15);
+  if (kind == 0) return 0.0;
+  if (kind == 1) return -0.0;
+  if (kind == 2) return uniform(-5, 5);
+  return std::ldexp(std::uniform_real_distribution<double>(-1, 1)(rng), uniform(-40, 40));
+}
+
+const unsigned digits10_choices[] = {1, 5, 15, 16, 19, 20, 33, 34, 38, 39, 77, 78, 300};
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(differential_run_against_boosts_mpfi_backend) {
+  constexpr int slots = 48;
+  const unsigned saved = mpfi::default_precision();
+  std::vector<mpfi> a(slots);
+  std::vector<boost_mpfi> b(slots);
+  long checked = 0;
+  for (int step = 0; step < 300000; ++step) {
+    const int i = uniform(0, slots - 1), j = uniform(0, slots - 1), k = uniform(0, slots - 1);
+    const int op = uniform(0, 21);
+    std::string what;
+    switch (op) {
+      case 0: {  // the default precision of new values
+        const unsigned d = digits10_choices[uniform(0, std::size(digits10_choices) - 1)];
+        mpfi::default_precision(d);
+        boost_mpfi::default_precision(d);
+        what = "default precision";
+        break;
+      }
+      case 1: {
+        if (i == j) {  // Boost's backend turns x = x into NaN (mpfi_set_prec before mpfi_set); appell keeps x
+          const mpfi before = a[i];
+          a[i] = a[j];
+          BOOST_TEST(same(&a[i].backend().data()->left, &before.backend().data()->left));
+          BOOST_TEST(same(&a[i].backend().data()->right, &before.backend().data()->right));
+          continue;
+        }
+        a[i] = a[j], b[i] = b[j];
+        what = "copy-assign";
+        break;
+      }
+      case 2: {
+        a[i] = mpfi(a[j]), b[i] = boost_mpfi(b[j]);
+        what = "copy-construct";
+        break;
+      }
+      case 3: {  // move out of j, then assign to the moved-from value
+        if (i == j) continue;
+        a[i] = std::move(a[j]), b[i] = std::move(b[j]);
+        const double d = random_double();
+        if (uniform(0, 1)) a[j] = d, b[j] = d;
+        else a[j] = a[k == j ? i : k], b[j] = b[k == j ? i : k];
+        what = "move";
+        break;
+      }
+      case 4: std::swap(a[i], a[j]), std::swap(b[i], b[j]), what = "swap"; break;
+      case 5: {
+        const double d = random_double();
+        a[i] = d, b[i] = d;
+        what = "double";
+        break;
+      }
+      case 6: {
+        const long v = uniform(-1000, 1000);
+        a[i] = v, b[i] = v;
+        what = "long";
+        break;
+      }
+      case 7: a[i] = a[j] + a[k], b[i] = b[j] + b[k], what = "+"; break;
+      case 8: a[i] = a[j] - a[k], b[i] = b[j] - b[k], what = "-"; break;
+      case 9: a[i] = a[j] * a[k], b[i] = b[j] * b[k], what = "*"; break;
+      case 10: a[i] = a[j] / a[k], b[i] = b[j] / b[k], what = "/"; break;
+      case 11: a[i] += a[j], b[i] += b[j], what = "+="; break;
+      case 12: a[i] -= a[j], b[i] -= b[j], what = "-="; break;
+      case 13: a[i] *= a[j], b[i] *= b[j], what = "*="; break;
+      case 14: a[i] /= a[j], b[i] /= b[j], what = "/="; break;
+      case 15: a[i] = -a[j], b[i] = -b[j], what = "negate"; break;
+      case 16: {  // both give MPFI's sqrt where the argument is in the domain
+        if (mpfr_sgn(&a[j].backend().data()->left) < 0 || mpfi_nan_p(a[j].backend().data())) continue;
+        a[i] = sqrt(a[j]), b[i] = sqrt(b[j]);
+        what = "sqrt";
+        break;
+      }
+      case 17: {
+        if (mpfr_cmp_ui(&a[j].backend().data()->right, 100) > 0) continue;  // keep the values finite
+        a[i] = exp(a[j]), b[i] = exp(b[j]);
+        what = "exp";
+        break;
+      }
+      case 18: a[i] = atan(a[j]), b[i] = atan(b[j]), what = "atan"; break;
+      case 19: a[i] = abs(a[j]), b[i] = abs(b[j]), what = "abs"; break;
+      case 20: {  // a value's own precision, kept value enclosed outward
+        const unsigned d = digits10_choices[uniform(0, std::size(digits10_choices) - 1)];
+        a[i].precision(d), b[i].precision(d);
+        what = "precision(d)";
+        break;
+      }
+      case 21: {  // from a mixed-precision pair, written over an operand
+        a[i] = a[i] * a[j] + a[i], b[i] = b[i] * b[j] + b[i];
+        what = "x*y+x";
+        break;
+      }
+    }
+    ++checked;
+    if (!same(a[i], b[i]))
+      BOOST_FAIL("step " << step << " (" << what << "): appell " << show(a[i].backend().data()) << " vs Boost "
+                         << show(b[i].backend().data()));
+    if (op == 3 && !same(a[j], b[j])) BOOST_FAIL("step " << step << " (assignment after a move) differs");
+  }
+  for (int i = 0; i < slots; ++i) BOOST_TEST(same(a[i], b[i]));
+  mpfi::default_precision(saved);
+  boost_mpfi::default_precision(saved);
+  BOOST_TEST_MESSAGE("differential run: " << checked << " steps, all equal bound for bound");
+}
+
+BOOST_AUTO_TEST_CASE(new_values_are_mpfi_zero_at_the_default_precision) {
+  const mp_precision_scope scope(200);
+  const mpfi z;
+  BOOST_TEST(mpfi_get_prec(z.backend().data()) == static_cast<mpfr_prec_t>(scope.bits()));
+  BOOST_TEST(mpfr_zero_p(&z.backend().data()->left));
+  BOOST_TEST(!mpfr_signbit(&z.backend().data()->left));  // [+0, -0], MPFI's zero
+  BOOST_TEST(mpfr_signbit(&z.backend().data()->right));
+  BOOST_TEST(mpfi_is_zero(z.backend().data()) != 0);
+}
+
+BOOST_AUTO_TEST_CASE(set_prec_and_round_prec) {
+  const mp_precision_scope scope(128);
+  mpfi x = mpfi(1) / 3;
+  x.backend().round_prec(20);
+  BOOST_TEST(mpfi_get_prec(x.backend().data()) == 20);
+  mpfr_value third(400);
+  mpfr_set_ui(third, 1, MPFR_RNDN);
+  mpfr_div_ui(third, third, 3, MPFR_RNDN);
+  BOOST_TEST(contains(x, third.get()));  // outward
+  BOOST_TEST(mpfr_cmp(&x.backend().data()->left, &x.backend().data()->right) < 0);
+  x.backend().round_prec(1000);  // more bits: same bounds
+  BOOST_TEST(mpfi_get_prec(x.backend().data()) == 1000);
+  BOOST_TEST(contains(x, third.get()));
+  x.backend().set_prec(64);
+  BOOST_TEST(mpfi_get_prec(x.backend().data()) == 64);
+  BOOST_TEST(mpfi_nan_p(x.backend().data()) != 0);
+  x = 2;  // assignment of a built-in number keeps the precision
+  BOOST_TEST(mpfi_get_prec(x.backend().data()) == 64);
+  BOOST_TEST(mpfr_cmp_ui(&x.backend().data()->left, 2) == 0);
+}
+
+BOOST_AUTO_TEST_CASE(domain_restricted_functions) {
+  const mp_precision_scope scope(113);
+  const mpfi x = mpfi_from_bounds(mpfr(-1), mpfr(4));
+  const mpfi s = sqrt(x);
+  BOOST_TEST(mpfr_zero_p(&s.backend().data()->left));
+  BOOST_TEST(mpfr_cmp_ui(&s.backend().data()->right, 2) == 0);
+  const mpfi l = log(x);
+  BOOST_TEST(mpfr_inf_p(&l.backend().data()->left));
+  BOOST_TEST(mpfr_sgn(&l.backend().data()->right) > 0);
+  const mpfi neg = mpfi_from_bounds(mpfr(-2), mpfr(-1));
+  const mpfi nonpos = mpfi_from_bounds(mpfr(-2), mpfr(0));
+  BOOST_CHECK_THROW(sqrt(neg), appell::domain_error);
+  BOOST_CHECK_THROW(log(nonpos), appell::domain_error);
+  BOOST_CHECK_THROW(log2(nonpos), appell::domain_error);
+  BOOST_CHECK_THROW(log10(nonpos), appell::domain_error);
+  BOOST_TEST(mpfr_zero_p(&sqrt(nonpos).backend().data()->right));  // sqrt [-2, 0] = [0, 0]
+  const mpfi l2 = log2(mpfi_from_bounds(mpfr(-3), mpfr(8)));
+  BOOST_TEST(mpfr_cmp_ui(&l2.backend().data()->right, 3) == 0);
+}
+
+BOOST_AUTO_TEST_CASE(comparisons_and_signs_decided_or_refused) {
+  const mp_precision_scope scope(113);
+  const mpfi a = mpfi_from_bounds(mpfr(1), mpfr(2)), b = mpfi_from_bounds(mpfr(3), mpfr(4));
+  const mpfi c = mpfi_from_bounds(mpfr(-1), mpfr(1));
+  BOOST_TEST((a < b));
+  BOOST_TEST((b > a));
+  BOOST_TEST((a == a));
+  BOOST_CHECK_THROW((void)(a < mpfi_from_bounds(mpfr(1.5), mpfr(5))), mp::interval_error);
+  BOOST_TEST(a.sign() == 1);
+  BOOST_TEST((-a).sign() == -1);
+  BOOST_TEST(mpfi(0).sign() == 0);
+  BOOST_CHECK_THROW((void)c.sign(), mp::interval_error);
+  BOOST_TEST((a < 3));
+  BOOST_CHECK_THROW((void)(c < 0), mp::interval_error);
+}
+
+BOOST_AUTO_TEST_CASE(text_conversions_pow_floor_frexp) {
+  const mp_precision_scope scope(113);
+  BOOST_TEST(mpfi(3).str() == "3");
+  const std::string s = mpfi_from_bounds(mpfr(1), mpfr(2)).str();
+  BOOST_TEST(s == "{1,2}");
+  const mpfi parsed("0.1");
+  mpfr_value tenth(400);
+  mpfr_set_ui(tenth, 1, MPFR_RNDN);
+  mpfr_div_ui(tenth, tenth, 10, MPFR_RNDN);
+  BOOST_TEST(contains(parsed, tenth.get()));
+  BOOST_CHECK_THROW(mpfi("not a number"), std::runtime_error);
+  BOOST_TEST(static_cast<double>(mpfi_from_bounds(mpfr(1), mpfr(2))) == 1.5);  // the midpoint
+  BOOST_TEST(static_cast<long>(mpfi_from_bounds(mpfr(3), mpfr(5))) == 4);
+
+  const mpfi p = pow(mpfi_from_bounds(mpfr(2), mpfr(3)), mpfi(2));
+  BOOST_TEST(mpfr_cmp_ui(&p.backend().data()->left, 4) <= 0);
+  BOOST_TEST(mpfr_cmp_ui(&p.backend().data()->right, 9) >= 0);
+  const mpfi m = pow(mpfi(-2), mpfi(3));  // integer exponent of a negative base
+  BOOST_TEST(mpfr_cmp_si(&m.backend().data()->left, -8) <= 0);
+  BOOST_TEST(mpfr_cmp_si(&m.backend().data()->right, -8) >= 0);
+  BOOST_TEST(mpfr_cmp_si(&m.backend().data()->right, -7) < 0);
+  BOOST_TEST(mpfi_nan_p(pow(mpfi(-2), mpfi(0.5)).backend().data()) != 0);  // no real value: NaN, never a number
+  BOOST_TEST(mpfr_cmp_ui(&pow(mpfi(0), mpfi(0)).backend().data()->left, 1) == 0);
+
+  const mpfi f = floor(mpfi_from_bounds(mpfr(1.25), mpfr(1.75)));
+  BOOST_TEST(mpfr_cmp_ui(&f.backend().data()->left, 1) == 0);
+  BOOST_TEST(mpfr_cmp_ui(&ceil(mpfi_from_bounds(mpfr(1.25), mpfr(1.75))).backend().data()->right, 2) == 0);
+  BOOST_CHECK_THROW(floor(mpfi_from_bounds(mpfr(0.5), mpfr(1.5))), mp::interval_error);
+  int e = 0;
+  const mpfi fr = frexp(mpfi_from_bounds(mpfr(5), mpfr(6)), &e);
+  BOOST_TEST(e == 3);
+  BOOST_TEST(mpfr_cmp_d(&fr.backend().data()->left, 0.625) == 0);
+  BOOST_TEST(mpfr_cmp_d(&fr.backend().data()->right, 0.75) == 0);
+}
