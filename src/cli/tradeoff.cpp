@@ -3,7 +3,7 @@
 // For each scalar (mpfr and mpfi at 64, 113, 256 and 1024 bits), in one run:
 //  * ns_per_eval: the median over N batches of the time of one evaluation of
 //    the scene's dynamics (inputs converted to the scalar once, before timing;
-//    a batch holds enough evaluations to last >= 100 us; warm-up excluded;
+//    a batch holds enough evaluations to last >= 1 ms; warm-up excluded;
 //    the scalars take turns, one batch each per repetition);
 //  * ratio_to_double: that median over double's, from the same run;
 //  * correct_digits: -log10 of the largest relative error over every result
@@ -64,14 +64,16 @@ contestant prepare(const scene_input& scene, const std::vector<mpfr_value>& ref,
       if (bits) s.emplace(bits);
       for (long i = 0; i < n; ++i) (void)compute<T>(*bound);
     };
-    // batch size: enough evaluations for >= 100 us
+    // batch size: enough evaluations for >= 1 ms (shorter batches, run right after a
+    // heavy scalar's, paid for cold caches: interval/double read 3.9-4.0 at 100 us
+    // against 3.3-3.5 in appell_bench's long runs)
     using clock = std::chrono::steady_clock;
     long batch = 1;
     for (;;) {
       const auto t0 = clock::now();
       run(batch);
       const double us = std::chrono::duration<double, std::micro>(clock::now() - t0).count();
-      if (us >= 100 || batch >= (1 << 20)) break;
+      if (us >= 1000 || batch >= (1 << 20)) break;
       batch *= 2;
     }
     run(3 * batch);  // warm-up
