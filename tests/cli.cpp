@@ -196,3 +196,17 @@ BOOST_AUTO_TEST_CASE(inconsistent_or_impossible_spheres_exit_2) {
                    "surface.side");
   expect_bad_input("eval " + scene_file("torus", sphere_scene(ball, "\"type\": \"torus\"", on, spin)), "surface.type");
 }
+
+// tradeoff and extremes share eval's exit statuses: a scene that cannot be
+// read or parsed is bad input (2, one line naming the problem), as for eval.
+BOOST_AUTO_TEST_CASE(tradeoff_reports_bad_scenes_as_eval_does) {
+  expect_bad_input("tradeoff " + (work / "no_such_scene.json").string() + " --out " + (work / "t").string(),
+                   "no_such_scene");
+  const std::string broken = scene_file("broken_tradeoff", "{\"model\": \"euler_body\", \"inertia\": [1, 2");
+  const outcome e = run("eval " + broken);
+  const outcome t = run("tradeoff " + broken + " --out " + (work / "t").string());
+  BOOST_TEST(e.status == 2);
+  BOOST_TEST(t.status == e.status, "tradeoff exit " << t.status << ", eval exit " << e.status);
+  BOOST_TEST(t.err == e.err, "tradeoff: " << t.err << "eval: " << e.err);
+  expect_bad_input("tradeoff " + good_scene + " --reps x", "--reps");
+}

@@ -40,6 +40,30 @@ std::string run(const appell::scene_input& scene, const std::string& format) {
   return format == "json" ? appell::format_json<T>(scene, e) : appell::format_text<T>(scene, e);
 }
 
+// One mapping from exceptions to exit statuses for every command (SCENES.md):
+// 2 bad input (one line naming the field), 3 no certificate, 4 internal error.
+// Call from a catch block only.
+int exit_status_of_current_exception() {
+  try {
+    throw;
+  } catch (const appell::input_error& e) {
+    std::cerr << "appell: " << e.what() << "\n";
+    return 2;
+  } catch (const appell::parse_error& e) {
+    std::cerr << "appell: " << e.what() << "\n";
+    return 2;
+  } catch (const appell::certification_error& e) {
+    std::cerr << "appell: cannot certify: " << e.what() << "\n";
+    return 3;
+  } catch (const appell::domain_error& e) {
+    std::cerr << "appell: cannot certify: " << e.what() << "\n";
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "appell: internal error: " << e.what() << "\n";
+    return 4;
+  }
+}
+
 std::string dispatch(const appell::scene_input& scene, const options& o) {
   using namespace appell;
   if (o.scalar == "double") return run<double>(scene, o.format);
@@ -68,7 +92,11 @@ int main(int argc, char** argv) {
       if (a == "--out" && i + 1 < argc) x.out_dir = argv[++i];
       else return usage("extremes: unknown argument '" + a + "'");
     }
-    return appell::cli::extremes(x);
+    try {
+      return appell::cli::extremes(x);
+    } catch (...) {
+      return exit_status_of_current_exception();
+    }
   }
   if (command == "tradeoff") {
     appell::cli::tradeoff_options t;
@@ -90,12 +118,8 @@ int main(int argc, char** argv) {
     if (t.scene.empty()) return usage("no scene given");
     try {
       return appell::cli::tradeoff(t);
-    } catch (const appell::input_error& e) {
-      std::cerr << "appell: " << e.what() << "\n";
-      return 2;
-    } catch (const std::exception& e) {
-      std::cerr << "appell: " << e.what() << "\n";
-      return 3;
+    } catch (...) {
+      return exit_status_of_current_exception();
     }
   }
   if (command != "eval") return usage("unknown command '" + command + "'");
@@ -118,9 +142,8 @@ int main(int argc, char** argv) {
       } else if (!a.empty() && a[0] == '-') return usage("unknown option '" + a + "'");
       else if (o.scene.empty()) o.scene = a;
       else return usage("more than one scene given");
-    } catch (const appell::input_error& e) {
-      std::cerr << "appell: " << e.what() << "\n";
-      return 2;
+    } catch (...) {
+      return exit_status_of_current_exception();
     }
   }
   if (o.scene.empty()) return usage("no scene given");
@@ -136,20 +159,7 @@ int main(int argc, char** argv) {
     std::cout << out;
     std::cout.flush();
     return std::cout ? 0 : 1;
-  } catch (const appell::input_error& e) {
-    std::cerr << "appell: " << e.what() << "\n";
-    return 2;
-  } catch (const appell::parse_error& e) {
-    std::cerr << "appell: " << e.what() << "\n";
-    return 2;
-  } catch (const appell::certification_error& e) {
-    std::cerr << "appell: cannot certify: " << e.what() << "\n";
-    return 3;
-  } catch (const appell::domain_error& e) {
-    std::cerr << "appell: cannot certify: " << e.what() << "\n";
-    return 3;
-  } catch (const std::exception& e) {
-    std::cerr << "appell: internal error: " << e.what() << "\n";
-    return 4;
+  } catch (...) {
+    return exit_status_of_current_exception();
   }
 }
