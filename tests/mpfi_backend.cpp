@@ -3,13 +3,20 @@
 //  * a differential run: 300,000 random steps on 48 pairs of values -- copies,
 //    moves (and assignment to the moved-from value), swaps, precision changes of
 //    the default and of values, mixed-precision + - * / (also in place and
-//    aliased), sqrt, exp, atan, abs, negation, built-in numbers -- after each of
-//    which the two agree bound for bound, sign of zero and precision included;
+//    aliased), products and quotients by unsigned integers, sqrt, exp, atan,
+//    abs, negation, built-in numbers (long, long long, unsigned long long,
+//    double, long double; magnitudes up to 2^+-1000) -- after each of which the
+//    two agree bound for bound, sign of zero and precision included.  Where both
+//    sides call the same MPFI function (/, exp, atan, ...) this checks the
+//    backend's plumbing (precisions, aliasing, ownership), not MPFI; + - * are
+//    appell's own endpoint operations (mpfi_ops.hpp);
 //  * the cases where appell differs on purpose: sqrt and log restricted to
-//    their domain, round_prec/set_prec, and self-assignment (x = x keeps x;
-//    Boost's backend makes it NaN);
-//  * the rest of the backend's surface: str, conversions, pow, floor/ceil, frexp.
-// Run under valgrind, the differential run also checks the block ownership.
+//    their domain, round_prec/set_prec, self-assignment (x = x keeps x; Boost's
+//    backend makes it NaN), moved-from values that stay usable;
+//  * the rest of the backend's surface: str and its round trip, conversions,
+//    pow (zero bases, aliasing), floor/ceil, frexp.
+// CTest runs this suite a second time under valgrind (mpfi_backend_memcheck)
+// when valgrind is installed: invalid accesses and leaks fail it.
 #define BOOST_TEST_MODULE mpfi_backend
 #include <boost/test/unit_test.hpp>
 
@@ -48,10 +55,17 @@ double random_double() {
   if (kind == 0) return 0.0;
   if (kind == 1) return -0.0;
   if (kind == 2) return uniform(-5, 5);
+  if (kind == 3) return std::ldexp(std::uniform_real_distribution<double>(-1, 1)(rng), uniform(-1000, 1000));
   return std::ldexp(std::uniform_real_distribution<double>(-1, 1)(rng), uniform(-40, 40));
 }
 
 const unsigned digits10_choices[] = {1, 5, 15, 16, 19, 20, 33, 34, 38, 39, 77, 78, 300};
+
+// x within y (bounds compared exactly)
+bool subset_of(const mpfi& x, const mpfi& y) {
+  return mpfr_lessequal_p(&y.backend().data()->left, &x.backend().data()->left) &&
+         mpfr_lessequal_p(&x.backend().data()->right, &y.backend().data()->right);
+}
 
 }  // namespace
 
@@ -63,7 +77,7 @@ BOOST_AUTO_TEST_CASE(differential_run_against_boosts_mpfi_backend) {
   long checked = 0;
   for (int step = 0; step < 300000; ++step) {
     const int i = uniform(0, slots - 1), j = uniform(0, slots - 1), k = uniform(0, slots - 1);
-    const int op = uniform(0, 21);
+    const int op = uniform(0, 25);
     std::string what;
     switch (op) {
       case 0: {  // the default precision of new values
@@ -146,6 +160,34 @@ BOOST_AUTO_TEST_CASE(differential_run_against_boosts_mpfi_backend) {
         what = "x*y+x";
         break;
       }
+      case 22: {  // 64-bit integers: exact at 64 bits and more, rounded outward below
+        const long long v = static_cast<long long>(rng() >> uniform(1, 63)) * (uniform(0, 1) ? 1 : -1);
+        const unsigned long long u = rng() >> uniform(0, 63);
+        if (v == 0 || u == 0) continue;  // zero: see zero_has_mpfis_signs
+        if (uniform(0, 1)) a[i] = v, b[i] = v;
+        else a[i] = u, b[i] = u;
+        what = "long long";
+        break;
+      }
+      case 23: {
+        const long double d = static_cast<long double>(random_double()) / 3;  // 64-bit significand
+        if (d == 0) continue;  // zero: see zero_has_mpfis_signs
+        a[i] = d, b[i] = d;
+        what = "long double";
+        break;
+      }
+      case 24: {
+        const unsigned u = static_cast<unsigned>(uniform(1, 1000));
+        a[i] = a[j] * u, b[i] = b[j] * u;
+        what = "* unsigned";
+        break;
+      }
+      case 25: {
+        const unsigned u = static_cast<unsigned>(uniform(1, 1000));
+        a[i] = a[j] / u, b[i] = b[j] / u;
+        what = "/ unsigned";
+        break;
+      }
     }
     ++checked;
     if (!same(a[i], b[i]))
@@ -169,6 +211,19 @@ BOOST_AUTO_TEST_CASE(new_values_are_mpfi_zero_at_the_default_precision) {
   BOOST_TEST(mpfi_is_zero(z.backend().data()) != 0);
 }
 
+// Every way of making a zero gives MPFI's [+0, -0] (Boost's backend gives [+0, +0]
+// for a long long or long double 0, which the differential run therefore skips).
+BOOST_AUTO_TEST_CASE(zero_has_mpfis_signs) {
+  const mp_precision_scope scope(100);
+  mpfi z[6];
+  z[0] = 0L, z[1] = 0UL, z[2] = 0LL, z[3] = 0ULL, z[4] = 0.0L, z[5] = -0.0;
+  for (const mpfi& x : z) {
+    BOOST_TEST(mpfi_is_zero(x.backend().data()) != 0);
+    BOOST_TEST(!mpfr_signbit(&x.backend().data()->left));
+    BOOST_TEST(mpfr_signbit(&x.backend().data()->right));
+  }
+}
+
 BOOST_AUTO_TEST_CASE(set_prec_and_round_prec) {
   const mp_precision_scope scope(128);
   mpfi x = mpfi(1) / 3;
@@ -179,9 +234,11 @@ BOOST_AUTO_TEST_CASE(set_prec_and_round_prec) {
   mpfr_div_ui(third, third, 3, MPFR_RNDN);
   BOOST_TEST(contains(x, third.get()));  // outward
   BOOST_TEST(mpfr_cmp(&x.backend().data()->left, &x.backend().data()->right) < 0);
-  x.backend().round_prec(1000);  // more bits: same bounds
+  const mpfi before = x;
+  x.backend().round_prec(1000);  // more bits: the same bounds
   BOOST_TEST(mpfi_get_prec(x.backend().data()) == 1000);
-  BOOST_TEST(contains(x, third.get()));
+  BOOST_TEST(mpfr_equal_p(&x.backend().data()->left, &before.backend().data()->left));
+  BOOST_TEST(mpfr_equal_p(&x.backend().data()->right, &before.backend().data()->right));
   x.backend().set_prec(64);
   BOOST_TEST(mpfi_get_prec(x.backend().data()) == 64);
   BOOST_TEST(mpfi_nan_p(x.backend().data()) != 0);
@@ -197,7 +254,7 @@ BOOST_AUTO_TEST_CASE(domain_restricted_functions) {
   BOOST_TEST(mpfr_zero_p(&s.backend().data()->left));
   BOOST_TEST(mpfr_cmp_ui(&s.backend().data()->right, 2) == 0);
   const mpfi l = log(x);
-  BOOST_TEST(mpfr_inf_p(&l.backend().data()->left));
+  BOOST_TEST((mpfr_inf_p(&l.backend().data()->left) && mpfr_sgn(&l.backend().data()->left) < 0));  // -inf
   BOOST_TEST(mpfr_sgn(&l.backend().data()->right) > 0);
   const mpfi neg = mpfi_from_bounds(mpfr(-2), mpfr(-1));
   const mpfi nonpos = mpfi_from_bounds(mpfr(-2), mpfr(0));
@@ -240,6 +297,11 @@ BOOST_AUTO_TEST_CASE(text_conversions_pow_floor_frexp) {
   BOOST_TEST(static_cast<double>(mpfi_from_bounds(mpfr(1), mpfr(2))) == 1.5);  // the midpoint
   BOOST_TEST(static_cast<long>(mpfi_from_bounds(mpfr(3), mpfr(5))) == 4);
 
+  BOOST_TEST(static_cast<mpfr>(mpfi_from_bounds(mpfr(1), mpfr(2))) == mpfr(1.5));  // to mpfr: the midpoint
+  const mpfi two_args(mpfr(-1), mpfr(0.5));  // number(lower, upper)
+  BOOST_TEST((mpfr_cmp_si(&two_args.backend().data()->left, -1) == 0 && mpfr_cmp_d(&two_args.backend().data()->right, 0.5) == 0));
+  BOOST_CHECK_THROW(mpfi(mpfr(2), mpfr(1)), std::runtime_error);
+
   const mpfi p = pow(mpfi_from_bounds(mpfr(2), mpfr(3)), mpfi(2));
   BOOST_TEST(mpfr_cmp_ui(&p.backend().data()->left, 4) <= 0);
   BOOST_TEST(mpfr_cmp_ui(&p.backend().data()->right, 9) >= 0);
@@ -259,4 +321,75 @@ BOOST_AUTO_TEST_CASE(text_conversions_pow_floor_frexp) {
   BOOST_TEST(e == 3);
   BOOST_TEST(mpfr_cmp_d(&fr.backend().data()->left, 0.625) == 0);
   BOOST_TEST(mpfr_cmp_d(&fr.backend().data()->right, 0.75) == 0);
+}
+
+BOOST_AUTO_TEST_CASE(text_round_trips_and_encloses) {
+  const mp_precision_scope scope(113);
+  for (int k = 0; k < 2000; ++k) {
+    mpfr lo = std::ldexp(std::uniform_real_distribution<double>(-1, 1)(rng), uniform(-300, 300));
+    lo /= 3;  // all 113 bits
+    const mpfr hi = lo + abs(lo) * std::ldexp(1.0, -uniform(20, 100));
+    const mpfi x = mpfi_from_bounds(lo, hi);
+    const mpfi y(x.str(0));  // "{a,b}" at full precision
+    BOOST_TEST_REQUIRE(subset_of(x, y), x.str(0) << " read back as " << y.str(0));
+    BOOST_TEST(mpfi_from_bounds(lo, lo).str(0).front() != '{');
+  }
+  BOOST_CHECK_THROW(mpfi("{2,1}"), std::runtime_error);
+  BOOST_CHECK_THROW(mpfi("[1,"), std::runtime_error);
+}
+
+// A moved-from value is valid (a new [+0, -0] on first use) and never touches
+// the block it gave away, whichever of the two is used or destroyed first.
+BOOST_AUTO_TEST_CASE(moved_from_values_stay_valid) {
+  const mp_precision_scope scope(128);
+  mpfi a = mpfi(1) / 3, c = 2;
+  const mpfi third = a;
+  mpfi b(std::move(a));
+  a += c;  // reads as 0 + 2
+  BOOST_TEST(mpfr_cmp_ui(&a.backend().data()->left, 2) == 0);
+  BOOST_TEST(mpfr_cmp_ui(&a.backend().data()->right, 2) == 0);
+  BOOST_TEST(mpfr_equal_p(&b.backend().data()->left, &third.backend().data()->left));  // b untouched
+  BOOST_TEST(mpfr_equal_p(&b.backend().data()->right, &third.backend().data()->right));
+  {
+    mpfi owner(std::move(b));  // b moved from; owner destroyed at the end of this scope
+  }
+  const mpfi copy(b);  // copy of a moved-from value: [+0, -0]
+  BOOST_TEST(mpfi_is_zero(copy.backend().data()) != 0);
+  mpfi d = third;
+  mpfi e(std::move(d));
+  d.backend().round_prec(64);
+  BOOST_TEST(mpfi_get_prec(d.backend().data()) == 64);
+  mpfi f = third;
+  mpfi g(std::move(f));
+  BOOST_TEST(-f == mpfi(0));
+  BOOST_TEST(f.str() == "0");
+  mpfi h = third;
+  mpfi k(std::move(h));
+  h = third;  // assignment to a moved-from value
+  BOOST_TEST(mpfr_equal_p(&h.backend().data()->left, &third.backend().data()->left));
+}
+
+BOOST_AUTO_TEST_CASE(pow_of_zero_bases_and_aliased_operands) {
+  const mp_precision_scope scope(113);
+  const mpfi zero(0);
+  const mpfi p01 = pow(zero, mpfi_from_bounds(mpfr(0), mpfr(1)));  // 0^0 = 1 and 0^e = 0 for e > 0
+  BOOST_TEST(mpfr_zero_p(&p01.backend().data()->left));
+  BOOST_TEST(mpfr_cmp_ui(&p01.backend().data()->right, 1) == 0);
+  BOOST_TEST(mpfi_is_zero(pow(zero, mpfi(2)).backend().data()) != 0);
+  BOOST_TEST(mpfi_nan_p(pow(zero, mpfi(-1)).backend().data()) != 0);  // no real value
+  const mpfi q = pow(mpfi_from_bounds(mpfr(0), mpfr(4)), mpfi(2));    // base touching 0, e > 0
+  BOOST_TEST(mpfr_zero_p(&q.backend().data()->left));
+  BOOST_TEST(mpfr_cmp_ui(&q.backend().data()->right, 16) >= 0);
+  BOOST_TEST(mpfr_cmp_ui(&q.backend().data()->right, 17) < 0);
+  BOOST_TEST(mpfi_nan_p(pow(mpfi_from_bounds(mpfr(-1), mpfr(4)), mpfi(0.5)).backend().data()) != 0);
+  // r aliasing the exponent, then the base: the same as into a fresh value
+  mpfi e = 3, b = mpfi_from_bounds(mpfr(1.5), mpfr(2));
+  const mpfi fresh = pow(b, e);
+  eval_pow(e.backend(), b.backend(), e.backend());
+  BOOST_TEST(mpfr_equal_p(&e.backend().data()->left, &fresh.backend().data()->left));
+  BOOST_TEST(mpfr_equal_p(&e.backend().data()->right, &fresh.backend().data()->right));
+  mpfi n = -2;
+  eval_pow(n.backend(), n.backend(), mpfi(3).backend());
+  BOOST_TEST(contains(n, mpfr(-8).backend().data()));
+  BOOST_TEST(mpfr_sgn(&n.backend().data()->right) < 0);
 }

@@ -45,25 +45,35 @@ void mpfi_backend::ownership_violation() noexcept {
 
 mpfi_backend& mpfi_backend::operator=(const char* s) {
   ensure();
-  if (!s || mpfi_set_str(v_, s, 10) != 0)
-    throw std::runtime_error(std::string("not a number or interval: \"") + (s ? s : "") + "\"");
+  std::string text = s ? s : "";
+  if (!text.empty() && text.front() == '{' && text.back() == '}') {  // str()'s "{a,b}" is MPFI's "[a,b]"
+    text.front() = '[';
+    text.back() = ']';
+  }
+  mpfi_backend t;  // parsed apart: a failed parse leaves *this as it was
+  t.set_prec(prec());
+  if (text.empty() || mpfi_set_str(t.v_, text.c_str(), 10) != 0 || mpfr_cmp(&t.v_->left, &t.v_->right) > 0)
+    throw std::runtime_error("not a number or interval: \"" + text + "\"");
+  swap(t);
   return *this;
 }
 
 std::string mpfi_backend::str(std::streamsize digits, std::ios_base::fmtflags f) const {
+  const mpfi_srcptr x = data();
   mpfr_b a, b;
   mpfr_set_prec(a.data(), prec());
   mpfr_set_prec(b.data(), prec());
-  mpfr_set(a.data(), &v_->left, MPFR_RNDN);  // exact
-  mpfr_set(b.data(), &v_->right, MPFR_RNDN);
+  mpfr_set(a.data(), &x->left, MPFR_RNDN);  // exact
+  mpfr_set(b.data(), &x->right, MPFR_RNDN);
   if (mpfr_equal_p(a.data(), b.data())) return a.str(digits, f);
   return "{" + a.str(digits, f) + "," + b.str(digits, f) + "}";
 }
 
 int mpfi_backend::compare(const mpfi_backend& o) const {
-  if (mpfr_cmp(&v_->right, &o.v_->left) < 0) return -1;
-  if (mpfr_cmp(&v_->left, &o.v_->right) > 0) return 1;
-  if (mpfr_equal_p(&v_->left, &o.v_->left) && mpfr_equal_p(&v_->right, &o.v_->right)) return 0;
+  const mpfi_srcptr x = data(), y = o.data();
+  if (mpfr_cmp(&x->right, &y->left) < 0) return -1;
+  if (mpfr_cmp(&x->left, &y->right) > 0) return 1;
+  if (mpfr_equal_p(&x->left, &y->left) && mpfr_equal_p(&x->right, &y->right)) return 0;
   throw interval_error("undecided comparison of two intervals");
 }
 
@@ -74,7 +84,7 @@ void mpfi_backend::set_prec(mpfr_prec_t p) {
 }
 
 void mpfi_backend::round_prec(mpfr_prec_t p) {
-  if (block_ && p == prec()) return;
+  if (p == prec()) return;
   mpfi_backend t;
   t.set_prec(p);
   mpfr_set(&t.v_->left, &v_->left, MPFR_RNDD);
@@ -134,52 +144,61 @@ void eval_sinh(mpfi_backend& r, const mpfi_backend& x) { mpfi_sinh(r.data(), x.d
 void eval_cosh(mpfi_backend& r, const mpfi_backend& x) { mpfi_cosh(r.data(), x.data()); }
 void eval_tanh(mpfi_backend& r, const mpfi_backend& x) { mpfi_tanh(r.data(), x.data()); }
 
-void eval_pow(mpfi_backend& r, const mpfi_backend& b, const mpfi_backend& e) {
-  // The cases of Boost's mpfi_float_backend: b = [0, 0] gives 1 (e = [0, 0]) or 0;
-  // b > 0 gives exp(e log b); b < 0 needs an integer e; anything else is NaN.
-  if (detail::mpfi_is_zero(b.data())) {
-    r = detail::mpfi_is_zero(e.data()) ? 1ul : 0ul;
+// b^e into r, which aliases neither.  exp(e log b) where b >= 0 makes sense of it
+// (MPFI: log 0 = -inf, exp(-inf) = 0), an integer e for b < 0; NaN bounds where
+// no real power is defined on all of b and e (never a box that could miss).
+static void pow_into(mpfi_backend& r, const mpfi_backend& b, const mpfi_backend& e) {
+  mpfi_srcptr bp = b.data(), ep = e.data();
+  const auto nan = [&] { r.set_prec(r.prec()); };
+  if (mpfi_nan_p(bp) || mpfi_nan_p(ep)) return nan();
+  const bool e_positive = mpfr_sgn(&ep->left) > 0;
+  if (detail::mpfi_is_zero(bp)) {  // 0^e: 1 at e = 0, 0 for e > 0
+    if (detail::mpfi_is_zero(ep)) r = 1ul;
+    else if (e_positive) r = 0ul;
+    else if (mpfr_zero_p(&ep->left)) mpfi_interv_ui(r.data(), 0, 1);  // e in [0, x]: {0, 1}
+    else nan();
     return;
   }
-  if (mpfr_sgn(&b.data()->left) > 0) {
-    mpfi_log(r.data(), b.data());
-    mpfi_mul(r.data(), r.data(), e.data());
+  const bool e_integer = mpfr_equal_p(&ep->left, &ep->right) && mpfr_integer_p(&ep->left);
+  if (mpfr_sgn(&bp->left) > 0 || (mpfr_zero_p(&bp->left) && e_positive)) {
+    mpfi_log(r.data(), bp);
+    mpfi_mul(r.data(), r.data(), ep);
     mpfi_exp(r.data(), r.data());
     return;
   }
-  if (mpfr_sgn(&b.data()->right) < 0 && mpfr_equal_p(&e.data()->left, &e.data()->right) &&
-      mpfr_integer_p(&e.data()->left)) {
+  if (mpfr_sgn(&bp->right) < 0 && e_integer) {  // (-|b|)^n = (-1)^n |b|^n
     mpfi_backend nb = b;
     nb.negate();
-    eval_pow(r, nb, e);  // |b|^e, then the sign of an odd power
+    pow_into(r, nb, e);
     mpfr_b half;
     mpfr_set_prec(half.data(), e.prec());
-    mpfr_div_2ui(half.data(), &e.data()->left, 1, MPFR_RNDN);  // exact
+    mpfr_div_2ui(half.data(), &ep->left, 1, MPFR_RNDN);  // exact
     if (!mpfr_integer_p(half.data())) r.negate();
     return;
   }
-  r.set_prec(r.prec());  // NaN: no real power defined on all of b
+  nan();
 }
 
-void eval_floor(mpfi_backend& r, const mpfi_backend& x) {
+void eval_pow(mpfi_backend& r, const mpfi_backend& b, const mpfi_backend& e) {
+  mpfi_backend t;  // r may be b or e
+  t.set_prec(r.prec());
+  pow_into(t, b, e);
+  r.swap(t);
+}
+
+// floor (rnd = RNDD) or ceil (RNDU) of both bounds, which must agree (as Boost's backend).
+static void integer_part(mpfi_backend& r, const mpfi_backend& x, mpfr_rnd_t rnd, const char* what) {
   mpfr_b a, b;
   mpfr_set_prec(a.data(), x.prec());
   mpfr_set_prec(b.data(), x.prec());
-  mpfr_floor(a.data(), &x.data()->left);
-  mpfr_floor(b.data(), &x.data()->right);
-  if (!mpfr_equal_p(a.data(), b.data())) throw interval_error("floor of an interval that straddles an integer");
+  mpfr_rint(a.data(), &x.data()->left, rnd);  // exact: an integer at x's precision
+  mpfr_rint(b.data(), &x.data()->right, rnd);
+  if (!mpfr_equal_p(a.data(), b.data())) throw interval_error(std::string(what) + " of an interval that straddles an integer");
   mpfi_set_fr(r.data(), a.data());
 }
 
-void eval_ceil(mpfi_backend& r, const mpfi_backend& x) {
-  mpfr_b a, b;
-  mpfr_set_prec(a.data(), x.prec());
-  mpfr_set_prec(b.data(), x.prec());
-  mpfr_ceil(a.data(), &x.data()->left);
-  mpfr_ceil(b.data(), &x.data()->right);
-  if (!mpfr_equal_p(a.data(), b.data())) throw interval_error("ceil of an interval that straddles an integer");
-  mpfi_set_fr(r.data(), a.data());
-}
+void eval_floor(mpfi_backend& r, const mpfi_backend& x) { integer_part(r, x, MPFR_RNDD, "floor"); }
+void eval_ceil(mpfi_backend& r, const mpfi_backend& x) { integer_part(r, x, MPFR_RNDU, "ceil"); }
 
 void eval_ldexp(mpfi_backend& r, const mpfi_backend& x, long e) { mpfi_mul_2si(r.data(), x.data(), e); }
 
@@ -195,5 +214,34 @@ void eval_frexp(mpfi_backend& r, const mpfi_backend& x, int* e) {
   eval_frexp(r, x, &l);
   *e = static_cast<int>(l);
 }
+
+void assign_components(mpfi_backend& r, const mpfr_b& a, const mpfr_b& b) {
+  if (mpfr_nan_p(a.data()) || mpfr_nan_p(b.data()) || mpfr_cmp(a.data(), b.data()) > 0)
+    throw std::runtime_error("an interval needs lower <= upper, and no NaN");
+  mpfi_interv_fr(r.data(), a.data(), b.data());  // outward at r's precision
+}
+
+void generic_interconvert(mpfr_b& to, const mpfi_backend& from,
+                          const boost::mpl::int_<boost::multiprecision::number_kind_floating_point>&,
+                          const boost::mpl::int_<boost::multiprecision::number_kind_floating_point>&) {
+  mpfi_mid(to.data(), from.data());
+}
+
+namespace {
+// f(x) at x's precision, as Boost's number-level functions of its mpfi backend.
+mpfi_number apply(int (*f)(mpfi_ptr, mpfi_srcptr), const mpfi_number& x) {
+  mpfi_number r;
+  r.backend().set_prec(x.backend().prec());
+  f(r.backend().data(), x.backend().data());
+  return r;
+}
+}  // namespace
+
+mpfi_number cbrt(const mpfi_number& x) { return apply(mpfi_cbrt, x); }
+mpfi_number log1p(const mpfi_number& x) { return apply(mpfi_log1p, x); }
+mpfi_number expm1(const mpfi_number& x) { return apply(mpfi_expm1, x); }
+mpfi_number asinh(const mpfi_number& x) { return apply(mpfi_asinh, x); }
+mpfi_number acosh(const mpfi_number& x) { return apply(mpfi_acosh, x); }
+mpfi_number atanh(const mpfi_number& x) { return apply(mpfi_atanh, x); }
 
 }  // namespace appell::mp

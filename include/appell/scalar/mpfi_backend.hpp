@@ -68,15 +68,22 @@ class mpfi_backend {
 
   mpfi_backend() { allocate(default_bits_); }
   mpfi_backend(const mpfi_backend& o) {
-    allocate(o.prec());
-    copy_bounds(o);
+    const mpfi_srcptr src = o.data();
+    allocate(mpfr_get_prec(&src->left));
+    copy_bounds(src);
   }
+  // A moved-from value owns no block; it is still valid: data() gives it a new
+  // one, holding [+0, -0], on first use (so it never reads or writes the block
+  // it gave away).  Its significand pointers are cleared as well, so that a
+  // path that bypassed data() would fault at once instead of aliasing.
   mpfi_backend(mpfi_backend&& o) noexcept : block_(o.block_) {
     v_[0] = o.v_[0];
     o.block_ = nullptr;
+    o.v_->left._mpfr_d = nullptr;
+    o.v_->right._mpfr_d = nullptr;
   }
   /// From an MPFR number (Boost's mpfr backend): enclosed at the default precision.
-  mpfi_backend(const boost::multiprecision::backends::mpfr_float_backend<0>& x) {
+  explicit mpfi_backend(const boost::multiprecision::backends::mpfr_float_backend<0>& x) {
     allocate(default_bits_);
     mpfi_set_fr(v_, x.data());
   }
@@ -84,8 +91,9 @@ class mpfi_backend {
 
   mpfi_backend& operator=(const mpfi_backend& o) {
     if (this != &o) {
-      reshape(o.prec());
-      copy_bounds(o);
+      const mpfi_srcptr src = o.data();
+      reshape(mpfr_get_prec(&src->left));
+      copy_bounds(src);
     }
     return *this;
   }
@@ -93,47 +101,22 @@ class mpfi_backend {
     swap(o);
     return *this;
   }
-  mpfi_backend& operator=(unsigned long i) {
-    ensure();
-    mpfr_set_ui(&v_->left, i, MPFR_RNDD);
-    mpfr_set_ui(&v_->right, i, MPFR_RNDU);
-    detail::mpfi_fix_zero_signs(v_);
-    return *this;
-  }
-  mpfi_backend& operator=(long i) {
-    ensure();
-    mpfr_set_si(&v_->left, i, MPFR_RNDD);
-    mpfr_set_si(&v_->right, i, MPFR_RNDU);
-    detail::mpfi_fix_zero_signs(v_);
-    return *this;
-  }
+  // Built-in numbers: each bound set with its own rounding (exact when the
+  // precision holds the number), the precision kept.
+  mpfi_backend& operator=(unsigned long i) { return set_bounds(i, [](mpfr_ptr b, unsigned long v, mpfr_rnd_t r) { mpfr_set_ui(b, v, r); }); }
+  mpfi_backend& operator=(long i) { return set_bounds(i, [](mpfr_ptr b, long v, mpfr_rnd_t r) { mpfr_set_si(b, v, r); }); }
   mpfi_backend& operator=(unsigned long long i) {
-    ensure();
-    mpfr_set_uj(&v_->left, i, MPFR_RNDD);
-    mpfr_set_uj(&v_->right, i, MPFR_RNDU);
-    detail::mpfi_fix_zero_signs(v_);
-    return *this;
+    return set_bounds(i, [](mpfr_ptr b, unsigned long long v, mpfr_rnd_t r) { mpfr_set_uj(b, v, r); });
   }
-  mpfi_backend& operator=(long long i) {
-    ensure();
-    mpfr_set_sj(&v_->left, i, MPFR_RNDD);
-    mpfr_set_sj(&v_->right, i, MPFR_RNDU);
-    detail::mpfi_fix_zero_signs(v_);
-    return *this;
-  }
-  mpfi_backend& operator=(double d) {
+  mpfi_backend& operator=(long long i) { return set_bounds(i, [](mpfr_ptr b, long long v, mpfr_rnd_t r) { mpfr_set_sj(b, v, r); }); }
+  mpfi_backend& operator=(double d) {  // NaN gives NaN bounds, as MPFI's mpfi_set_d
     ensure();
     mpfi_set_d(v_, d);
     return *this;
   }
-  mpfi_backend& operator=(long double d) {
-    ensure();
-    mpfr_set_ld(&v_->left, d, MPFR_RNDD);
-    mpfr_set_ld(&v_->right, d, MPFR_RNDU);
-    detail::mpfi_fix_zero_signs(v_);
-    return *this;
-  }
-  /// A decimal number or MPFI's "[a, b]", enclosed outward; throws std::runtime_error otherwise.
+  mpfi_backend& operator=(long double d) { return set_bounds(d, [](mpfr_ptr b, long double v, mpfr_rnd_t r) { mpfr_set_ld(b, v, r); }); }
+  /// A decimal number, or an interval "[a, b]" (MPFI) or "{a,b}" (str()), enclosed
+  /// outward; throws std::runtime_error otherwise (also for a > b).
   mpfi_backend& operator=(const char* s);
   mpfi_backend& operator=(const boost::multiprecision::backends::mpfr_float_backend<0>& x) {
     ensure();
@@ -151,7 +134,8 @@ class mpfi_backend {
   }
   /// The value (a point) or "{lower,upper}", as Boost's backend writes it.
   std::string str(std::streamsize digits, std::ios_base::fmtflags f) const;
-  void negate() noexcept {  // [a, b] -> [-b, -a]: exact; the bounds trade places within the block
+  void negate() {  // [a, b] -> [-b, -a]: exact; the bounds trade places within the block
+    ensure();
     mpfr_swap(&v_->left, &v_->right);
     mpfr_neg(&v_->left, &v_->left, MPFR_RNDD);
     mpfr_neg(&v_->right, &v_->right, MPFR_RNDU);
@@ -165,9 +149,15 @@ class mpfi_backend {
     return compare(t);
   }
 
-  mpfi_ptr data() noexcept { return v_; }
-  mpfi_srcptr data() const noexcept { return v_; }
-  mpfr_prec_t prec() const noexcept { return mpfr_get_prec(&v_->left); }
+  mpfi_ptr data() {
+    ensure();
+    return v_;
+  }
+  mpfi_srcptr data() const {
+    ensure();
+    return v_;
+  }
+  mpfr_prec_t prec() const { return mpfr_get_prec(&data()->left); }
 
   /// Boost's precision interface, in decimal digits.
   static unsigned default_precision() noexcept { return default_digits10_; }
@@ -175,7 +165,7 @@ class mpfi_backend {
     default_digits10_ = digits10;
     default_bits_ = static_cast<mpfr_prec_t>(boost::multiprecision::detail::digits10_2_2(digits10));
   }
-  unsigned precision() const noexcept {
+  unsigned precision() const {
     return static_cast<unsigned>(boost::multiprecision::detail::digits2_2_10(static_cast<unsigned long>(prec())));
   }
   void precision(unsigned digits10) {  // keeps the value, enclosed outward
@@ -193,18 +183,24 @@ class mpfi_backend {
   static mp_size_t limbs(mpfr_prec_t p) noexcept {
     return static_cast<mp_size_t>((p + GMP_NUMB_BITS - 1) / GMP_NUMB_BITS);
   }
-  // One block for both significands; the value is [+0, -0] (MPFI's zero).
-  void allocate(mpfr_prec_t p) {
-    const mp_size_t n = limbs(p);
-    block_ = static_cast<mp_limb_t*>(std::malloc(2 * static_cast<std::size_t>(n) * sizeof(mp_limb_t)));
-    if (!block_) throw std::bad_alloc();
-    mpfr_custom_init_set(&v_->left, MPFR_ZERO_KIND, 0, p, block_);
-    mpfr_custom_init_set(&v_->right, -MPFR_ZERO_KIND, 0, p, block_ + n);
+  // One block for both significands.
+  static mp_limb_t* new_block(mpfr_prec_t p) {
+    void* const b = std::malloc(2 * static_cast<std::size_t>(limbs(p)) * sizeof(mp_limb_t));
+    if (!b) throw std::bad_alloc();
+    return static_cast<mp_limb_t*>(b);
   }
+  // Takes block b (of precision p) as this value's; the value is [+0, -0] (MPFI's zero).
+  void adopt(mp_limb_t* b, mpfr_prec_t p) const noexcept {
+    block_ = b;
+    mpfr_custom_init_set(&v_->left, MPFR_ZERO_KIND, 0, p, b);
+    mpfr_custom_init_set(&v_->right, -MPFR_ZERO_KIND, 0, p, b + limbs(p));
+  }
+  void allocate(mpfr_prec_t p) const { adopt(new_block(p), p); }
+  mpfr_prec_t raw_prec() const noexcept { return mpfr_get_prec(&v_->left); }  // only with a block
   void release() noexcept {
     if (!block_) return;
     const mp_limb_t* const a = block_;
-    const mp_limb_t* const b = block_ + limbs(prec());
+    const mp_limb_t* const b = block_ + limbs(raw_prec());
     const void* const l = mpfr_custom_get_significand(&v_->left);
     const void* const r = mpfr_custom_get_significand(&v_->right);
     if (!((l == a && r == b) || (l == b && r == a))) ownership_violation();
@@ -212,27 +208,40 @@ class mpfi_backend {
     block_ = nullptr;
   }
   [[noreturn]] static void ownership_violation() noexcept;
-  void ensure() {
+  void ensure() const {
     if (!block_) allocate(default_bits_);
   }
-  // Precision p, value unspecified: the block is kept when it has the room.
-  void reshape(mpfr_prec_t p) {
-    if (block_ && prec() == p) return;
-    if (block_ && limbs(p) == limbs(prec())) {
-      mpfr_custom_init_set(&v_->left, MPFR_ZERO_KIND, 0, p, block_);
-      mpfr_custom_init_set(&v_->right, -MPFR_ZERO_KIND, 0, p, block_ + limbs(p));
-      return;
-    }
-    release();
-    allocate(p);
+  template <class V, class Set>
+  mpfi_backend& set_bounds(V v, Set set) {
+    ensure();
+    set(&v_->left, v, MPFR_RNDD);
+    set(&v_->right, v, MPFR_RNDU);
+    detail::mpfi_fix_zero_signs(v_);
+    return *this;
   }
-  void copy_bounds(const mpfi_backend& o) noexcept {  // same precision: exact
-    mpfr_set(&v_->left, &o.v_->left, MPFR_RNDD);
-    mpfr_set(&v_->right, &o.v_->right, MPFR_RNDU);
+  // Precision p, value unspecified: the block is kept when it has the room.  A
+  // new block is allocated before the old one is freed (strong guarantee).
+  void reshape(mpfr_prec_t p) {
+    if (block_) {
+      const mpfr_prec_t q = raw_prec();
+      if (q == p) return;
+      if (limbs(p) == limbs(q)) {
+        adopt(block_, p);
+        return;
+      }
+    }
+    mp_limb_t* const b = new_block(p);
+    release();
+    adopt(b, p);
+  }
+  void copy_bounds(mpfi_srcptr o) noexcept {  // same precision: exact
+    mpfr_set(&v_->left, &o->left, MPFR_RNDD);
+    mpfr_set(&v_->right, &o->right, MPFR_RNDU);
   }
 
-  mpfi_t v_;
-  mp_limb_t* block_ = nullptr;
+  // mutable: a moved-from value gets its block on first use, also through const access.
+  mutable mpfi_t v_;
+  mutable mp_limb_t* block_ = nullptr;
 
   // Boost's default for mpfi_float_backend<0> until set_mp_precision_bits is called.
   inline static unsigned default_digits10_ = BOOST_MULTIPRECISION_MPFI_DEFAULT_PRECISION;
@@ -262,6 +271,14 @@ inline void eval_multiply(mpfi_backend& r, const mpfi_backend& a, unsigned long 
 inline void eval_multiply(mpfi_backend& r, unsigned long b) { mpfi_mul_ui(r.data(), r.data(), b); }
 inline void eval_divide(mpfi_backend& r, const mpfi_backend& a, unsigned long b) { mpfi_div_ui(r.data(), a.data(), b); }
 inline void eval_divide(mpfi_backend& r, unsigned long b) { mpfi_div_ui(r.data(), r.data(), b); }
+
+/// [a, b] from two MPFR numbers (number(lo, hi)), rounded outward; a > b throws.
+void assign_components(mpfi_backend& r, const boost::multiprecision::backends::mpfr_float_backend<0>& a,
+                       const boost::multiprecision::backends::mpfr_float_backend<0>& b);
+/// To another floating-point type (e.g. static_cast<mpfr>(x)): the midpoint, as Boost's backend.
+void generic_interconvert(boost::multiprecision::backends::mpfr_float_backend<0>& to, const mpfi_backend& from,
+                          const boost::mpl::int_<boost::multiprecision::number_kind_floating_point>&,
+                          const boost::mpl::int_<boost::multiprecision::number_kind_floating_point>&);
 
 // --- classification and conversion (midpoint, as Boost's backend) ------------
 inline bool eval_is_zero(const mpfi_backend& x) noexcept { return detail::mpfi_is_zero(x.data()); }
@@ -303,6 +320,35 @@ void eval_ldexp(mpfi_backend& r, const mpfi_backend& x, long e);
 void eval_frexp(mpfi_backend& r, const mpfi_backend& x, int* e);
 void eval_frexp(mpfi_backend& r, const mpfi_backend& x, long* e);
 
+// MPFI's functions where Boost.Multiprecision has none for a backend (number-level, as Boost's
+// mpfi.hpp has them): cbrt, log1p, expm1, asinh, acosh, atanh.
+using mpfi_number = boost::multiprecision::number<mpfi_backend, boost::multiprecision::et_off>;
+mpfi_number cbrt(const mpfi_number& x);
+mpfi_number log1p(const mpfi_number& x);
+mpfi_number expm1(const mpfi_number& x);
+mpfi_number asinh(const mpfi_number& x);
+mpfi_number acosh(const mpfi_number& x);
+mpfi_number atanh(const mpfi_number& x);
+
+// Boost.Multiprecision's generic versions of these assume a point number and
+// are wrong on intervals (fmod([1, inf], 3) = 0, trunc([1.5, inf]) = [1.5, inf],
+// logb([0.9, 1.1]) = 0, ...): deleted, so that a use fails to compile instead.
+void eval_fmod(mpfi_backend&, const mpfi_backend&, const mpfi_backend&) = delete;
+template <class A> void eval_fmod(mpfi_backend&, const mpfi_backend&, const A&) = delete;
+template <class A> void eval_fmod(mpfi_backend&, const A&, const mpfi_backend&) = delete;
+void eval_fdim(mpfi_backend&, const mpfi_backend&, const mpfi_backend&) = delete;
+template <class A> void eval_fdim(mpfi_backend&, const mpfi_backend&, const A&) = delete;
+template <class A> void eval_fdim(mpfi_backend&, const A&, const mpfi_backend&) = delete;
+void eval_remquo(mpfi_backend&, const mpfi_backend&, const mpfi_backend&, int*) = delete;
+template <class U, class V> void eval_remainder(mpfi_backend&, const U&, const V&) = delete;
+void eval_trunc(mpfi_backend&, const mpfi_backend&) = delete;
+void eval_round(mpfi_backend&, const mpfi_backend&) = delete;
+void eval_modf(mpfi_backend&, const mpfi_backend&, mpfi_backend*) = delete;
+void eval_nearbyint(mpfi_backend&, const mpfi_backend&) = delete;
+void eval_rint(mpfi_backend&, const mpfi_backend&) = delete;
+long eval_ilogb(const mpfi_backend&) = delete;
+void eval_logb(mpfi_backend&, const mpfi_backend&) = delete;
+
 }  // namespace appell::mp
 
 namespace boost::multiprecision {
@@ -314,4 +360,9 @@ namespace detail {
 template <>
 struct is_variable_precision<appell::mp::mpfi_backend> : public true_type {};
 }  // namespace detail
+// mpfi(lower, upper) from two mpfr numbers (assign_components above).
+template <expression_template_option ET>
+struct component_type<number<appell::mp::mpfi_backend, ET>> {
+  using type = number<backends::mpfr_float_backend<0>, ET>;
+};
 }  // namespace boost::multiprecision

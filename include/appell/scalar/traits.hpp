@@ -12,8 +12,8 @@
 //   from_mpfr(v)                    v rounded to nearest (point) / enclosed (interval)
 //   from_mpfr_bounds(lo, hi)        interval types: the enclosure of [lo, hi]
 //
-// Library code never compares interval values with < or ==: MPFI aborts the
-// process on an undecided comparison.  It uses the predicates at the end of
+// Library code never compares interval values with < or ==: an undecided
+// comparison throws (mp::interval_error for mpfi).  It uses the predicates at the end of
 // this file (certainly_positive, possibly_zero, ...), which are decided on the
 // bounds and therefore safe for every scalar.
 #pragma once
