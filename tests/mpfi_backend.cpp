@@ -1,7 +1,7 @@
 // appell::mpfi's backend (include/appell/scalar/mpfi_backend.hpp: both bounds in
 // one allocation) against Boost's own mpfi_float_backend<0>, which it replaced:
 //  * a differential run: 300,000 random steps on 48 pairs of values -- copies,
-//    moves (and assignment to the moved-from value), swaps, precision changes of
+//    move assignments (then assignment to the value moved from), swaps, precision changes of
 //    the default and of values, mixed-precision + - * / (also in place and
 //    aliased), products and quotients by unsigned integers, sqrt, exp, atan,
 //    abs, negation, built-in numbers (long, long long, unsigned long long,
@@ -12,9 +12,11 @@
 //    appell's own endpoint operations (mpfi_ops.hpp);
 //  * the cases where appell differs on purpose: sqrt and log restricted to
 //    their domain, round_prec/set_prec, self-assignment (x = x keeps x; Boost's
-//    backend makes it NaN), moved-from values that stay usable;
+//    backend makes it NaN), values left empty by a move construction that stay
+//    usable (Boost's crash), text input decided on the exact decimals;
 //  * the rest of the backend's surface: str and its round trip, conversions,
-//    pow (zero bases, aliasing), floor/ceil, frexp.
+//    pow (zero bases, aliasing), floor/ceil, frexp, numeric_limits, and MPFI's
+//    cbrt, log1p, expm1, asinh, acosh, atanh, hypot.
 // CTest runs this suite a second time under valgrind (mpfi_backend_memcheck)
 // when valgrind is installed: invalid accesses and leaks fail it.
 #define BOOST_TEST_MODULE mpfi_backend
@@ -24,6 +26,7 @@
 #include <cmath>
 #include <random>
 
+#include "appell/scalar/decimal.hpp"
 #include "appell/scalar/functions.hpp"
 
 using namespace appell;
@@ -338,6 +341,42 @@ BOOST_AUTO_TEST_CASE(text_round_trips_and_encloses) {
   BOOST_CHECK_THROW(mpfi("[1,"), std::runtime_error);
 }
 
+BOOST_AUTO_TEST_CASE(text_input_is_strict_and_decided_exactly) {
+  const mp_precision_scope scope(53);
+  for (const char* bad : {"nan", "[nan, 1]", "[-1, nan]", "{nan,nan}", "[1,2]junk", "[1,2", "1.0x", "", "[1,2,3]",
+                          "[inf, 1]", "[1, -inf]", "[0.3000000000000000001, 0.3]"})  // the last: a > b by 1e-19,
+    BOOST_CHECK_THROW(mpfi{bad}, std::runtime_error);                                  // below one ulp at 53 bits
+  const mpfi z("0");
+  BOOST_TEST((!mpfr_signbit(&z.backend().data()->left) && mpfr_signbit(&z.backend().data()->right)));
+  const mpfi h("[-inf, 1]");
+  BOOST_TEST((mpfr_inf_p(&h.backend().data()->left) && mpfr_cmp_ui(&h.backend().data()->right, 1) == 0));
+  const mpfi close("[0.3, 0.3000000000000000001]");  // a < b by 1e-19: accepted, enclosed
+  mpfr_value lo(400), hi(400);
+  decimal_to_mpfr("0.3", lo, MPFR_RNDD);
+  decimal_to_mpfr("0.3000000000000000001", hi, MPFR_RNDU);
+  BOOST_TEST((contains(close, lo.get()) && contains(close, hi.get())));
+  // str(d) rounds outward: the text encloses the value
+  const mpfi third = mpfi(1) / 3;
+  const std::string t = third.str(5);
+  BOOST_TEST(t == "{3.3333e-01,3.3334e-01}");
+  BOOST_TEST(mpfi(2).str(5) == "2.0000e+00");
+}
+
+BOOST_AUTO_TEST_CASE(limits_and_hypot) {
+  const mp_precision_scope scope(113);
+  using L = std::numeric_limits<mpfi>;
+  BOOST_TEST(!L::is_specialized);  // Boost.Math's point algorithms must refuse mpfi
+  BOOST_TEST((mpfr_inf_p(&L::infinity().backend().data()->left) && mpfr_sgn(&L::infinity().backend().data()->left) > 0));
+  BOOST_TEST(mpfi_nan_p(L::quiet_NaN().backend().data()) != 0);
+  const mpfi eps = L::epsilon();
+  BOOST_TEST(mpfr_cmp_ui_2exp(&eps.backend().data()->left, 1, 1 - static_cast<long>(scope.bits())) == 0);
+  BOOST_TEST(mpfr_number_p(&(L::max)().backend().data()->right));
+  BOOST_TEST(mpfr_sgn(&(L::min)().backend().data()->left) > 0);
+  const mpfi h = hypot(mpfi(3), mpfi_from_bounds(mpfr(4), mpfr(4)));
+  BOOST_TEST(contains(h, mpfr(5).backend().data()));
+  BOOST_TEST(mpfi_get_prec(h.backend().data()) == static_cast<mpfr_prec_t>(scope.bits()));
+}
+
 // A moved-from value is valid (a new [+0, -0] on first use) and never touches
 // the block it gave away, whichever of the two is used or destroyed first.
 BOOST_AUTO_TEST_CASE(moved_from_values_stay_valid) {
@@ -359,6 +398,7 @@ BOOST_AUTO_TEST_CASE(moved_from_values_stay_valid) {
   mpfi e(std::move(d));
   d.backend().round_prec(64);
   BOOST_TEST(mpfi_get_prec(d.backend().data()) == 64);
+  BOOST_TEST(mpfi_is_zero(d.backend().data()) != 0);
   mpfi f = third;
   mpfi g(std::move(f));
   BOOST_TEST(-f == mpfi(0));
@@ -382,6 +422,15 @@ BOOST_AUTO_TEST_CASE(pow_of_zero_bases_and_aliased_operands) {
   BOOST_TEST(mpfr_cmp_ui(&q.backend().data()->right, 16) >= 0);
   BOOST_TEST(mpfr_cmp_ui(&q.backend().data()->right, 17) < 0);
   BOOST_TEST(mpfi_nan_p(pow(mpfi_from_bounds(mpfr(-1), mpfr(4)), mpfi(0.5)).backend().data()) != 0);
+  // base touching 0 with an exponent that contains 0: NaN (0^0 and 0^-e), never a finite box
+  BOOST_TEST(mpfi_nan_p(pow(mpfi_from_bounds(mpfr(0), mpfr(4)), mpfi_from_bounds(mpfr(-1), mpfr(1))).backend().data()) != 0);
+  BOOST_TEST(mpfi_nan_p(pow(mpfi_from_bounds(mpfr(0), mpfr(4)), mpfi(0)).backend().data()) != 0);
+  const mpfi h = pow(mpfi_from_bounds(mpfr(0), mpfr(4)), mpfi(0.5));  // [0, 2]
+  BOOST_TEST(mpfr_zero_p(&h.backend().data()->left));
+  BOOST_TEST((mpfr_cmp_ui(&h.backend().data()->right, 2) >= 0 && mpfr_cmp_d(&h.backend().data()->right, 2.0001) < 0));
+  const mpfi even = pow(mpfi_from_bounds(mpfr(-3), mpfr(-2)), mpfi(2));  // [4, 9], positive
+  BOOST_TEST((mpfr_cmp_ui(&even.backend().data()->left, 4) <= 0 && mpfr_cmp_d(&even.backend().data()->left, 3.999) > 0));
+  BOOST_TEST((mpfr_cmp_ui(&even.backend().data()->right, 9) >= 0 && mpfr_cmp_d(&even.backend().data()->right, 9.001) < 0));
   // r aliasing the exponent, then the base: the same as into a fresh value
   mpfi e = 3, b = mpfi_from_bounds(mpfr(1.5), mpfr(2));
   const mpfi fresh = pow(b, e);
@@ -421,6 +470,15 @@ BOOST_AUTO_TEST_CASE(mpfi_only_functions_contain_320_bit_values) {
       mpfr_set_d(x, v, MPFR_RNDN);
       f.ref(exact, x, MPFR_RNDN);  // within 2^-319 relative of the truth, far inside y's width
       BOOST_TEST_REQUIRE(contains(y, exact.get()), f.name << "(" << v << ") = " << y.str(0));
+      BOOST_TEST_REQUIRE(mpfi_get_prec(y.backend().data()) == static_cast<mpfr_prec_t>(scope.bits()));
+      // a wide argument [v, w]: the functions are monotone, so f(v) and f(w) are inside
+      const double w = v + std::abs(v) * 1e-3 + 1e-6;
+      if (w > f.hi) continue;
+      const mpfi Y = f.f(mpfi_from_bounds(mpfr(v), mpfr(w)));
+      mpfr_value xw(320), ew(320);
+      mpfr_set_d(xw, w, MPFR_RNDN);
+      f.ref(ew, xw, MPFR_RNDN);
+      BOOST_TEST_REQUIRE((contains(Y, exact.get()) && contains(Y, ew.get())), f.name << " on [" << v << ", " << w << "]");
       ++checked;
     }
   }

@@ -1,8 +1,11 @@
 // appell::mp::mpfi_backend: the out-of-line members and functions (see mpfi_backend.hpp).
 #include "appell/scalar/mpfi_backend.hpp"
 
+#include <cctype>
 #include <cstdio>
+#include <string_view>
 
+#include "appell/scalar/decimal.hpp"   // is_decimal_literal, decimal_sign_of_sum
 #include "appell/scalar/interval.hpp"  // appell::domain_error
 
 namespace appell::mp {
@@ -43,30 +46,77 @@ void mpfi_backend::ownership_violation() noexcept {
   std::abort();
 }
 
+namespace {
+std::string_view trimmed(std::string_view t) {
+  while (!t.empty() && std::isspace(static_cast<unsigned char>(t.front()))) t.remove_prefix(1);
+  while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back()))) t.remove_suffix(1);
+  return t;
+}
+// One bound: a decimal literal (appell::is_decimal_literal) or [+-]inf; NaN is refused.
+bool is_bound_text(std::string_view t) {
+  return appell::is_decimal_literal(t) || t == "inf" || t == "+inf" || t == "-inf";
+}
+// The text's number rounded in direction rnd into b (whole text consumed: checked before).
+void read_bound(mpfr_ptr b, std::string_view t, mpfr_rnd_t rnd) {
+  const std::string z(t);
+  mpfr_strtofr(b, z.c_str(), nullptr, 10, rnd);
+}
+}  // namespace
+
 mpfi_backend& mpfi_backend::operator=(const char* s) {
-  ensure();
-  std::string text = s ? s : "";
-  if (!text.empty() && text.front() == '{' && text.back() == '}') {  // str()'s "{a,b}" is MPFI's "[a,b]"
-    text.front() = '[';
-    text.back() = ']';
+  // "x", "[a, b]" (MPFI) or "{a,b}" (str()); a and b decimal literals or +-inf, a <= b
+  // decided on the exact decimals (never after rounding), bounds rounded outward.
+  const std::string_view text = trimmed(s ? std::string_view(s) : std::string_view());
+  const auto bad = [&](const char* why) {
+    return std::runtime_error("not a number or interval (" + std::string(why) + "): \"" + std::string(text) + "\"");
+  };
+  std::string_view lo = text, hi = text;
+  if (!text.empty() && (text.front() == '[' || text.front() == '{')) {
+    const char close = text.front() == '[' ? ']' : '}';
+    if (text.back() != close) throw bad("unclosed interval");
+    const std::string_view inner = text.substr(1, text.size() - 2);
+    const std::size_t comma = inner.find(',');
+    if (comma == std::string_view::npos || inner.find(',', comma + 1) != std::string_view::npos)
+      throw bad("an interval has two bounds");
+    lo = trimmed(inner.substr(0, comma));
+    hi = trimmed(inner.substr(comma + 1));
   }
-  mpfi_backend t;  // parsed apart: a failed parse leaves *this as it was
+  if (!is_bound_text(lo) || !is_bound_text(hi)) throw bad("bounds are decimal numbers or +-inf");
+  if (lo == "inf" || lo == "+inf" || hi == "-inf") throw bad("lower bound above upper bound");
+  if (appell::is_decimal_literal(lo) && appell::is_decimal_literal(hi) && lo != hi &&
+      appell::decimal_sign_of_sum({{1, lo}, {-1, hi}}) > 0)
+    throw bad("lower bound above upper bound");
+  mpfi_backend t;  // parsed apart: a failure leaves *this as it was
   t.set_prec(prec());
-  if (text.empty() || mpfi_set_str(t.v_, text.c_str(), 10) != 0 || mpfr_cmp(&t.v_->left, &t.v_->right) > 0)
-    throw std::runtime_error("not a number or interval: \"" + text + "\"");
+  read_bound(&t.v_->left, lo, MPFR_RNDD);
+  read_bound(&t.v_->right, hi, MPFR_RNDU);
+  detail::mpfi_fix_zero_signs(t.v_);
   swap(t);
   return *this;
 }
 
 std::string mpfi_backend::str(std::streamsize digits, std::ios_base::fmtflags f) const {
   const mpfi_srcptr x = data();
-  mpfr_b a, b;
-  mpfr_set_prec(a.data(), prec());
-  mpfr_set_prec(b.data(), prec());
-  mpfr_set(a.data(), &x->left, MPFR_RNDN);  // exact
-  mpfr_set(b.data(), &x->right, MPFR_RNDN);
-  if (mpfr_equal_p(a.data(), b.data())) return a.str(digits, f);
-  return "{" + a.str(digits, f) + "," + b.str(digits, f) + "}";
+  if (digits <= 0) {  // every bound exactly, as Boost's mpfr backend writes it
+    mpfr_b a, b;
+    mpfr_set_prec(a.data(), prec());
+    mpfr_set_prec(b.data(), prec());
+    mpfr_set(a.data(), &x->left, MPFR_RNDN);  // exact
+    mpfr_set(b.data(), &x->right, MPFR_RNDN);
+    if (mpfr_equal_p(a.data(), b.data())) return a.str(0, f);
+    return "{" + a.str(0, f) + "," + b.str(0, f) + "}";
+  }
+  // `digits` significant digits, the lower bound rounded down and the upper up (scientific
+  // notation), so the text still encloses the value; one number where both agree.
+  const auto bound = [&](mpfr_srcptr v, const char* format) {
+    char* out = nullptr;
+    if (mpfr_asprintf(&out, format, static_cast<int>(digits - 1), v) < 0) throw std::bad_alloc();
+    std::string r(out);
+    mpfr_free_str(out);
+    return r;
+  };
+  const std::string lo = bound(&x->left, "%.*RDe"), hi = bound(&x->right, "%.*RUe");
+  return lo == hi ? lo : "{" + lo + "," + hi + "}";
 }
 
 int mpfi_backend::compare(const mpfi_backend& o) const {
@@ -101,13 +151,13 @@ int eval_get_sign(const mpfi_backend& x) {
   throw interval_error("undecided sign of an interval");
 }
 
-int eval_fpclassify(const mpfi_backend& x) noexcept {
+int eval_fpclassify(const mpfi_backend& x) {
   mpfi_srcptr p = x.data();
   return mpfi_nan_p(p) ? FP_NAN : mpfi_inf_p(p) ? FP_INFINITE : detail::mpfi_is_zero(p) ? FP_ZERO : FP_NORMAL;
 }
 
-void eval_convert_to(double* r, const mpfi_backend& x) noexcept { *r = mpfi_get_d(x.data()); }
-void eval_convert_to(long double* r, const mpfi_backend& x) noexcept { *r = mpfr_get_ld(midpoint(x).data(), MPFR_RNDN); }
+void eval_convert_to(double* r, const mpfi_backend& x) { *r = mpfi_get_d(x.data()); }
+void eval_convert_to(long double* r, const mpfi_backend& x) { *r = mpfr_get_ld(midpoint(x).data(), MPFR_RNDN); }
 void eval_convert_to(long* r, const mpfi_backend& x) { boost::multiprecision::backends::eval_convert_to(r, midpoint(x)); }
 void eval_convert_to(unsigned long* r, const mpfi_backend& x) {
   boost::multiprecision::backends::eval_convert_to(r, midpoint(x));
@@ -140,6 +190,7 @@ void eval_atan(mpfi_backend& r, const mpfi_backend& x) { mpfi_atan(r.data(), x.d
 void eval_atan2(mpfi_backend& r, const mpfi_backend& y, const mpfi_backend& x) {
   mpfi_atan2(r.data(), y.data(), x.data());
 }
+void eval_hypot(mpfi_backend& r, const mpfi_backend& a, const mpfi_backend& b) { mpfi_hypot(r.data(), a.data(), b.data()); }
 void eval_sinh(mpfi_backend& r, const mpfi_backend& x) { mpfi_sinh(r.data(), x.data()); }
 void eval_cosh(mpfi_backend& r, const mpfi_backend& x) { mpfi_cosh(r.data(), x.data()); }
 void eval_tanh(mpfi_backend& r, const mpfi_backend& x) { mpfi_tanh(r.data(), x.data()); }

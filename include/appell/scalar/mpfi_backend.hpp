@@ -75,7 +75,9 @@ class mpfi_backend {
   // A moved-from value owns no block; it is still valid: data() gives it a new
   // one, holding [+0, -0], on first use (so it never reads or writes the block
   // it gave away).  Its significand pointers are cleared as well, so that a
-  // path that bypassed data() would fault at once instead of aliasing.
+  // path that bypassed data() would fault at once instead of aliasing.  (That
+  // first use writes even through const access: a moved-from value shared
+  // between threads must be assigned before it is read.)
   mpfi_backend(mpfi_backend&& o) noexcept : block_(o.block_) {
     v_[0] = o.v_[0];
     o.block_ = nullptr;
@@ -115,8 +117,9 @@ class mpfi_backend {
     return *this;
   }
   mpfi_backend& operator=(long double d) { return set_bounds(d, [](mpfr_ptr b, long double v, mpfr_rnd_t r) { mpfr_set_ld(b, v, r); }); }
-  /// A decimal number, or an interval "[a, b]" (MPFI) or "{a,b}" (str()), enclosed
-  /// outward; throws std::runtime_error otherwise (also for a > b).
+  /// A decimal number, or an interval "[a, b]" (MPFI) or "{a,b}" (str()) of decimal
+  /// numbers or +-inf, enclosed outward; throws std::runtime_error otherwise (NaN,
+  /// trailing text, a > b decided on the exact decimals).
   mpfi_backend& operator=(const char* s);
   mpfi_backend& operator=(const boost::multiprecision::backends::mpfr_float_backend<0>& x) {
     ensure();
@@ -132,7 +135,9 @@ class mpfi_backend {
     block_ = o.block_;
     o.block_ = b;
   }
-  /// The value (a point) or "{lower,upper}", as Boost's backend writes it.
+  /// The value (a point) or "{lower,upper}": with digits <= 0 every bound exactly
+  /// (as Boost's backend writes it; operator= reads it back); with digits > 0 that many
+  /// significant digits in scientific notation, lower bound rounded down, upper up.
   std::string str(std::streamsize digits, std::ios_base::fmtflags f) const;
   void negate() {  // [a, b] -> [-b, -a]: exact; the bounds trade places within the block
     ensure();
@@ -275,18 +280,22 @@ inline void eval_divide(mpfi_backend& r, unsigned long b) { mpfi_div_ui(r.data()
 /// [a, b] from two MPFR numbers (number(lo, hi)), rounded outward; a > b throws.
 void assign_components(mpfi_backend& r, const boost::multiprecision::backends::mpfr_float_backend<0>& a,
                        const boost::multiprecision::backends::mpfr_float_backend<0>& b);
+/// Any other pair (strings, doubles): Boost's generic version rounds each to nearest, which
+/// need not enclose; write mpfi("[a, b]") or mpfi(mpfr, mpfr) instead.
+template <class A, class B>
+void assign_components(mpfi_backend&, const A&, const B&) = delete;
 /// To another floating-point type (e.g. static_cast<mpfr>(x)): the midpoint, as Boost's backend.
 void generic_interconvert(boost::multiprecision::backends::mpfr_float_backend<0>& to, const mpfi_backend& from,
                           const boost::mpl::int_<boost::multiprecision::number_kind_floating_point>&,
                           const boost::mpl::int_<boost::multiprecision::number_kind_floating_point>&);
 
 // --- classification and conversion (midpoint, as Boost's backend) ------------
-inline bool eval_is_zero(const mpfi_backend& x) noexcept { return detail::mpfi_is_zero(x.data()); }
+inline bool eval_is_zero(const mpfi_backend& x) { return detail::mpfi_is_zero(x.data()); }
 /// 0 for [0, 0], 1 / -1 when certainly positive / negative; interval_error otherwise.
 int eval_get_sign(const mpfi_backend& x);
-int eval_fpclassify(const mpfi_backend& x) noexcept;
-void eval_convert_to(double* r, const mpfi_backend& x) noexcept;
-void eval_convert_to(long double* r, const mpfi_backend& x) noexcept;
+int eval_fpclassify(const mpfi_backend& x);
+void eval_convert_to(double* r, const mpfi_backend& x);
+void eval_convert_to(long double* r, const mpfi_backend& x);
 void eval_convert_to(long* r, const mpfi_backend& x);
 void eval_convert_to(unsigned long* r, const mpfi_backend& x);
 void eval_convert_to(long long* r, const mpfi_backend& x);
@@ -308,6 +317,7 @@ void eval_asin(mpfi_backend& r, const mpfi_backend& x);
 void eval_acos(mpfi_backend& r, const mpfi_backend& x);
 void eval_atan(mpfi_backend& r, const mpfi_backend& x);
 void eval_atan2(mpfi_backend& r, const mpfi_backend& y, const mpfi_backend& x);
+void eval_hypot(mpfi_backend& r, const mpfi_backend& a, const mpfi_backend& b);  // MPFI's
 void eval_sinh(mpfi_backend& r, const mpfi_backend& x);
 void eval_cosh(mpfi_backend& r, const mpfi_backend& x);
 void eval_tanh(mpfi_backend& r, const mpfi_backend& x);
@@ -341,6 +351,7 @@ template <class A> void eval_fdim(mpfi_backend&, const mpfi_backend&, const A&) 
 template <class A> void eval_fdim(mpfi_backend&, const A&, const mpfi_backend&) = delete;
 void eval_remquo(mpfi_backend&, const mpfi_backend&, const mpfi_backend&, int*) = delete;
 template <class U, class V> void eval_remainder(mpfi_backend&, const U&, const V&) = delete;
+template <class U, class V> void eval_hypot(mpfi_backend&, const U&, const V&) = delete;  // but MPFI's, above
 void eval_trunc(mpfi_backend&, const mpfi_backend&) = delete;
 void eval_round(mpfi_backend&, const mpfi_backend&) = delete;
 void eval_modf(mpfi_backend&, const mpfi_backend&, mpfi_backend*) = delete;
@@ -366,3 +377,54 @@ struct component_type<number<appell::mp::mpfi_backend, ET>> {
   using type = number<backends::mpfr_float_backend<0>, ET>;
 };
 }  // namespace boost::multiprecision
+
+namespace std {
+// Like Boost's for mpfi_float_backend<0>, is_specialized stays false: Boost.Math's
+// generic algorithms (tgamma, erf, ...) would treat an interval as a point, and
+// refuse such a type at compile time.  Unlike Boost's (which answers 0 to
+// everything), the values a caller can use are real: infinity, NaN, epsilon,
+// max, min at the default precision (variable precision: digits is 0).
+template <boost::multiprecision::expression_template_option ET>
+class numeric_limits<boost::multiprecision::number<appell::mp::mpfi_backend, ET>> {
+  using number_type = boost::multiprecision::number<appell::mp::mpfi_backend, ET>;
+  template <class F>
+  static number_type both(F set) {  // the point interval [v, v] of a representable v
+    number_type r;
+    set(&r.backend().data()->left);
+    set(&r.backend().data()->right);
+    return r;
+  }
+
+ public:
+  static constexpr bool is_specialized = false;
+  static constexpr int digits = 0, digits10 = 0, max_digits10 = 0, radix = 2;
+  static constexpr bool is_signed = true, is_integer = false, is_exact = false;
+  static constexpr bool has_infinity = true, has_quiet_NaN = true, has_signaling_NaN = false;
+  static constexpr float_denorm_style has_denorm = denorm_absent;
+  static constexpr bool has_denorm_loss = false, is_iec559 = false, is_bounded = true, is_modulo = false;
+  static constexpr bool traps = false, tinyness_before = false;
+  static constexpr float_round_style round_style = round_indeterminate;
+  static constexpr int min_exponent = 0, min_exponent10 = 0, max_exponent = 0, max_exponent10 = 0;
+  static number_type infinity() { return both([](mpfr_ptr b) { mpfr_set_inf(b, 1); }); }
+  static number_type quiet_NaN() { return both([](mpfr_ptr b) { mpfr_set_nan(b); }); }
+  static number_type signaling_NaN() { return quiet_NaN(); }
+  static number_type epsilon() {  // 2^(1-p)
+    return both([](mpfr_ptr b) { mpfr_set_ui_2exp(b, 1, 1 - mpfr_get_prec(b), MPFR_RNDN); });
+  }
+  static number_type round_error() { return both([](mpfr_ptr b) { mpfr_set_ui(b, 1, MPFR_RNDN); }); }
+  static number_type(max)() {
+    return both([](mpfr_ptr b) {
+      mpfr_set_inf(b, 1);
+      mpfr_nextbelow(b);
+    });
+  }
+  static number_type lowest() { return -(max)(); }
+  static number_type(min)() {
+    return both([](mpfr_ptr b) {
+      mpfr_set_zero(b, 1);
+      mpfr_nextabove(b);
+    });
+  }
+  static number_type denorm_min() { return (min)(); }
+};
+}  // namespace std
