@@ -22,7 +22,10 @@ using namespace appell;
 
 namespace {
 
-const char* const scenes[] = {"euler_body.json", "top_on_cone.json", "rolling_sphere_bowl.json"};
+// Every shipped scene: the three of the paper's sections first, then the variants.
+const char* const scenes[] = {"euler_body.json",           "top_on_cone.json",          "rolling_sphere_bowl.json",
+                              "top_on_cone_constant.json", "top_on_cone_steep.json",    "rolling_sphere_plane.json",
+                              "rolling_sphere_globe.json", "rolling_sphere_pipe.json",  "rolling_sphere_tube.json"};
 
 template <class T>
 void bench_scene(benchmark::State& state, const char* file, unsigned bits) {

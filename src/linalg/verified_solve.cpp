@@ -21,39 +21,41 @@
 
 namespace appell::detail {
 
-std::optional<vector_t<interval>> residual_enclosure(const Eigen::MatrixXd& R, const matrix_t<interval>& C,
-                                                     const vector_t<interval>& r) {
-  const Eigen::Index n = C.rows();
-  const upward_rounding mode;  // plain double operations below round upward
-  const auto opaque = [](double v) { return interval_arith::opaque(v); };
-  std::vector<double> row_sum(static_cast<std::size_t>(n));
-  double beta = 0;
+std::optional<vector_t<interval>> small_interval_solve(const matrix_t<interval>& A, const vector_t<interval>& b) {
+  constexpr int M = static_cast<int>(small_system_max);
+  using DM = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, M, M>;
+  using DV = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, M, 1>;
+  using IM = Eigen::Matrix<interval, Eigen::Dynamic, Eigen::Dynamic, 0, M, M>;
+  using IV = Eigen::Matrix<interval, Eigen::Dynamic, 1, 0, M, 1>;
+  const Eigen::Index n = A.rows();
+  if (n == 0 || n > small_system_max) return std::nullopt;
+  DM Am(n, n);
+  DV bm(n);
   for (Eigen::Index i = 0; i < n; ++i) {
-    double s = 0;
-    for (Eigen::Index j = 0; j < n; ++j) s = opaque(s + std::max(-C(i, j).lower(), C(i, j).upper()));
-    row_sum[static_cast<std::size_t>(i)] = s;
-    if (!(s <= beta)) beta = s;  // a NaN row sum makes beta NaN
+    bm(i) = mid(b(i));
+    for (Eigen::Index j = 0; j < n; ++j) Am(i, j) = mid(A(i, j));
   }
-  if (!(beta <= max_contraction)) return std::nullopt;
-  vector_t<interval> z(n);
-  double z_max = 0;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    interval s(0);
-    for (Eigen::Index j = 0; j < n; ++j)
-      if (R(i, j) != 0) s += interval(R(i, j)) * r(j);
-    z(i) = s;
-    z_max = std::max(z_max, std::max(-s.lower(), s.upper()));
-  }
-  if (!(z_max <= std::numeric_limits<double>::max())) return std::nullopt;
-  const double one_minus_beta_down = -opaque(opaque(beta) - 1.0);  // 1 - beta rounded down (> 0)
-  const double eps = opaque(opaque(z_max) / one_minus_beta_down);  // >= ||e||_inf, rounded up
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double delta = opaque(row_sum[static_cast<std::size_t>(i)] * eps);
-    z(i) += interval(-delta, delta, true);
-  }
+  const Eigen::PartialPivLU<DM> lu(Am);
   for (Eigen::Index i = 0; i < n; ++i)
-    if (!is_finite(z(i))) return std::nullopt;
-  return z;
+    if (!(std::abs(lu.matrixLU()(i, i)) > 0)) return std::nullopt;
+  const DM R = lu.inverse();
+  if (!R.allFinite()) return std::nullopt;
+  DV xt = R * bm;
+  xt += R * (bm - Am * xt);  // one refinement step, as krawczyk_solve
+  IV xI(n), residual(n);
+  for (Eigen::Index i = 0; i < n; ++i) xI(i) = thin<interval>(xt(i));
+  for (Eigen::Index i = 0; i < n; ++i) {  // b - A x~, in krawczyk_solve's order
+    interval sum = A(i, 0) * xI(0);
+    for (Eigen::Index k = 1; k < n; ++k) sum += A(i, k) * xI(k);
+    residual(i) = b(i) - sum;
+  }
+  IM C;
+  identity_minus_product_into(R, A, C);
+  const std::optional<IV> e = residual_enclosure_t(R, C, residual);
+  if (!e) return std::nullopt;
+  vector_t<interval> x(n);
+  for (Eigen::Index i = 0; i < n; ++i) x(i) = xI(i) + (*e)(i);
+  return x;
 }
 
 std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const vector_t<mpfi>& b) {

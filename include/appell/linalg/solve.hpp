@@ -87,23 +87,39 @@ vector_t<T> product(const matrix_t<T>& A, const vector_t<T>& x) {
   return y;
 }
 
-// The double product R * B computed under whatever rounding mode the caller set;
-// out of line so that no operation of it can be moved across the mode switch.
-[[gnu::noinline]] inline Eigen::MatrixXd product_in_current_mode(const Eigen::MatrixXd& R, const Eigen::MatrixXd& B) {
-  Eigen::MatrixXd P = R.lazyProduct(B);  // coefficient-based: every term and sum rounded in the current mode
-  asm volatile("" : : "r"(P.data()) : "memory");
-  return P;
-}
-
 /// Encloses I - R A for a double matrix R and an interval matrix A by
 /// midpoint-radius arithmetic (Rump): with A in [Am - Ar, Am + Ar],
 ///   I - R A  in  [I - RU(R Am) - RU(|R| Ar),  I - RD(R Am) + RU(|R| Ar)],
 /// where RU / RD are products with every operation rounded up / down (the
 /// latter as -RU((-R) Am)).  n^3 double operations instead of n^3 interval ones.
-inline matrix_t<interval> identity_minus_product(const Eigen::MatrixXd& R, const matrix_t<interval>& A) {
+// The three products of identity_minus_product in one pass, every operation in the
+// caller's rounding mode (upward): up >= R Am, neg_down >= -(R Am), rad >= |R| Ar.
+// Out of line so that no operation of it can be moved across the mode switch.
+template <class DM>
+[[gnu::noinline]] void rump_products(const DM& R, const DM& Am, const DM& Ar, DM& up, DM& neg_down, DM& rad) {
+  const Eigen::Index n = R.rows(), m = Am.cols(), K = R.cols();
+  for (Eigen::Index j = 0; j < m; ++j)
+    for (Eigen::Index i = 0; i < n; ++i) {
+      double u = 0, d = 0, r = 0;  // partial sums, each rounded up: upper bounds of the exact ones
+      for (Eigen::Index k = 0; k < K; ++k) {
+        const double a = R(i, k);
+        u += a * Am(k, j);
+        d += (-a) * Am(k, j);
+        r += std::abs(a) * Ar(k, j);
+      }
+      up(i, j) = u;
+      neg_down(i, j) = d;
+      rad(i, j) = r;
+    }
+  asm volatile("" : : "r"(up.data()), "r"(neg_down.data()), "r"(rad.data()) : "memory");
+}
+
+// DM: a double matrix type, IMA/IMC: interval matrix types (heap or fixed-capacity storage).
+template <class DM, class IMA, class IMC>
+void identity_minus_product_into(const DM& R, const IMA& A, IMC& C) {
   const Eigen::Index n = A.rows();
-  Eigen::MatrixXd Am(n, n), Ar(n, n);
-  Eigen::MatrixXd up, neg_down, rad;
+  DM Am(n, n), Ar(n, n);
+  DM up(n, n), neg_down(n, n), rad(n, n);
   {
     const upward_rounding mode;
     for (Eigen::Index i = 0; i < n; ++i)
@@ -113,11 +129,9 @@ inline matrix_t<interval> identity_minus_product(const Eigen::MatrixXd& R, const
         Am(i, j) = (lo <= m && m <= hi) ? m : lo;
         Ar(i, j) = std::max(interval_arith::opaque(hi - Am(i, j)), interval_arith::opaque(Am(i, j) - lo));  // rounded up
       }
-    up = product_in_current_mode(R, Am);                         // >= R Am
-    neg_down = product_in_current_mode(-R, Am);                  // >= -(R Am)
-    rad = product_in_current_mode(R.cwiseAbs(), Ar);             // >= |R| Ar
+    rump_products(R, Am, Ar, up, neg_down, rad);
   }
-  matrix_t<interval> C(n, n);
+  C.resize(n, n);
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j) {
       const interval one_ij(i == j ? 1.0 : 0.0);
@@ -126,6 +140,11 @@ inline matrix_t<interval> identity_minus_product(const Eigen::MatrixXd& R, const
                               (interval(neg_down(i, j)) + interval(rad(i, j))).upper());
       C(i, j) = one_ij + minus_RA;
     }
+}
+
+inline matrix_t<interval> identity_minus_product(const Eigen::MatrixXd& R, const matrix_t<interval>& A) {
+  matrix_t<interval> C;
+  identity_minus_product_into(R, A, C);
   return C;
 }
 
@@ -136,8 +155,53 @@ inline constexpr double max_contraction = 1.0 / 1024;
 /// Encloses A^-1 r for every A in [A] and r in [r] given an approximate
 /// inverse R of mid(A) and C enclosing I - R A for every A in [A]
 /// (identity_minus_product), or nullopt if some row sum of |C| exceeds max_contraction.
-std::optional<vector_t<interval>> residual_enclosure(const Eigen::MatrixXd& R, const matrix_t<interval>& C,
-                                                     const vector_t<interval>& r);
+/// IV: an interval vector type (heap or fixed-capacity storage).
+template <class DM, class IM, class IV>
+std::optional<IV> residual_enclosure_t(const DM& R, const IM& C, const IV& r) {
+  const Eigen::Index n = C.rows();
+  const upward_rounding mode;  // plain double operations below round upward
+  const auto opaque = [](double v) { return interval_arith::opaque(v); };
+  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, IV::MaxRowsAtCompileTime, 1> row_sum(n);
+  double beta = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double s = 0;
+    for (Eigen::Index j = 0; j < n; ++j) s = opaque(s + std::max(-C(i, j).lower(), C(i, j).upper()));
+    row_sum(i) = s;
+    if (!(s <= beta)) beta = s;  // a NaN row sum makes beta NaN
+  }
+  if (!(beta <= max_contraction)) return std::nullopt;
+  IV z(n);
+  double z_max = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    interval s(0);
+    for (Eigen::Index j = 0; j < n; ++j)
+      if (R(i, j) != 0) s += interval(R(i, j)) * r(j);
+    z(i) = s;
+    z_max = std::max(z_max, std::max(-s.lower(), s.upper()));
+  }
+  if (!(z_max <= std::numeric_limits<double>::max())) return std::nullopt;
+  const double one_minus_beta_down = -opaque(opaque(beta) - 1.0);  // 1 - beta rounded down (> 0)
+  const double eps = opaque(opaque(z_max) / one_minus_beta_down);  // >= ||e||_inf, rounded up
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double delta = opaque(row_sum(i) * eps);
+    z(i) += interval(-delta, delta, true);
+  }
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (!is_finite(z(i))) return std::nullopt;
+  return z;
+}
+inline std::optional<vector_t<interval>> residual_enclosure(const Eigen::MatrixXd& R, const matrix_t<interval>& C,
+                                                            const vector_t<interval>& r) {
+  return residual_enclosure_t(R, C, r);
+}
+
+/// The interval residual path for systems of at most small_system_max unknowns,
+/// with every temporary on the stack (the heap-allocated temporaries of the
+/// general path were ~60 allocations per evaluation of Example I, an interval-only
+/// cost).  The same steps as krawczyk_solve's: nullopt where the residual bound
+/// does not apply or the midpoint is singular (the general path then decides).
+inline constexpr Eigen::Index small_system_max = 12;
+std::optional<vector_t<interval>> small_interval_solve(const matrix_t<interval>& A, const vector_t<interval>& b);
 /// mpfi systems by the residual bound: x~ by mpfr LU, r = b - A x~ in mpfi,
 /// the rest in double.  nullopt where it does not apply (the caller falls back).
 std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const vector_t<mpfi>& b);
@@ -160,6 +224,9 @@ template <class I>
 vector_t<I> krawczyk_solve(const matrix_t<I>& A, const vector_t<I>& b, bool try_residual_bound) {
   using P = bound_t<I>;
   const Eigen::Index n = A.rows();
+  if constexpr (std::is_same_v<I, interval>)
+    if (try_residual_bound && n <= small_system_max)
+      if (auto x = small_interval_solve(A, b)) return *x;
   // Midpoint system, in the bound type.
   matrix_t<P> Am(n, n);
   vector_t<P> bm(n);
@@ -178,7 +245,6 @@ vector_t<I> krawczyk_solve(const matrix_t<I>& A, const vector_t<I>& b, bool try_
   xt += R * (bm - Am * xt);  // one refinement step: a better centre, a thinner box
 
   // Krawczyk operator in interval arithmetic.
-  const matrix_t<I> RI = R.unaryExpr([](const P& p) { return detail::thin<I>(p); });
   const vector_t<I> xI = xt.unaryExpr([](const P& p) { return detail::thin<I>(p); });
   const vector_t<I> residual = b - detail::product(A, xI);
   matrix_t<I> C;
@@ -186,7 +252,9 @@ vector_t<I> krawczyk_solve(const matrix_t<I>& A, const vector_t<I>& b, bool try_
     C = detail::identity_minus_product(R, A);  // midpoint-radius, O(n^3) in double
     if (try_residual_bound)                    // one pass; C serves the iteration below if it fails
       if (auto e = detail::residual_enclosure(R, C, residual)) return xI + *e;
-  } else {
+  }
+  const matrix_t<I> RI = R.unaryExpr([](const P& p) { return detail::thin<I>(p); });  // only past the residual bound
+  if constexpr (!std::is_same_v<I, interval>) {
     C = -detail::product(RI, A);
     for (Eigen::Index i = 0; i < n; ++i) C(i, i) += I(1);
   }
