@@ -51,7 +51,7 @@ std::optional<vector_t<interval>> small_interval_solve(const matrix_t<interval>&
   }
   IM C;
   identity_minus_product_into(R, A, C);
-  const std::optional<IV> e = residual_enclosure_t(R, C, residual);
+  const std::optional<IV> e = residual_enclosure(R, C, residual);
   if (!e) return std::nullopt;
   vector_t<interval> x(n);
   for (Eigen::Index i = 0; i < n; ++i) x(i) = xI(i) + (*e)(i);

@@ -19,10 +19,18 @@
 namespace appell {
 
 // --- mp precision ---------------------------------------------------------
-unsigned set_mp_precision_bits(unsigned bits) {
-  if (bits < 2) throw parse_error("precision must be at least 2 bits");
+namespace {
+// The smallest Boost precision setting (decimal digits) that gives at least `bits` bits.
+unsigned digits10_holding(unsigned bits) {
   unsigned d10 = 1;
   while (boost::multiprecision::detail::digits10_2_2(d10) < bits) ++d10;
+  return d10;
+}
+}  // namespace
+
+unsigned set_mp_precision_bits(unsigned bits) {
+  if (bits < 2) throw parse_error("precision must be at least 2 bits");
+  const unsigned d10 = digits10_holding(bits);
   mpfr::default_precision(d10);
   mpfi::default_precision(d10);
   return mp_precision_bits();
@@ -31,8 +39,7 @@ unsigned set_mp_precision_bits(unsigned bits) {
 unsigned mp_precision_filling_limbs(unsigned least_bits) {
   namespace bmd = boost::multiprecision::detail;
   const unsigned limb_bits = (least_bits + 63) / 64 * 64;
-  unsigned d10 = 1;
-  while (bmd::digits10_2_2(d10) < least_bits) ++d10;  // the smallest setting of least_bits or more
+  unsigned d10 = digits10_holding(least_bits);
   while (bmd::digits10_2_2(d10 + 1) <= limb_bits) ++d10;
   return static_cast<unsigned>(bmd::digits10_2_2(d10));
 }

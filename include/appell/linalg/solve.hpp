@@ -157,7 +157,7 @@ inline constexpr double max_contraction = 1.0 / 1024;
 /// (identity_minus_product), or nullopt if some row sum of |C| exceeds max_contraction.
 /// IV: an interval vector type (heap or fixed-capacity storage).
 template <class DM, class IM, class IV>
-std::optional<IV> residual_enclosure_t(const DM& R, const IM& C, const IV& r) {
+std::optional<IV> residual_enclosure(const DM& R, const IM& C, const IV& r) {
   const Eigen::Index n = C.rows();
   const upward_rounding mode;  // plain double operations below round upward
   const auto opaque = [](double v) { return interval_arith::opaque(v); };
@@ -190,10 +190,6 @@ std::optional<IV> residual_enclosure_t(const DM& R, const IM& C, const IV& r) {
     if (!is_finite(z(i))) return std::nullopt;
   return z;
 }
-inline std::optional<vector_t<interval>> residual_enclosure(const Eigen::MatrixXd& R, const matrix_t<interval>& C,
-                                                            const vector_t<interval>& r) {
-  return residual_enclosure_t(R, C, r);
-}
 
 /// The interval residual path for systems of at most small_system_max unknowns,
 /// with every temporary on the stack (the heap-allocated temporaries of the
@@ -225,8 +221,10 @@ vector_t<I> krawczyk_solve(const matrix_t<I>& A, const vector_t<I>& b, bool try_
   using P = bound_t<I>;
   const Eigen::Index n = A.rows();
   if constexpr (std::is_same_v<I, interval>)
-    if (try_residual_bound && n <= small_system_max)
+    if (try_residual_bound && n <= small_system_max) {
       if (auto x = small_interval_solve(A, b)) return *x;
+      try_residual_bound = false;  // the same bound just failed on these data: straight to Krawczyk
+    }
   // Midpoint system, in the bound type.
   matrix_t<P> Am(n, n);
   vector_t<P> bm(n);

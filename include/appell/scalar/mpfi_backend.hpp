@@ -176,9 +176,6 @@ class mpfi_backend {
   void precision(unsigned digits10) {  // keeps the value, enclosed outward
     round_prec(static_cast<mpfr_prec_t>(boost::multiprecision::detail::digits10_2_2(digits10)));
   }
-  /// The default precision in bits.
-  static mpfr_prec_t default_bits() noexcept { return default_bits_; }
-
   /// mpfi_set_prec for this backend: precision p, value NaN.
   void set_prec(mpfr_prec_t p);
   /// mpfi_round_prec for this backend: precision p, the value enclosed outward.
