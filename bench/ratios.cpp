@@ -1,7 +1,7 @@
 // Speed ratios of the scalars on the paper scenes (Google Benchmark).
 //
-// Each benchmark times compute<T>() of a bound scene (the dynamics; inputs
-// converted once).  After the runs, the ratios that issue "make intervals
+// Each benchmark times compute<T>() of a prepared scene (the dynamics; inputs
+// converted once), for every standard scalar (mpfr and mpfi at 113 and 256 bits).  After the runs, the ratios that issue "make intervals
 // cheap" tracks are printed from this same run, with their goals:
 //   interval / double <= 4,  dd / double <= 12,  float128 / double <= 80,
 //   mpfi / mpfr <= 2.2 at equal bits.
@@ -27,13 +27,13 @@ const char* const scenes[] = {"euler_body.json",           "top_on_cone.json",  
                               "top_on_cone_constant.json", "top_on_cone_steep.json",    "rolling_sphere_plane.json",
                               "rolling_sphere_globe.json", "rolling_sphere_pipe.json",  "rolling_sphere_tube.json"};
 
-template <class T>
-void bench_scene(benchmark::State& state, const char* file, unsigned bits) {
-  std::optional<mp_precision_scope> scope;
-  if (bits) scope.emplace(bits);
-  const scene_input scene = read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
-  const bound_scene<T> bound = bind<T>(scene);
-  for (auto _ : state) benchmark::DoNotOptimize(compute<T>(bound));
+void bench_scene(benchmark::State& state, const std::string& scalar, std::optional<unsigned> bits, const char* file) {
+  with_scalar(scalar, bits, [&]<class T>(std::type_identity<T>) {
+    const scene_input scene = read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
+    const prepared_scene<T> prepared = prepare<T>(scene);
+    for (auto _ : state) benchmark::DoNotOptimize(compute<T>(prepared));
+    return 0;
+  });
 }
 
 // The floor of the mpfi/mpfr ratio: one product and one sum, s = a b + c (plus
@@ -41,7 +41,7 @@ void bench_scene(benchmark::State& state, const char* file, unsigned bits) {
 // fresh value per operation.  mpfi at its working precision (guard bits), as compute uses.
 template <class T>
 void bench_elementary(benchmark::State& state, unsigned bits) {
-  const mp_precision_scope scope(std::is_same_v<T, mpfi> ? mpfi_working_bits(bits) : bits);
+  const mp_precision_scope scope(scalar_traits<T>::working_bits(bits));
   T a = T(1) / 3, b = T(2) / 7, c = T(5) / 11;
   for (auto _ : state) {
     T s = a * b + c;
@@ -56,7 +56,7 @@ void bench_elementary(benchmark::State& state, unsigned bits) {
 // alone: two directed roundings per operation against one.
 template <class T>
 void bench_in_place(benchmark::State& state, unsigned bits) {
-  const mp_precision_scope scope(std::is_same_v<T, mpfi> ? mpfi_working_bits(bits) : bits);
+  const mp_precision_scope scope(scalar_traits<T>::working_bits(bits));
   T a = T(1) / 3, b = T(2) / 7, c = T(5) / 11, s;
   for (auto _ : state) {
     if constexpr (std::is_same_v<T, mpfr>) {
@@ -126,16 +126,16 @@ class ratio_reporter : public benchmark::ConsoleReporter {
 }  // namespace
 
 int main(int argc, char** argv) {
-  for (const char* s : scenes) {
-    benchmark::RegisterBenchmark((std::string("double/") + s).c_str(), bench_scene<double>, s, 0u);
-    benchmark::RegisterBenchmark((std::string("dd/") + s).c_str(), bench_scene<dd>, s, 0u);
-    benchmark::RegisterBenchmark((std::string("float128/") + s).c_str(), bench_scene<float128>, s, 0u);
-    benchmark::RegisterBenchmark((std::string("interval/") + s).c_str(), bench_scene<interval>, s, 0u);
-    benchmark::RegisterBenchmark((std::string("mpfr113/") + s).c_str(), bench_scene<mpfr>, s, 113u);
-    benchmark::RegisterBenchmark((std::string("mpfi113/") + s).c_str(), bench_scene<mpfi>, s, 113u);
-    benchmark::RegisterBenchmark((std::string("mpfr256/") + s).c_str(), bench_scene<mpfr>, s, 256u);
-    benchmark::RegisterBenchmark((std::string("mpfi256/") + s).c_str(), bench_scene<mpfi>, s, 256u);
-  }
+  for (const char* s : scenes)
+    for (const scalar_info& scalar : standard_scalar_infos()) {
+      if (!scalar.runtime_precision) {
+        benchmark::RegisterBenchmark((scalar.name + "/" + s).c_str(), bench_scene, scalar.name, std::nullopt, s);
+        continue;
+      }
+      for (unsigned bits : {113u, 256u})
+        benchmark::RegisterBenchmark((scalar.name + std::to_string(bits) + "/" + s).c_str(), bench_scene, scalar.name,
+                                     std::optional<unsigned>(bits), s);
+    }
   for (unsigned bits : {113u, 256u}) {
     benchmark::RegisterBenchmark(("elementary/mpfr" + std::to_string(bits)).c_str(), bench_elementary<mpfr>, bits);
     benchmark::RegisterBenchmark(("elementary/mpfi" + std::to_string(bits)).c_str(), bench_elementary<mpfi>, bits);

@@ -11,7 +11,7 @@ find_library(APPELL_QD_LIB qd)
 # libquadmath sits in the compiler's own library directory.
 find_library(APPELL_QUADMATH_LIB NAMES quadmath libquadmath.so.0
   HINTS ${CMAKE_CXX_IMPLICIT_LINK_DIRECTORIES})
-find_package_handle_standard_args(AppellDeps REQUIRED_VARS
+find_package_handle_standard_args(AppellDeps NAME_MISMATCHED REQUIRED_VARS
   APPELL_MPFR_INCLUDE APPELL_MPFI_INCLUDE APPELL_QD_INCLUDE
   APPELL_MPFR_LIB APPELL_MPFI_LIB APPELL_GMP_LIB APPELL_QD_LIB APPELL_QUADMATH_LIB)
 if(AppellDeps_FOUND AND NOT TARGET appell::deps)

@@ -71,9 +71,9 @@ bool run() {
             << to_string(lagrange.accelerations(0)) << "  textbook " << to_string(r_ddot) << "\n  H     Cotton "
             << to_string(cotton.reactions(0)) << "  Lagrange " << to_string(lagrange.reactions(0)) << "  textbook "
             << to_string(H) << "\n";
-  auto agree = [](const T& x, const T& y) {
-    if constexpr (scalar_traits<T>::is_interval) return !(upper(x) < lower(y) || upper(y) < lower(x));
-    else return std::abs(x - y) <= 1e-12 * (std::abs(y) + 1);
+  auto agree = [](const T& x, const T& y) {  // the library's admissibility predicate (scalar/policy.hpp)
+    using std::abs;
+    return consistent_with_zero(T(x - y), T(abs(y) + T(1)));
   };
   return agree(cotton.reactions(0), H) && agree(lagrange.reactions(0), H) && agree(cotton.accelerations(0), r_ddot) &&
          agree(lagrange.accelerations(0), r_ddot);

@@ -76,13 +76,11 @@ bool run() {
             << to_string(v_dot_cotton) << "  textbook " << to_string(v_dot) << "\n  lateral  Cotton "
             << to_string(cotton.reactions(0)) << "  Lagrange " << to_string(lagrange.reactions(0)) << "  textbook "
             << to_string(lateral) << "\n";
-  auto agree = [](const T& x, const T& y) {
-    if constexpr (scalar_traits<T>::is_interval) return !(upper(x) < lower(y) || upper(y) < lower(x));
-    else {
-      using std::abs;
-      return abs(x - y) <= T(1e-12) * (abs(y) + 1);
-    }
+  auto agree = [](const T& x, const T& y) {  // the library's admissibility predicate (scalar/policy.hpp)
+    using std::abs;
+    return consistent_with_zero(T(x - y), T(abs(y) + T(1)));
   };
+
   return agree(cotton.accelerations(2), w_dot) && agree(lagrange.accelerations(2), w_dot) &&
          agree(v_dot_cotton, v_dot) && agree(cotton.reactions(0), lateral) && agree(lagrange.reactions(0), lateral);
 }

@@ -7,7 +7,7 @@
 
 #include <functional>
 
-#include "appell/io/scene.hpp"
+#include "appell/io/models/top_on_cone.hpp"
 
 namespace appell::proof {
 
@@ -21,10 +21,11 @@ struct top_box_result {
 
 inline void for_each_sub_box(int splits, const std::function<void(const top_box_result&)>& visit) {
   const scene_input s = read_scene_file(APPELL_SOURCE_DIR "/data/scenes/top_on_cone.json");
-  const auto& in = std::get<top_on_cone_input>(s.input);
+  const auto& in = s.as<top_on_cone_input>();
   using T = interval;
   const heavy_top<T> top{value<T>(in.A), value<T>(in.C), value<T>(in.mass), value<T>(in.l), value<T>(in.gravity)};
-  const bound_expression<T> fprime(*in.fprime);
+  const expression_cone<T> cone{bound_expression<T>(*in.f), bound_expression<T>(*in.fprime),
+                                bound_expression<T>(*in.fsecond)};
   auto piece = [&](const char* lo, const char* hi, int i, int n) {  // i-th of n equal pieces of [lo, hi]
     const T a = from_decimal<T>(lo), b = from_decimal<T>(hi);
     const T l = a + (b - a) * T(i) / T(n), u = a + (b - a) * T(i + 1) / T(n);
@@ -34,28 +35,25 @@ inline void for_each_sub_box(int splits, const std::function<void(const top_box_
     for (int j = 0; j < splits; ++j)
       for (int k = 0; k < splits; ++k)
         for (int m = 0; m < 2; ++m) {
+          const evaluation_scope<T> scope;  // the library's policy for interval evaluations
           top_box_result r;
           r.theta = piece("0.6", "0.8", i, splits);
           r.theta_dot = piece("1.0", "1.4", j, splits);
           r.phi_dot = piece("38", "42", k, splits);
           r.phi = piece("0.2", "0.4", m, 2);
-          r.fprime = in.fprime->eval(r.theta);
-          vector_t<T> q(3), v_a(2), u(3);
-          q << in.f->eval(r.theta), r.theta, r.phi;
-          v_a << r.theta_dot, r.phi_dot;
-          const auto sys = change_speeds(top, cone_speeds<T>{&fprime}, 3);
-          r.cotton = cotton_reactions(sys, q, v_a, T(0), 1);
-          r.H = r.cotton.reactions(0);
-          r.theta_ddot = r.cotton.free_accelerations(0);
-          r.phi_ddot = r.cotton.free_accelerations(1);
-          u << r.fprime * r.theta_dot, r.theta_dot, r.phi_dot;
-          const auto lag = lagrange_multipliers(top, cone_constraint<T>{&fprime}, q, u, T(0));
-          r.lambda = lag.reactions(0);
-          r.theta_ddot_lagrange = lag.accelerations(1);
-          vector_t<T> v(3), g(3);
-          v << r.theta_dot, r.phi_dot, T(0);
-          g << T(0), T(0), r.H;
-          r.couple = constraint_couple(differentiate_kinematics(sys, q, v, T(0))[0], g);
+          r.fprime = cone.fprime(r.theta);
+          // the shipped result function, over the sub-box
+          const top_on_cone_state<T> state{cone.psi(r.theta), r.theta, r.phi, r.theta_dot, r.phi_dot};
+          const top_on_cone_result<T> motion = top_on_cone_motion(top, cone, state);
+          r.cotton = motion.cotton;
+          r.H = motion.H;
+          r.theta_ddot = motion.theta_ddot;
+          r.phi_ddot = motion.phi_ddot;
+          r.lambda = motion.lagrange_multiplier;
+          r.theta_ddot_lagrange = motion.theta_ddot_lagrange;
+          r.couple = motion.couple;
+          vector_t<T> q(3);
+          q << state.psi, state.theta, state.phi;
           heavy_top<T>::axes(q, r.n, r.ez);
           r.e3 = vec3<T>(T(0), T(0), T(1));
           visit(r);

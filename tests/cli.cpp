@@ -25,7 +25,7 @@ std::string slurp(const std::string& path) {
   return s.str();
 }
 
-const std::filesystem::path work = std::filesystem::temp_directory_path() / "appell_cli_test";
+const std::filesystem::path work = APPELL_TEST_TMPDIR;  // per build (tests/CMakeLists.txt)
 
 outcome run(const std::string& args) {
   std::filesystem::create_directories(work);

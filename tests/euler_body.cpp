@@ -10,7 +10,7 @@
 
 #include <random>
 
-#include "appell/io/scene.hpp"
+#include "appell/io/models/euler_body.hpp"
 
 using namespace appell;
 
@@ -75,7 +75,7 @@ std::string random_decimal(std::mt19937_64& rng, bool positive) {
 
 template <class T>
 void check_scene(const scene_input& scene, double c_factor, long& checked) {
-  const auto& in = std::get<euler_body_input>(scene.input);
+  const auto& in = scene.as<euler_body_input>();
   const auto exact = exact_omega_dot(in);
   const evaluation<T> e = evaluate<T>(scene);
   const auto& r = e.result("omega_dot");
@@ -138,13 +138,12 @@ long check_all(double c_factor) {
     } while (decimal_sign_of_sum({{1, A}, {1, B}, {-1, C}}) < 0 ||
              decimal_sign_of_sum({{1, B}, {1, C}, {-1, A}}) < 0 ||
              decimal_sign_of_sum({{1, C}, {1, A}, {-1, B}}) < 0);
-    scene_input s;
-    s.model = "euler_body";
     auto f = [](std::string t) { return decimal_field{std::move(t), "random"}; };
-    s.input = euler_body_input{{f(A), f(B), f(C)},
-                               {f("0"), f(random_decimal(rng, false)), f("0")},
-                               {f(random_decimal(rng, false)), f(random_decimal(rng, false)), f(random_decimal(rng, false))}};
-    check_scene<T>(s, c_factor, checked);
+    euler_body_input in;
+    in.inertia = {f(A), f(B), f(C)};
+    in.torque = {f("0"), f(random_decimal(rng, false)), f("0")};
+    in.omega = {f(random_decimal(rng, false)), f(random_decimal(rng, false)), f(random_decimal(rng, false))};
+    check_scene<T>(make_scene<euler_body_model>(std::move(in)), c_factor, checked);
   }
   return checked;
 }

@@ -17,7 +17,7 @@ namespace appell::cli {
 inline std::vector<mpfr_value> reference_values(const scene_input& scene, unsigned bits) {
   mp_precision_scope scope(bits);
   std::vector<mpfr_value> ref;
-  for (const auto& r : compute<mpfr>(bind<mpfr>(scene)).results)
+  for (const auto& r : compute<mpfr>(prepare<mpfr>(scene)).results)
     for (const mpfr& x : r.values) {
       mpfr_value v;
       to_mpfr_exact(x, v);

@@ -55,7 +55,9 @@ outcome run(const scene_input& scene, const std::vector<mpfr_value>* ref) {
 int extremes(const extremes_options& o) {
   std::filesystem::create_directories(o.out_dir);
   const auto sweeps = extreme_sweeps();
-  const char* scalars[] = {"double", "long-double", "dd", "float128", "mpfr113", "interval", "mpfi113"};
+  // Every standard scalar; those of run-time precision at 113 bits (float128's).
+  std::vector<std::string> scalars;
+  for (const scalar_info& s : standard_scalar_infos()) scalars.push_back(s.runtime_precision ? s.name + "113" : s.name);
   std::cout << "appell extremes: correct digits (vs mpfr 2048 bits); 'R' = refused with a reason (exit 3)\n";
   std::size_t done = 0, total = 0;
   for (const auto& w : sweeps) total += w.points.size();
@@ -63,7 +65,7 @@ int extremes(const extremes_options& o) {
     std::ofstream csv(std::filesystem::path(o.out_dir) / (w.name + ".csv"));
     csv << "sweep,param,x,scalar,bits,status,correct_digits,rel_width,error_amplification,reason\n";
     std::cout << "\n" << w.what << "\n" << std::left << std::setw(22) << w.x_label;
-    for (const char* s : scalars) std::cout << std::right << std::setw(12) << s;
+    for (const std::string& s : scalars) std::cout << std::right << std::setw(12) << s;
     std::cout << "\n";
     std::map<std::string, std::vector<std::pair<double, double>>> series;
     for (const auto& p : w.points) {
@@ -77,20 +79,15 @@ int extremes(const extremes_options& o) {
       }
       const std::vector<mpfr_value>* r = ref ? &*ref : nullptr;
       std::cout << std::left << std::setw(22) << figure(p.x, 4);
-      for (const char* s : scalars) {
-        const std::string name = s;
-        outcome out;
+      for (const std::string& name : scalars) {
+        const bool mp = name.size() > 3 && name.compare(name.size() - 3, 3, "113") == 0;
         unsigned bits = 0;
-        if (name == "double") out = run<double>(scene, r), bits = 53;
-        else if (name == "long-double") out = run<long double>(scene, r), bits = 64;
-        else if (name == "dd") out = run<dd>(scene, r), bits = 106;
-        else if (name == "float128") out = run<float128>(scene, r), bits = 113;
-        else if (name == "interval") out = run<interval>(scene, r), bits = 53;
-        else {
-          mp_precision_scope scope(113);
-          bits = scope.bits();
-          out = name == "mpfr113" ? run<mpfr>(scene, r) : run<mpfi>(scene, r);
-        }
+        const outcome out = with_scalar(mp ? name.substr(0, name.size() - 3) : name,
+                                        mp ? std::optional<unsigned>(113) : std::nullopt,
+                                        [&]<class T>(std::type_identity<T>) {
+                                          bits = scalar_traits<T>::precision_bits();
+                                          return run<T>(scene, r);
+                                        });
         csv << w.name << "," << p.param << "," << p.x << "," << name << "," << bits << "," << out.status << ","
             << figure(out.digits, 4) << "," << figure(out.rel_width) << "," << figure(out.amplification) << ",\""
             << out.why << "\"\n";
@@ -105,7 +102,7 @@ int extremes(const extremes_options& o) {
     {
       std::ofstream f(dat);
       int block = 0;
-      for (const char* s : scalars) {
+      for (const std::string& s : scalars) {
         for (const auto& [x, d] : series[s]) f << x << " " << d << "\n";
         f << "\n\n";
         plot += std::string(block ? ", " : "") + "'" + dat.string() + "' index " + std::to_string(block) +

@@ -19,7 +19,8 @@ constexpr const char* usage_text =
     "       appell tradeoff SCENE [--out DIR] [--reps N]\n"
     "       appell extremes [--out DIR]\n"
     "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
-    "  --bits N: precision of mpfr and mpfi (default 256)\n"
+    "  --bits N: precision of mpfr and mpfi (default 256): mpfi gets exactly N bits; mpfr the\n"
+    "            smallest count >= N that Boost's decimal-digit precision can set (reported)\n"
     "  tradeoff: speed and accuracy of every scalar; writes DIR/tradeoff.csv and DIR/tradeoff.png\n";
 
 struct options {
@@ -32,12 +33,6 @@ struct options {
 int usage(const std::string& why) {
   std::cerr << "appell: " << why << "\n" << usage_text;
   return 1;
-}
-
-template <class T>
-std::string run(const appell::scene_input& scene, const std::string& format) {
-  const appell::evaluation<T> e = appell::evaluate<T>(scene);
-  return format == "json" ? appell::format_json<T>(scene, e) : appell::format_text<T>(scene, e);
 }
 
 // One mapping from exceptions to exit statuses for every command (SCENES.md):
@@ -65,15 +60,10 @@ int exit_status_of_current_exception() {
 }
 
 std::string dispatch(const appell::scene_input& scene, const options& o) {
-  using namespace appell;
-  if (o.scalar == "double") return run<double>(scene, o.format);
-  if (o.scalar == "long-double") return run<long double>(scene, o.format);
-  if (o.scalar == "dd") return run<dd>(scene, o.format);
-  if (o.scalar == "float128") return run<float128>(scene, o.format);
-  if (o.scalar == "mpfr") return run<mpfr>(scene, o.format);
-  if (o.scalar == "interval") return run<interval>(scene, o.format);
-  if (o.scalar == "mpfi") return run<mpfi>(scene, o.format);
-  throw appell::input_error("--scalar: unknown scalar '" + o.scalar + "'");
+  return appell::with_scalar(o.scalar, o.bits, [&]<class T>(std::type_identity<T>) {
+    const appell::evaluation<T> e = appell::evaluate<T>(scene);
+    return o.format == "json" ? appell::format_json<T>(scene, e) : appell::format_text<T>(scene, e);
+  });
 }
 
 }  // namespace
@@ -150,10 +140,6 @@ int main(int argc, char** argv) {
   try {
     if (o.format != "json" && o.format != "text")
       throw appell::input_error("--format: expected json or text, got '" + o.format + "'");
-    if (o.bits && o.scalar != "mpfr" && o.scalar != "mpfi")
-      throw appell::input_error("--bits: applies to mpfr and mpfi only (" + o.scalar +
-                                " has a fixed precision)");
-    appell::set_mp_precision_bits(o.bits.value_or(256));
     const appell::scene_input scene = appell::read_scene_file(o.scene);
     const std::string out = dispatch(scene, o);
     std::cout << out;

@@ -47,22 +47,22 @@ struct contestant {
   std::function<void()> batch;  ///< runs r.batch evaluations
 };
 
+// Called inside with_scalar: for mpfr and mpfi the precision is already set.
 template <class T>
-contestant prepare(const scene_input& scene, const std::vector<mpfr_value>& ref, unsigned bits) {
+contestant enter(const scene_input& scene, const std::vector<mpfr_value>& ref) {
   contestant c;
   c.r.scalar = scalar_traits<T>::name;
-  std::optional<mp_precision_scope> scope;
-  if (bits) scope.emplace(bits);
   c.r.bits = scalar_traits<T>::precision_bits();
+  const unsigned bits = scalar_traits<T>::runtime_precision ? mp_precision_bits() : 0;
   try {
-    auto bound = std::make_shared<bound_scene<T>>(bind<T>(scene));
-    const accuracy a = measure_accuracy(compute<T>(*bound), ref, 1233.0);  // 4096 bits ~ 1233 digits
+    auto prepared = std::make_shared<prepared_scene<T>>(prepare<T>(scene));
+    const accuracy a = measure_accuracy(compute<T>(*prepared), ref, 1233.0);  // 4096 bits ~ 1233 digits
     c.r.digits = a.digits;
     c.r.rel_width = a.rel_width;
-    auto run = [bound, bits](long n) {
+    auto run = [prepared, bits](long n) {
       std::optional<mp_precision_scope> s;
       if (bits) s.emplace(bits);
-      for (long i = 0; i < n; ++i) (void)compute<T>(*bound);
+      for (long i = 0; i < n; ++i) (void)compute<T>(*prepared);
     };
     // batch size: enough evaluations for >= 1 ms (shorter batches, run right after a
     // heavy scalar's, paid for cold caches: interval/double read 3.9-4.0 at 100 us
@@ -91,26 +91,23 @@ int tradeoff(const tradeoff_options& o) {
   const scene_input scene = read_scene_file(o.scene);
   const std::vector<mpfr_value> ref = reference_values(scene, 4096);
   struct job {
-    const char* name;
+    std::string name;
     unsigned bits;
   };
-  const std::vector<job> jobs = {{"double", 0},  {"long-double", 0}, {"dd", 0},     {"float128", 0},
-                                 {"mpfr", 64},   {"mpfr", 113},      {"mpfr", 256}, {"mpfr", 1024},
-                                 {"interval", 0}, {"mpfi", 64},      {"mpfi", 113}, {"mpfi", 256},
-                                 {"mpfi", 1024}};
+  // Every standard scalar; those of run-time precision at four precisions.
+  std::vector<job> jobs;
+  for (const scalar_info& s : standard_scalar_infos())
+    if (s.runtime_precision)
+      for (unsigned b : {64u, 113u, 256u, 1024u}) jobs.push_back({s.name, b});
+    else
+      jobs.push_back({s.name, 0});
   std::vector<contestant> field;
   for (std::size_t j = 0; j < jobs.size(); ++j) {
     std::cerr << "\rpreparing [" << j + 1 << "/" << jobs.size() << "] " << jobs[j].name
               << (jobs[j].bits ? " " + std::to_string(jobs[j].bits) : std::string()) << "          " << std::flush;
-    const std::string n = jobs[j].name;
-    const unsigned b = jobs[j].bits;
-    if (n == "double") field.push_back(prepare<double>(scene, ref, 0));
-    else if (n == "long-double") field.push_back(prepare<long double>(scene, ref, 0));
-    else if (n == "dd") field.push_back(prepare<dd>(scene, ref, 0));
-    else if (n == "float128") field.push_back(prepare<float128>(scene, ref, 0));
-    else if (n == "mpfr") field.push_back(prepare<mpfr>(scene, ref, b));
-    else if (n == "interval") field.push_back(prepare<interval>(scene, ref, 0));
-    else field.push_back(prepare<mpfi>(scene, ref, b));
+    const std::optional<unsigned> bits = jobs[j].bits ? std::optional<unsigned>(jobs[j].bits) : std::nullopt;
+    field.push_back(with_scalar(jobs[j].name, bits,
+                                [&]<class T>(std::type_identity<T>) { return enter<T>(scene, ref); }));
   }
   // Round robin: each repetition times one batch of every scalar in turn, so a
   // slow spell of the machine falls on all of them and the ratios stay fair.

@@ -12,6 +12,7 @@
 
 #include <boost/multiprecision/detail/digits.hpp>
 
+#include <atomic>
 #include <cctype>
 #include <cmath>
 #include <initializer_list>
@@ -28,33 +29,33 @@ unsigned digits10_holding(unsigned bits) {
 }
 }  // namespace
 
+namespace {
+// The bits asked for by the last set_mp_precision_bits (those of new mpfi values).
+// Process-wide, as Boost's own default precision is.
+std::atomic<unsigned> requested_bits{0};
+}  // namespace
+
 unsigned set_mp_precision_bits(unsigned bits) {
   if (bits < 2) throw parse_error("precision must be at least 2 bits");
-  const unsigned d10 = digits10_holding(bits);
-  mpfr::default_precision(d10);
-  mpfi::default_precision(d10);
-  return mp_precision_bits();
-}
-
-unsigned mp_precision_filling_limbs(unsigned least_bits) {
-  namespace bmd = boost::multiprecision::detail;
-  const unsigned limb_bits = (least_bits + 63) / 64 * 64;
-  unsigned d10 = digits10_holding(least_bits);
-  while (bmd::digits10_2_2(d10 + 1) <= limb_bits) ++d10;
-  return static_cast<unsigned>(bmd::digits10_2_2(d10));
+  mpfr::default_precision(digits10_holding(bits));
+  mp::mpfi_backend::default_bits(bits);
+  requested_bits = bits;
+  return bits;
 }
 
 unsigned mp_precision_bits() {
+  const unsigned b = requested_bits;
+  return b ? b : mpfr_precision_bits();  // before any set: Boost's default, as mpfr
+}
+
+unsigned mpfr_precision_bits() {
   return boost::multiprecision::detail::digits10_2_2(mpfr::default_precision());
 }
 
 mp_precision_scope::mp_precision_scope(unsigned bits)
-    : saved_digits10_(mpfr::default_precision()), bits_(set_mp_precision_bits(bits)) {}
+    : saved_bits_(mp_precision_bits()), bits_(set_mp_precision_bits(bits)) {}
 
-mp_precision_scope::~mp_precision_scope() {
-  mpfr::default_precision(saved_digits10_);
-  mpfi::default_precision(saved_digits10_);
-}
+mp_precision_scope::~mp_precision_scope() { set_mp_precision_bits(saved_bits_); }
 
 namespace {
 

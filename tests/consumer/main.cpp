@@ -1,5 +1,6 @@
 // Uses the installed library: an enclosure of Euler's equations and a scene.
 #include <appell/io/scene.hpp>
+#include <appell/scenes/euler_body.hpp>
 #include <iostream>
 
 int main(int argc, char** argv) {

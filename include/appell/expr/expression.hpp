@@ -39,13 +39,15 @@ class expression {
   std::string to_string() const;
   const std::string& where() const { return where_; }
 
-  /// The value at x (S a scalar or a dual of one); decimal constants are
-  /// converted at each call.  For repeated evaluation bind<T>() them once.
+  /// The value at x (S a scalar or a dual of one); decimal constants and pi
+  /// are converted to the scalar at each call.  For repeated evaluation use a
+  /// bound_expression<T> (below), which converts them once.
   template <class S>
   S eval(const S& x) const {
     return eval_node<S>(root_, x, nullptr);
   }
-  /// The expression with its constants converted to T once (bound_expression).
+  /// The constants converted to T, one slot per node (the value for a number or
+  /// pi node, 0 for the others): what bound_expression<T> holds.
   template <class T>
   std::vector<T> constants() const {
     std::vector<T> c(nodes_.size(), T(0));
@@ -55,6 +57,8 @@ class expression {
     }
     return c;
   }
+  /// The value at x with the constants taken from `constants` (as returned by
+  /// constants<base_scalar_t<S>>()) instead of converted again.
   template <class S>
   S eval_bound(const S& x, const std::vector<base_scalar_t<S>>& constants) const {
     return eval_node<S>(root_, x, &constants);
@@ -153,7 +157,8 @@ S expression::eval_node(int i, const S& x, const std::vector<base_scalar_t<S>>* 
   throw std::logic_error("expression: unknown node");
 }
 
-/// An expression with its constants in T, for repeated evaluation on T and dual<T>.
+/// An expression with its constants in T, for repeated evaluation on T and
+/// dual<T>.  It refers to the expression, which must outlive it.
 template <Scalar T>
 class bound_expression {
  public:

@@ -29,13 +29,9 @@
 #include <string>
 
 #include "appell/scalar/eigen.hpp"
+#include "appell/scalar/policy.hpp"
 
 namespace appell {
-
-/// A result that could not be certified (exit status 3 of the `appell` tool).
-struct certification_error : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 namespace detail {
 
@@ -87,14 +83,11 @@ vector_t<T> product(const matrix_t<T>& A, const vector_t<T>& x) {
   return y;
 }
 
-/// Encloses I - R A for a double matrix R and an interval matrix A by
-/// midpoint-radius arithmetic (Rump): with A in [Am - Ar, Am + Ar],
-///   I - R A  in  [I - RU(R Am) - RU(|R| Ar),  I - RD(R Am) + RU(|R| Ar)],
-/// where RU / RD are products with every operation rounded up / down (the
-/// latter as -RU((-R) Am)).  n^3 double operations instead of n^3 interval ones.
-// The three products of identity_minus_product in one pass, every operation in the
-// caller's rounding mode (upward): up >= R Am, neg_down >= -(R Am), rad >= |R| Ar.
-// Out of line so that no operation of it can be moved across the mode switch.
+/// The three double products of identity_minus_product_into (below) in one
+/// pass: up = RU(R Am) >= R Am, neg_down = RU((-R) Am) >= -(R Am) and
+/// rad = RU(|R| Ar) >= |R| Ar, every operation in the caller's rounding mode,
+/// which must be upward.  Out of line (and the asm barrier at the end) so that
+/// no operation of it can be moved across the caller's mode switch.
 template <class DM>
 [[gnu::noinline]] void rump_products(const DM& R, const DM& Am, const DM& Ar, DM& up, DM& neg_down, DM& rad) {
   const Eigen::Index n = R.rows(), m = Am.cols(), K = R.cols();
@@ -114,7 +107,15 @@ template <class DM>
   asm volatile("" : : "r"(up.data()), "r"(neg_down.data()), "r"(rad.data()) : "memory");
 }
 
-// DM: a double matrix type, IMA/IMC: interval matrix types (heap or fixed-capacity storage).
+/// C = an enclosure of I - R A for a double matrix R and an interval matrix A,
+/// by midpoint-radius arithmetic (Rump): with A in [Am - Ar, Am + Ar],
+///   I - R A  in  [I - RU(R Am) - RU(|R| Ar),  I - RD(R Am) + RU(|R| Ar)],
+/// where RU / RD are products with every operation rounded up / down (the
+/// latter as -RU((-R) Am)); Am, Ar and the products are formed in one upward-
+/// rounding scope (rump_products).  n^3 double operations instead of n^3
+/// interval ones.
+/// DM: a double matrix type, IMA/IMC: interval matrix types (heap or
+/// fixed-capacity storage).
 template <class DM, class IMA, class IMC>
 void identity_minus_product_into(const DM& R, const IMA& A, IMC& C) {
   const Eigen::Index n = A.rows();

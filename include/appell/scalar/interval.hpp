@@ -46,11 +46,15 @@ struct domain_error : std::domain_error {
 
 // Rounding for interval<double>.  Every operation needs the SSE unit in
 // upward mode; lower bounds are computed by negation, -((-x) - y), so only
-// that one mode is ever needed.  Each operation reads the mode (one MXCSR
-// read) and, only if it is not upward, sets it and restores it afterwards:
-// correct anywhere, and cheap inside an `upward_rounding` scope, which sets
-// the mode once for a whole evaluation (Boost's save_state would switch
-// twice per operation, ~70x slower than double).
+// that one mode is ever needed (sqrt_down, the one exception, switches to
+// downward and back itself).  Every operation constructs an interval_rounding
+// (below), which first tests a thread-local flag, detail::upward_known, set by
+// an `upward_rounding` scope: inside one it does nothing at all -- no MXCSR
+// read, no switch -- because the scope set the mode once for the whole
+// evaluation.  Outside any scope (or inside a nearest_rounding one) it reads
+// MXCSR and, only if the mode is not upward, sets it and restores it when the
+// operation ends: correct anywhere, fast inside a scope (Boost's save_state
+// would switch twice per operation, ~70x slower than double).
 // Every operand and result passes through an empty `asm volatile`: without
 // it GCC, even with -frounding-math, folds or reuses a result computed in
 // another rounding mode (measured here: the upper bound of [1]/[3], computed

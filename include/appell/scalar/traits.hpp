@@ -11,6 +11,13 @@
 //   to_mpfr(x, lo, hi)              the bounds of x, exactly, as MPFR numbers
 //   from_mpfr(v)                    v rounded to nearest (point) / enclosed (interval)
 //   from_mpfr_bounds(lo, hi)        interval types: the enclosure of [lo, hi]
+//   runtime_precision               precision chosen at run time (mpfr, mpfi: --bits)
+//   working_bits(p)                 the evaluation policy's working precision for
+//                                   p-bit results (guard bits: mpfi; p otherwise)
+//   needs_upward_rounding           interval<double>: evaluations run in one
+//                                   upward-rounding scope
+// The evaluation policy built on them (evaluation_scope, consistent_with_zero)
+// is in scalar/policy.hpp.
 //
 // Library code never compares interval values with < or ==: an undecided
 // comparison throws (mp::interval_error for mpfi).  It uses the predicates at the end of
@@ -77,6 +84,9 @@ template <class T>
 struct point_traits_base {
   static constexpr bool is_interval = false;
   static constexpr bool is_rigorous = false;
+  static constexpr bool runtime_precision = false;
+  static constexpr bool needs_upward_rounding = false;
+  static unsigned working_bits(unsigned p) { return p; }
   using bound_type = T;
   static T lower(const T& x) { return x; }
   static T upper(const T& x) { return x; }
@@ -119,7 +129,11 @@ struct scalar_traits<float128> : point_traits_base<float128> {
 template <>
 struct scalar_traits<mpfr> : point_traits_base<mpfr> {
   static constexpr const char* name = "mpfr";
-  static unsigned precision_bits() { return mp_precision_bits(); }
+  static constexpr bool runtime_precision = true;
+  /// The bits new values get: Boost 1.74 sets mpfr_float's precision in decimal
+  /// digits, so this is the smallest reachable count >= the bits asked for
+  /// (113 -> 114); see mpfr_precision_bits() in types.hpp.
+  static unsigned precision_bits() { return mpfr_precision_bits(); }
   static mpfr from_mpfr(mpfr_srcptr v) { return round_to_mpfr(v, MPFR_RNDN); }
 };
 
@@ -129,6 +143,9 @@ struct scalar_traits<interval> {
   static constexpr const char* name = "interval";
   static constexpr bool is_interval = true;
   static constexpr bool is_rigorous = true;
+  static constexpr bool runtime_precision = false;
+  static constexpr bool needs_upward_rounding = true;
+  static unsigned working_bits(unsigned p) { return p; }
   using bound_type = double;
   static unsigned precision_bits() { return 53; }
   static double lower(const interval& x) { return x.lower(); }
@@ -162,6 +179,13 @@ struct scalar_traits<mpfi> {
   static constexpr const char* name = "mpfi";
   static constexpr bool is_interval = true;
   static constexpr bool is_rigorous = true;
+  static constexpr bool runtime_precision = true;
+  static constexpr bool needs_upward_rounding = false;
+  /// Guard bits: the dependency effects of naive interval evaluation, which
+  /// magnify the input enclosures' width by up to ~10^3 on the paper scenes,
+  /// are paid in at least 12 extra bits and the rest of the last 64-bit limb,
+  /// which costs nothing (MPFR works limb by limb): 113 bits work at 128, 256 at 320.
+  static unsigned working_bits(unsigned p) { return (p + 12 + 63) / 64 * 64; }
   using bound_type = mpfr;
   static unsigned precision_bits() { return mp_precision_bits(); }
   static mpfr lower(const mpfi& x) { return mpfi_lower(x); }

@@ -15,6 +15,10 @@
 // bounds in one allocation), not Boost's mpfi_float_backend.
 #pragma once
 
+#if defined(__GNUC__) && defined(__STRICT_ANSI__)
+#error "appell needs the GNU dialect (-std=gnu++20): Boost's float128 does not compile in strict ISO mode. With CMake, leave CXX_EXTENSIONS on (the default) for targets that use appell."
+#endif
+
 #include <boost/multiprecision/float128.hpp>
 #include <boost/multiprecision/mpfr.hpp>
 #include <qd/dd_real.h>
@@ -30,17 +34,16 @@ using mpfr = boost::multiprecision::number<boost::multiprecision::mpfr_float_bac
 using mpfi = boost::multiprecision::number<mp::mpfi_backend, boost::multiprecision::et_off>;
 using dd = ::dd_real;
 
-/// Sets the working precision of `mpfr` and `mpfi` (for values created after the
-/// call, on this thread and others).  Boost 1.74 counts precision in decimal
-/// digits; the precision actually set is the smallest one of at least `bits`
-/// bits, and is returned.
+/// Sets the precision of new `mpfr` and `mpfi` values (on this thread and
+/// others) and returns `bits`.  `mpfi` (appell's own backend) gets exactly
+/// `bits` bits.  `mpfr` (Boost 1.74's mpfr_float, whose precision is set in
+/// decimal digits) gets the smallest reachable count of at least `bits` bits:
+/// 113 -> 114, 256 -> 257; mpfr_precision_bits() tells which.
 unsigned set_mp_precision_bits(unsigned bits);
-/// The precision, in bits, that new `mpfr` and `mpfi` values get.
+/// The precision, in bits, asked for by the last set_mp_precision_bits (that of new `mpfi` values).
 unsigned mp_precision_bits();
-/// The largest precision set_mp_precision_bits can set that takes no more
-/// 64-bit limbs than `least_bits` does (and is at least `least_bits`): extra
-/// bits that MPFR computes for free.
-unsigned mp_precision_filling_limbs(unsigned least_bits);
+/// The precision, in bits, that new `mpfr` values get (>= mp_precision_bits()).
+unsigned mpfr_precision_bits();
 
 /// RAII: sets the mp precision for a scope and restores it.
 class mp_precision_scope {
@@ -52,7 +55,7 @@ class mp_precision_scope {
   unsigned bits() const { return bits_; }
 
  private:
-  unsigned saved_digits10_;
+  unsigned saved_bits_;
   unsigned bits_;
 };
 

@@ -7,12 +7,15 @@
 //            + (B - A) p q r' + ..., and dS/dp' = L etc. give
 //   A p' = (B - C) q r + L,   B q' = (C - A) r p + M,   C r' = (A - B) p q + N.
 // euler_omega_dot() writes them directly (the reference of the tests);
-// euler_system is the same body for the generic Gibbs-Appell path, which the
-// `appell eval` model uses: components on the body axes, a frame turning with
-// omega itself, speeds u = (p, q, r), parameters with lambda' = p, ... (sec. 3).
+// euler_system is the same body for the generic Gibbs-Appell path:
+// components on the body axes, a frame turning with omega itself, speeds
+// u = (p, q, r), parameters with lambda' = p, ... (sec. 3).
+// euler_body_motion() is the result function `appell eval` calls: the generic
+// path, and the checks eq. (4) and the power balance.
 #pragma once
 
 #include "appell/dynamics/system.hpp"
+#include "appell/dynamics/virtual_work.hpp"
 
 namespace appell {
 
@@ -64,5 +67,26 @@ struct euler_system {
     out.push_back(b);
   }
 };
+
+template <Scalar T>
+struct euler_body_result {
+  vec3<T> omega_dot;        ///< (p', q', r')
+  T virtual_work_residual;  ///< eq. (4): 0 on the motion
+  T power_residual;         ///< omega . (I omega') - omega . torque: 0 on the motion
+};
+
+/// Euler's body through the generic Gibbs-Appell path at angular velocity omega.
+template <Scalar T>
+euler_body_result<T> euler_body_motion(const euler_body<T>& body, const vec3<T>& omega) {
+  const euler_system<T> sys{body};
+  const vector_t<T> q = vector_t<T>::Zero(3), u = omega;
+  const appell_equations<T> eq = gibbs_appell(sys, q, u, T(0));
+  const vector_t<T> udot = eq.accelerations();
+  euler_body_result<T> r;
+  r.omega_dot = vec3<T>(udot(0), udot(1), udot(2));
+  r.virtual_work_residual = virtual_work_residual(sys, eq, q, u, T(0), udot, vector_t<T>(vector_t<T>::Ones(3)));
+  r.power_residual = euler_power_residual(body, omega, r.omega_dot);
+  return r;
+}
 
 }  // namespace appell

@@ -16,28 +16,89 @@
 // cone_speeds:        Cotton's change (18), psi = psi_1 + f(theta): speeds
 //                     v = (theta', phi', psi_1') with psi' = psi_1' + f'(theta) theta';
 //                     the added constraint is psi_1' = 0 (19).
+// top_on_cone_motion: all of Example I's method (the free accelerations, H by
+//                     eq. (14), psi'', the couple from virtual work, and the
+//                     checks eq. (4) and Cotton = Lagrange): the one result
+//                     function that `appell eval`, the tests and the proofs call.
+//
+// Angles: how the coordinates give the angles' sines and cosines.  euler_angles
+// (the default) takes the coordinates to be psi, theta, phi; half_angle_tangents
+// takes tau = tan(angle / 2) for psi and theta, so that sin, cos and q' are
+// rational in the coordinates and the shipped code runs in exact rational
+// arithmetic (proofs/).  phi never enters the kinematics (the top is symmetric).
+// A cone is any type with `S fprime(const S& theta_coordinate)` (also on dual
+// numbers) and `T fsecond(const T& theta_coordinate)`: f'(theta) and f''(theta).
 #pragma once
 
 #include "appell/dynamics/speeds.hpp"
 #include "appell/dynamics/system.hpp"
+#include "appell/dynamics/virtual_work.hpp"
 #include "appell/expr/expression.hpp"
+#include "appell/reactions/cotton.hpp"
+#include "appell/reactions/lagrange.hpp"
+#include "appell/reactions/wrench.hpp"
 
 namespace appell {
 
-template <Scalar T>
+/// The coordinates are the Euler angles themselves.
+struct euler_angles {
+  template <class S>
+  static void sin_cos(const S& angle, S& s, S& c) {
+    using std::sin, std::cos;
+    s = sin(angle);
+    c = cos(angle);
+  }
+  /// The coordinate's rate from the angle's rate.
+  template <class S>
+  static S rate(const S&, const S& angle_rate) {
+    return angle_rate;
+  }
+};
+
+/// The coordinates are tau = tan(angle / 2): sin = 2 tau / (1 + tau^2),
+/// cos = (1 - tau^2) / (1 + tau^2), tau' = (1 + tau^2) / 2 angle'.
+struct half_angle_tangents {
+  template <class S>
+  static void sin_cos(const S& tau, S& s, S& c) {
+    const S d = S(1) + tau * tau;
+    s = S(2) * tau / d;
+    c = (S(1) - tau * tau) / d;
+  }
+  template <class S>
+  static S rate(const S& tau, const S& angle_rate) {
+    return (S(1) + tau * tau) / S(2) * angle_rate;
+  }
+};
+
+namespace detail {
+template <class Angles, class S>
+vector_t<S> euler_rates_to_qdot(const vector_t<S>& q, const vector_t<S>& u) {
+  if constexpr (std::is_same_v<Angles, euler_angles>) {
+    (void)q;
+    return u;
+  } else {
+    vector_t<S> d(3);
+    d << Angles::rate(q(0), u(0)), Angles::rate(q(1), u(1)), u(2);
+    return d;
+  }
+}
+}  // namespace detail
+
+template <Scalar T, class Angles = euler_angles>
 struct heavy_top {
   T A, C, mass, l, g;
 
   int speeds() const { return 3; }
   template <class S>
-  vector_t<S> qdot(const vector_t<S>&, const vector_t<S>& u, const S&) const {
-    return u;
+  vector_t<S> qdot(const vector_t<S>& q, const vector_t<S>& u, const S&) const {
+    return detail::euler_rates_to_qdot<Angles>(q, u);
   }
   /// The body axis e_z and the line of nodes n at (psi, theta).
   template <class S>
   static void axes(const vector_t<S>& q, vec3<S>& n, vec3<S>& ez) {
-    using std::sin, std::cos;
-    const S sp = sin(q(0)), cp = cos(q(0)), st = sin(q(1)), ct = cos(q(1));
+    S sp, cp, st, ct;
+    Angles::sin_cos(q(0), sp, cp);
+    Angles::sin_cos(q(1), st, ct);
     n = vec3<S>(cp, sp, S(0));
     ez = vec3<S>(st * sp, -st * cp, ct);
   }
@@ -67,20 +128,21 @@ struct heavy_top {
 /// and cancels in omega x I omega and in the velocity-product terms, which made
 /// interval enclosures of the reaction 700 times wider than the rounding error
 /// of double (measured: 2.3e-12 relative against a double error of 3e-15).
-template <Scalar T>
+template <Scalar T, class Angles = euler_angles>
 struct heavy_top_resal {
   T A, C, mass, l, g;
 
   int speeds() const { return 3; }
   template <class S>
-  vector_t<S> qdot(const vector_t<S>&, const vector_t<S>& u, const S&) const {
-    return u;
+  vector_t<S> qdot(const vector_t<S>& q, const vector_t<S>& u, const S&) const {
+    return detail::euler_rates_to_qdot<Angles>(q, u);
   }
   /// The trihedron's axes n, e_z x n, e_z as the columns of a rotation (fixed-axis components).
   template <class S>
   static mat3<S> axes(const vector_t<S>& q) {
-    using std::sin, std::cos;
-    const S sp = sin(q(0)), cp = cos(q(0)), st = sin(q(1)), ct = cos(q(1));
+    S sp, cp, st, ct;
+    Angles::sin_cos(q(0), sp, cp);
+    Angles::sin_cos(q(1), st, ct);
     mat3<S> R;
     R << cp, -ct * sp, st * sp,  //
         sp, ct * cp, -st * cp,   //
@@ -89,8 +151,8 @@ struct heavy_top_resal {
   }
   template <class S>
   void bodies(const vector_t<S>& q, const vector_t<S>& u, const S&, std::vector<body_state<S>>& out) const {
-    using std::sin, std::cos;
-    const S st = sin(q(1)), ct = cos(q(1));
+    S st, ct;
+    Angles::sin_cos(q(1), st, ct);
     body_state<S> b;
     b.mass = S(mass);
     b.frame_rate = vec3<S>(u(1), u(0) * st, u(0) * ct);
@@ -106,32 +168,102 @@ struct heavy_top_resal {
   }
 };
 
-/// psi' - f'(theta) theta' = 0.
+/// A cone psi = f(theta) given by expressions (a scene's "cone"): f, f', f''.
 template <Scalar T>
+struct expression_cone {
+  bound_expression<T> f_expr, fprime_expr, fsecond_expr;
+  T psi(const T& theta) const { return f_expr.eval(theta); }
+  template <class S>
+  S fprime(const S& theta) const {
+    return fprime_expr.eval(theta);
+  }
+  T fsecond(const T& theta) const { return fsecond_expr.eval(theta); }
+};
+
+/// psi' - f'(theta) theta' = 0.
+template <class Cone>
 struct cone_constraint {
-  const bound_expression<T>* fprime;
+  const Cone* cone;
   int count() const { return 1; }
   template <class S>
   void eval(const vector_t<S>& q, const S&, matrix_t<S>& A, vector_t<S>& a) const {
     A(0, 0) = S(1);
-    A(0, 1) = -fprime->eval(q(1));
+    A(0, 1) = -cone->fprime(q(1));
     A(0, 2) = S(0);
     a(0) = S(0);
   }
 };
 
 /// Cotton's speeds (theta', phi', psi_1') -> (psi', theta', phi').
-template <Scalar T>
+template <class Cone>
 struct cone_speeds {
-  const bound_expression<T>* fprime;
+  const Cone* cone;
   template <class S>
   vector_t<S> apply(const vector_t<S>& q, const vector_t<S>& v, const S&) const {
     vector_t<S> u(3);
-    u(0) = v(2) + fprime->eval(q(1)) * v(0);
+    u(0) = v(2) + cone->fprime(q(1)) * v(0);
     u(1) = v(0);
     u(2) = v(1);
     return u;
   }
 };
+
+/// The state of Example I: the coordinates (psi on the cone, theta, phi) and the free speeds.
+template <Scalar T>
+struct top_on_cone_state {
+  T psi, theta, phi, theta_dot, phi_dot;
+};
+
+template <Scalar T>
+struct top_on_cone_result {
+  T theta_ddot, phi_ddot, psi_ddot;
+  T H;             ///< Cotton's Q'_c (eq. 14): the couple's moment about the vertical e3
+  vec3<T> couple;  ///< the constraint couple, fixed axes (from its virtual work, sec. 5)
+  T virtual_work_residual;  ///< eq. (4) in Cotton's speeds: 0 on the motion
+  T lagrange_multiplier;    ///< of psi' - f' theta' = 0 on the unconstrained top (fixed axes)
+  T theta_ddot_lagrange;    ///< theta'' from the same saddle-point system
+  cotton_result<T> cotton;  ///< Cotton's method in the paper's speeds (theta', phi', psi_1')
+};
+
+/// Example I (paper sec. 6).  Cotton (sec. 6): speeds (theta', phi', psi_1'),
+/// the cone is psi_1' = 0.  The top is described on Resal's trihedron (tight
+/// enclosures); the Lagrange check uses the fixed-axis description `top`, an
+/// independent route.  psi need not equal f(theta) for the algebra (the
+/// dynamics does not depend on psi: rotations about the vertical), but a state
+/// of the scene has psi = f(theta).
+template <Scalar T, class Angles, class Cone>
+top_on_cone_result<T> top_on_cone_motion(const heavy_top<T, Angles>& top, const Cone& cone,
+                                         const top_on_cone_state<T>& s) {
+  const T t = T(0);
+  const T fp = cone.fprime(s.theta), fpp = cone.fsecond(s.theta);
+  vector_t<T> q(3);
+  q << s.psi, s.theta, s.phi;
+  const heavy_top_resal<T, Angles> resal{top.A, top.C, top.mass, top.l, top.g};
+  const auto sys = change_speeds(resal, cone_speeds<Cone>{&cone}, 3);
+  vector_t<T> v_a(2);
+  v_a << s.theta_dot, s.phi_dot;
+  top_on_cone_result<T> r;
+  r.cotton = cotton_reactions(sys, q, v_a, t, 1);
+  r.theta_ddot = r.cotton.free_accelerations(0);
+  r.phi_ddot = r.cotton.free_accelerations(1);
+  r.H = r.cotton.reactions(0);
+  r.psi_ddot = fpp * s.theta_dot * s.theta_dot + fp * r.theta_ddot;  // d/dt (f'(theta) theta')
+  // The couple: J_w^T Gamma = (0, 0, H) in Cotton's speeds (wrench.hpp).
+  vector_t<T> v(3), vdot(3), generalized(3);
+  v << s.theta_dot, s.phi_dot, T(0);
+  vdot << r.theta_ddot, r.phi_ddot, T(0);
+  generalized << T(0), T(0), T(1);  // the couple is linear in H: solve for H = 1, scale once (H enters one product, not a cancellation)
+  const auto kin = differentiate_kinematics(sys, q, v, t);
+  r.couple = mat_vec(heavy_top_resal<T, Angles>::axes(q), constraint_couple(kin[0], generalized)) * r.H;  // fixed axes
+  // Checks: eq. (4) and Lagrange's multiplier on the unconstrained top.
+  const vector_t<T> ones = vector_t<T>::Ones(3);
+  r.virtual_work_residual = virtual_work_residual(sys, r.cotton.equations, q, v, t, vdot, ones);
+  vector_t<T> u(3);
+  u << fp * s.theta_dot, s.theta_dot, s.phi_dot;
+  const constrained_motion<T> lag = lagrange_multipliers(top, cone_constraint<Cone>{&cone}, q, u, t);
+  r.lagrange_multiplier = lag.reactions(0);
+  r.theta_ddot_lagrange = lag.accelerations(1);
+  return r;
+}
 
 }  // namespace appell

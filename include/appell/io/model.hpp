@@ -1,0 +1,75 @@
+// appell/io/model.hpp -- what a scene model module provides, and the glue that
+// registers it.
+//
+// A model module is a struct (io/models/<name>.hpp) with
+//     static constexpr const char* name;            // the scene's "model"
+//     using input = <name>_input;                    // derived from model_input: exact decimals
+//     static input read(object_reader& scene);       // schema and validation (src/io/models/<name>.cpp)
+//     template <Scalar T> struct prepared;           // the inputs in T
+//     template <Scalar T> static prepared<T> prepare(const input&);
+//     template <Scalar T> static evaluation<T> compute(const prepared<T>&);
+// compute<T> calls the model's one result function (scenes/<name>.hpp) and
+// names its results and checks; it applies no evaluation policy (appell::compute does).
+// The module's header ends with APPELL_EXTERN_MODEL(<name>_model); its .cpp
+// defines the reader and APPELL_DEFINE_MODEL_ENTRY(<name>_model); CMake
+// generates the instantiations (one unit per model x scalar) and the registry
+// from the APPELL_MODELS list.
+#pragma once
+
+#include <memory>
+#include <tuple>
+
+#include "appell/io/scene.hpp"
+
+namespace appell {
+
+/// The type-erased functions of Model in scalar T.
+template <class Model, Scalar T>
+struct model_functions {
+  static prepared_scene<T> prepare(const model_input& in) {
+    using prepared_t = typename Model::template prepared<T>;
+    auto p = std::make_shared<const prepared_t>(
+        Model::template prepare<T>(dynamic_cast<const typename Model::input&>(in)));
+    return prepared_scene<T>(std::move(p), &model_functions::compute);
+  }
+  static evaluation<T> compute(const void* p) {
+    return Model::template compute<T>(*static_cast<const typename Model::template prepared<T>*>(p));
+  }
+};
+
+namespace detail {
+template <class Model>
+std::shared_ptr<const model_input> read_model(object_reader& scene) {
+  return std::make_shared<const typename Model::input>(Model::read(scene));
+}
+template <class Model, class... Ts>
+per_standard_scalar<prepare_fn> prepare_table(type_list<Ts...>) {
+  return per_standard_scalar<prepare_fn>{&model_functions<Model, Ts>::prepare...};
+}
+}  // namespace detail
+
+/// The registry entry of Model.
+template <class Model>
+model_entry make_model_entry() {
+  return {Model::name, &detail::read_model<Model>, detail::prepare_table<Model>(standard_scalars{})};
+}
+
+/// A scene of Model from inputs built in code (tests, proofs): the same as a
+/// scene file with those inputs, minus the reader's validation.
+template <class Model>
+scene_input make_scene(typename Model::input in) {
+  return {Model::name, std::make_shared<const typename Model::input>(std::move(in)), &find_model(Model::name)};
+}
+
+}  // namespace appell
+
+/// In a model's header: its functions are instantiated elsewhere, once per standard scalar.
+#define APPELL_DETAIL_EXTERN_MODEL_ITEM(Model, T, name) extern template struct ::appell::model_functions<Model, T>;
+#define APPELL_EXTERN_MODEL(Model) APPELL_STANDARD_SCALARS(APPELL_DETAIL_EXTERN_MODEL_ITEM, Model)
+
+/// In a model's .cpp: the function the generated registry calls, `const model_entry& Model_entry()`.
+#define APPELL_DEFINE_MODEL_ENTRY(Model)                                  \
+  const ::appell::model_entry& Model##_entry() {                          \
+    static const ::appell::model_entry entry = ::appell::make_model_entry<Model>(); \
+    return entry;                                                          \
+  }

@@ -1,0 +1,93 @@
+// appell/io/models/rolling_sphere.hpp -- the scene model "rolling_sphere"
+// (paper sec. 7, Example II).  Schema (SCENES.md): sphere {mass, radius, A?},
+// surface {type: plane | sphere | cylinder, radius, side}, gravity, force?,
+// torque?, state {center, omega}; the state must lie on the constraints.
+#pragma once
+
+#include <optional>
+
+#include "appell/io/model.hpp"
+#include "appell/scenes/rolling_sphere.hpp"
+
+namespace appell {
+
+struct rolling_sphere_input : model_input {
+  decimal_field mass, radius;
+  std::optional<decimal_field> A;  ///< default 2/5 M a^2 (enclosed exactly)
+  surface_type surface = surface_type::plane;
+  bool inside = false;
+  std::optional<decimal_field> b;  ///< the surface's radius (sphere, cylinder)
+  std::vector<decimal_field> gravity, force, torque, center, omega;
+};
+
+struct rolling_sphere_model {
+  static constexpr const char* name = "rolling_sphere";
+  using input = rolling_sphere_input;
+  static input read(object_reader& scene);
+
+  template <Scalar T>
+  struct prepared {
+    T M, A, a;
+    rolling_surface<T> surface;
+    vec3<T> c, omega, F, tau;
+    T on_surface, no_pivot;  ///< the constraint residuals at the state
+  };
+  template <Scalar T>
+  static prepared<T> prepare(const input& in) {
+    using std::sqrt, std::abs;
+    prepared<T> m;
+    m.M = value<T>(in.mass);
+    m.a = value<T>(in.radius);
+    m.A = in.A ? value<T>(*in.A) : rational<T>(2, 5) * m.M * m.a * m.a;
+    m.surface.type = in.surface;
+    m.surface.inside = in.inside;
+    if (in.b) m.surface.b = value<T>(*in.b);
+    m.c = detail::vec3_from_decimals<T>(in.center);
+    m.omega = detail::vec3_from_decimals<T>(in.omega);
+    m.F = detail::vec3_from_decimals<T>(in.gravity) * m.M + detail::vec3_from_decimals<T>(in.force);
+    m.tau = detail::vec3_from_decimals<T>(in.torque);
+    // The state must lie on the constraints: centre on the surface of centres, omega . n = 0.
+    T scale_c, scale_w = sqrt(dot(m.omega, m.omega));
+    if (in.surface == surface_type::plane) {
+      m.on_surface = m.c(2) - m.a;
+      m.no_pivot = m.omega(2);
+      scale_c = abs(m.c(2)) + m.a;
+    } else {
+      const vec3<T> radial = in.surface == surface_type::sphere ? m.c : vec3<T>(m.c(0), m.c(1), T(0));
+      const T norm = sqrt(dot(radial, radial));
+      m.on_surface = norm - m.surface.rho(m.a);
+      m.no_pivot = dot(m.omega, radial) / norm;
+      scale_c = norm + m.surface.b + m.a;  // rho = b -+ a may cancel: its error scales with b and a
+    }
+    if (!consistent_with_zero(m.on_surface, scale_c))
+      throw input_error("state.center: not on the surface of centres (residual " + to_string(m.on_surface) + ")");
+    if (!consistent_with_zero(m.no_pivot, scale_w))
+      throw input_error("state.omega: omega . n must be 0 (no pivoting), residual " + to_string(m.no_pivot));
+    return m;
+  }
+  template <Scalar T>
+  static evaluation<T> compute(const prepared<T>& m) {
+    const rolling_sphere_result<T> r = rolling_sphere_motion(m.M, m.A, m.a, m.surface, m.c, m.omega, m.F, m.tau);
+    if (!certainly_positive(r.normal_force) && !certainly_negative(r.normal_force))
+      throw certification_error("friction_ratio: the normal force " + to_string(r.normal_force) +
+                                " cannot be told from 0");
+    evaluation<T> e;
+    e.results.push_back(detail::vector_result("center_ddot", r.center_ddot));
+    e.results.push_back(detail::vector_result("omega_dot", r.omega_dot));
+    e.results.push_back(detail::vector_result("contact_force", r.contact_force));
+    e.results.push_back(detail::scalar_result("normal_force", r.normal_force));
+    e.results.push_back(detail::scalar_result("tangential_force", r.tangential_force()));
+    e.results.push_back(detail::scalar_result("pivot_couple", r.pivot_couple));
+    e.results.push_back(detail::scalar_result("friction_ratio", T(r.tangential_force() / r.normal_force)));
+    e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
+    e.checks.push_back(detail::scalar_result("normal_force_cotton_minus_lagrange", T(r.reactions(2) - r.multipliers(2))));
+    e.checks.push_back(detail::scalar_result("pivot_couple_cotton_minus_lagrange", T(r.reactions(3) - r.multipliers(3))));
+    e.checks.push_back(detail::scalar_result("surface_residual", m.on_surface));
+    e.checks.push_back(detail::scalar_result("pivot_residual", m.no_pivot));
+    return e;
+  }
+};
+
+APPELL_EXTERN_MODEL(rolling_sphere_model)
+
+}  // namespace appell
