@@ -24,8 +24,8 @@ inline void for_each_sub_box(int splits, const std::function<void(const top_box_
   const auto& in = s.as<top_on_cone_input>();
   using T = interval;
   const heavy_top<T> top{value<T>(in.A), value<T>(in.C), value<T>(in.mass), value<T>(in.l), value<T>(in.gravity)};
-  const expression_cone<T> cone{bound_expression<T>(*in.f), bound_expression<T>(*in.fprime),
-                                bound_expression<T>(*in.fsecond)};
+  const expression_cone<T> cone{compiled_expression<T>(*in.f), compiled_expression<T>(*in.fprime),
+                                compiled_expression<T>(*in.fsecond)};
   auto piece = [&](const char* lo, const char* hi, int i, int n) {  // i-th of n equal pieces of [lo, hi]
     const T a = from_decimal<T>(lo), b = from_decimal<T>(hi);
     const T l = a + (b - a) * T(i) / T(n), u = a + (b - a) * T(i + 1) / T(n);

@@ -202,8 +202,8 @@ void direct_call_matches_eval(const scene_input& scene) {
     const evaluation_scope<T> policy;
     const heavy_top<T> top{from_decimal<T>(in.A.text), from_decimal<T>(in.C.text), from_decimal<T>(in.mass.text),
                            from_decimal<T>(in.l.text), from_decimal<T>(in.gravity.text)};
-    const expression_cone<T> cone{bound_expression<T>(*in.f), bound_expression<T>(*in.fprime),
-                                  bound_expression<T>(*in.fsecond)};
+    const expression_cone<T> cone{compiled_expression<T>(*in.f), compiled_expression<T>(*in.fprime),
+                                  compiled_expression<T>(*in.fsecond)};
     const T theta = from_decimal<T>(in.theta.text);
     const top_on_cone_result<T> r = top_on_cone_motion(
         top, cone,
@@ -262,8 +262,8 @@ BOOST_AUTO_TEST_CASE(cotton_with_library_built_speeds_equals_cotton_with_the_pap
   vector_t<T> q(3), u(3);
   q << in.f->eval(theta), theta, value<T>(in.phi);
   u << in.fprime->eval(theta) * thd, thd, phd;
-  const expression_cone<T> cone{bound_expression<T>(*in.f), bound_expression<T>(*in.fprime),
-                                bound_expression<T>(*in.fsecond)};
+  const expression_cone<T> cone{compiled_expression<T>(*in.f), compiled_expression<T>(*in.fprime),
+                                compiled_expression<T>(*in.fsecond)};
   const auto generic = cotton_reactions(top, cone_constraint<expression_cone<T>>{&cone}, q, u, T(0));
   const auto lagrange = lagrange_multipliers(top, cone_constraint<expression_cone<T>>{&cone}, q, u, T(0));
   const auto paper = evaluate<T>(s);

@@ -327,7 +327,7 @@ namespace {
 // with |sa|, |sb| up to 1500 the data leave double's range, so both the residual
 // path (scaled into double) and its full-precision fallback are exercised.
 // Returns the number certified and the largest excess width of the result over
-// 17/16 of Krawczyk's (krawczyk_solve, full precision), in ulps of ||x||_inf.
+// 17/16 of Krawczyk's (residual_or_krawczyk_solve, full precision), in ulps of ||x||_inf.
 struct scaled_run {
   int certified = 0;
   double worst_excess_ulps = 0;
@@ -377,7 +377,7 @@ scaled_run scaled_mpfi_systems(int count, int max_shift, bool thick) {
     }
     BOOST_REQUIRE(exact_solve(Aq, bq, xq));  // the midpoint system: its solution lies in every enclosure
     const vector_t<mpfi> x = solve(AI, bI);  // diagonally dominant: must certify
-    const vector_t<mpfi> xk = detail::krawczyk_solve(AI, bI, false);
+    const vector_t<mpfi> xk = detail::residual_or_krawczyk_solve(AI, bI, false);
     if (detail::mpfi_residual_solve(AI, bI)) ++out.residual_path;
     if (thick) {  // vertex systems of the box [A] (exact_solve has reduced Aq, bq: rebuilt from the boxes)
       std::uniform_int_distribution<int> coin(0, 1);
@@ -462,7 +462,7 @@ BOOST_AUTO_TEST_CASE(interval_residual_bound_is_as_tight_as_krawczyk) {
       }
     }
     BOOST_REQUIRE(exact_solve(Aq, bq, xq));
-    const vector_t<interval> x = solve(AI, bI), xk = detail::krawczyk_solve(AI, bI, false);
+    const vector_t<interval> x = solve(AI, bI), xk = detail::residual_or_krawczyk_solve(AI, bI, false);
     double norm = 0;
     for (int i = 0; i < n; ++i) {
       BOOST_REQUIRE(encloses(x(i), xq[i]));

@@ -41,10 +41,10 @@ std::optional<vector_t<interval>> small_interval_solve(const matrix_t<interval>&
   const DM R = lu.inverse();
   if (!R.allFinite()) return std::nullopt;
   DV xt = R * bm;
-  xt += R * (bm - Am * xt);  // one refinement step, as krawczyk_solve
+  xt += R * (bm - Am * xt);  // one refinement step, as residual_or_krawczyk_solve
   IV xI(n), residual(n);
   for (Eigen::Index i = 0; i < n; ++i) xI(i) = thin<interval>(xt(i));
-  for (Eigen::Index i = 0; i < n; ++i) {  // b - A x~, in krawczyk_solve's order
+  for (Eigen::Index i = 0; i < n; ++i) {  // b - A x~, in residual_or_krawczyk_solve's order
     interval sum = A(i, 0) * xI(0);
     for (Eigen::Index k = 1; k < n; ++k) sum += A(i, k) * xI(k);
     residual(i) = b(i) - sum;

@@ -41,13 +41,13 @@ class expression {
 
   /// The value at x (S a scalar or a dual of one); decimal constants and pi
   /// are converted to the scalar at each call.  For repeated evaluation use a
-  /// bound_expression<T> (below), which converts them once.
+  /// compiled_expression<T> (below), which converts them once.
   template <class S>
   S eval(const S& x) const {
     return eval_node<S>(root_, x, nullptr);
   }
   /// The constants converted to T, one slot per node (the value for a number or
-  /// pi node, 0 for the others): what bound_expression<T> holds.
+  /// pi node, 0 for the others): what compiled_expression<T> holds.
   template <class T>
   std::vector<T> constants() const {
     std::vector<T> c(nodes_.size(), T(0));
@@ -160,10 +160,10 @@ S expression::eval_node(int i, const S& x, const std::vector<base_scalar_t<S>>* 
 /// An expression with its constants in T, for repeated evaluation on T and
 /// dual<T>.  It refers to the expression, which must outlive it.
 template <Scalar T>
-class bound_expression {
+class compiled_expression {
  public:
-  bound_expression() = default;
-  explicit bound_expression(const expression& e) : e_(&e), constants_(e.constants<T>()) {}
+  compiled_expression() = default;
+  explicit compiled_expression(const expression& e) : e_(&e), constants_(e.constants<T>()) {}
   template <class S>
   S eval(const S& x) const {
     return e_->eval_bound(x, constants_);

@@ -195,7 +195,7 @@ std::optional<IV> residual_enclosure(const DM& R, const IM& C, const IV& r) {
 /// The interval residual path for systems of at most small_system_max unknowns,
 /// with every temporary on the stack (the heap-allocated temporaries of the
 /// general path were ~60 allocations per evaluation of Example I, an interval-only
-/// cost).  The same steps as krawczyk_solve's: nullopt where the residual bound
+/// cost).  The same steps as residual_or_krawczyk_solve's: nullopt where the residual bound
 /// does not apply or the midpoint is singular (the general path then decides).
 inline constexpr Eigen::Index small_system_max = 12;
 std::optional<vector_t<interval>> small_interval_solve(const matrix_t<interval>& A, const vector_t<interval>& b);
@@ -218,7 +218,7 @@ namespace detail {
 /// caller): for interval, the residual bound first (try_residual_bound), then
 /// Krawczyk's iteration.  Exposed for tests that compare the two.
 template <class I>
-vector_t<I> krawczyk_solve(const matrix_t<I>& A, const vector_t<I>& b, bool try_residual_bound) {
+vector_t<I> residual_or_krawczyk_solve(const matrix_t<I>& A, const vector_t<I>& b, bool try_residual_bound) {
   using P = bound_t<I>;
   const Eigen::Index n = A.rows();
   if constexpr (std::is_same_v<I, interval>)
@@ -326,7 +326,7 @@ vector_t<I> verified_solve(const matrix_t<I>& A, const vector_t<I>& b) {
   if (n == 0) return vector_t<I>(0);
   if constexpr (std::is_same_v<I, mpfi>)
     if (auto x = detail::mpfi_residual_solve(A, b)) return *x;
-  return detail::krawczyk_solve(A, b, /*try_residual_bound=*/true);
+  return detail::residual_or_krawczyk_solve(A, b, /*try_residual_bound=*/true);
 }
 
 template <Scalar T>

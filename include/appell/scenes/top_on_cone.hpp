@@ -171,7 +171,7 @@ struct heavy_top_resal {
 /// A cone psi = f(theta) given by expressions (a scene's "cone"): f, f', f''.
 template <Scalar T>
 struct expression_cone {
-  bound_expression<T> f_expr, fprime_expr, fsecond_expr;
+  compiled_expression<T> f_expr, fprime_expr, fsecond_expr;
   T psi(const T& theta) const { return f_expr.eval(theta); }
   template <class S>
   S fprime(const S& theta) const {

@@ -33,7 +33,7 @@ struct top_on_cone_model {
   template <Scalar T>
   static prepared<T> prepare(const input& in) {
     return {{value<T>(in.A), value<T>(in.C), value<T>(in.mass), value<T>(in.l), value<T>(in.gravity)},
-            {bound_expression<T>(*in.f), bound_expression<T>(*in.fprime), bound_expression<T>(*in.fsecond)},
+            {compiled_expression<T>(*in.f), compiled_expression<T>(*in.fprime), compiled_expression<T>(*in.fsecond)},
             value<T>(in.theta), value<T>(in.phi), value<T>(in.theta_dot), value<T>(in.phi_dot)};
   }
   template <Scalar T>
