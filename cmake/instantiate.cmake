@@ -21,7 +21,6 @@ function(appell_generate_instantiations out_var)
   if(count EQUAL 0)
     message(FATAL_ERROR "no scalars found in ${header}")
   endif()
-  set(APPELL_STANDARD_SCALAR_NAMES ${names} PARENT_SCOPE)
   set(dir ${PROJECT_BINARY_DIR}/generated)
   set(sources "")
   set(index 0)
@@ -33,6 +32,11 @@ function(appell_generate_instantiations out_var)
 #include \"appell/io/scene.hpp\"
 
 namespace appell {
+// CMake read ${count} scalars from the list; the C++ list must agree, entry by entry.
+static_assert(std::tuple_size_v<per_standard_scalar<std::type_identity_t>> == ${count},
+              \"cmake/instantiate.cmake misread APPELL_STANDARD_SCALARS\");
+static_assert(std::string_view(scalar_traits<standard_scalar_at<${index}>>::name) == \"${name}\",
+              \"scalar ${index} of APPELL_STANDARD_SCALARS is not ${name}\");
 APPELL_SCENE_TEMPLATES(, standard_scalar_at<${index}>)
 }  // namespace appell
 ")

@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "appell/scalar/standard_scalars.hpp"
+
 namespace {
 
 struct outcome {
@@ -61,13 +63,15 @@ void expect_bad_input(const std::string& args, const std::string& must_mention) 
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(every_scalar_evaluates_the_shipped_scene) {
-  for (const char* s : {"double", "long-double", "dd", "float128", "mpfr", "interval", "mpfi"}) {
+  BOOST_TEST(appell::standard_scalar_infos().size() == 7u);
+  for (const appell::scalar_info& info : appell::standard_scalar_infos()) {
+    const std::string s = info.name;
     const outcome o = run("eval " + good_scene + " --scalar " + s);
     BOOST_TEST(o.status == 0, s << ": " << o.err);
     BOOST_TEST(o.out.find("\"model\": \"euler_body\"") != std::string::npos);
-    BOOST_TEST(o.out.find(std::string("\"scalar\": \"") + s + "\"") != std::string::npos);
+    BOOST_TEST(o.out.find("\"scalar\": \"" + s + "\"") != std::string::npos);
     BOOST_TEST(o.out.find("\"omega_dot\": [") != std::string::npos);
-    const bool interval = std::string(s) == "interval" || std::string(s) == "mpfi";
+    const bool interval = info.rigorous;
     BOOST_TEST((o.out.find("\"lo\":") != std::string::npos) == interval, s);
     BOOST_TEST((o.out.find("\"value\":") != std::string::npos) == !interval, s);
   }
@@ -76,7 +80,21 @@ BOOST_AUTO_TEST_CASE(every_scalar_evaluates_the_shipped_scene) {
 BOOST_AUTO_TEST_CASE(bits_set_the_precision_of_mpfr_and_mpfi) {
   const outcome o = run("eval " + good_scene + " --scalar mpfi --bits 100");
   BOOST_TEST(o.status == 0);
-  BOOST_TEST(o.out.find("\"bits\": 10") != std::string::npos, o.out);  // 100 or a little more
+  BOOST_TEST(o.out.find("\"bits\": 100, \"rigorous\"") != std::string::npos, o.out);  // exactly N bits
+  for (const char* bits : {"53", "113", "200", "256"}) {  // mpfi: exactly; mpfr: reported when not
+    const outcome i = run("eval " + good_scene + " --scalar mpfi --bits " + bits);
+    BOOST_TEST(i.out.find("\"bits\": " + std::string(bits) + ", \"rigorous\"") != std::string::npos, i.out);
+    const outcome r = run("eval " + good_scene + " --scalar mpfr --bits " + bits);
+    BOOST_TEST(r.status == 0);
+    const bool exact = r.out.find("\"bits\": " + std::string(bits) + ", \"rigorous\"") != std::string::npos;
+    const bool reported = r.out.find("\"bits_requested\": " + std::string(bits) + ",") != std::string::npos;
+    BOOST_TEST(exact != reported, bits << ": " << r.out);
+    if (reported) {  // then "bits" is what Boost could set: more than asked, by less than a decimal digit
+      const std::size_t at = r.out.find("\"bits\": ") + 8;
+      const int used = std::stoi(r.out.substr(at)), asked = std::stoi(bits);
+      BOOST_TEST((used > asked && used <= asked + 4), bits << " asked, " << used << " used");
+    }
+  }
   const outcome t = run("eval " + good_scene + " --scalar interval --format text");
   BOOST_TEST(t.status == 0);
   BOOST_TEST(t.out.find("omega_dot[0] = [") != std::string::npos, t.out);
@@ -195,6 +213,22 @@ BOOST_AUTO_TEST_CASE(inconsistent_or_impossible_spheres_exit_2) {
   expect_bad_input("eval " + scene_file("side", sphere_scene(ball, "\"type\": \"sphere\", \"radius\": \"1\", \"side\": \"under\"", on, spin)),
                    "surface.side");
   expect_bad_input("eval " + scene_file("torus", sphere_scene(ball, "\"type\": \"torus\"", on, spin)), "surface.type");
+}
+
+// The command line is input too: every mistake is exit 2 with one line.
+BOOST_AUTO_TEST_CASE(bad_command_lines_exit_2_with_one_line) {
+  expect_bad_input("", "no command");
+  expect_bad_input("frobnicate", "unknown command 'frobnicate'");
+  expect_bad_input("eval", "no scene given");
+  expect_bad_input("eval " + good_scene + " --frobnicate", "unknown option '--frobnicate'");
+  expect_bad_input("eval " + good_scene + " " + good_scene, "more than one scene");
+  expect_bad_input("eval " + good_scene + " --scalar", "--scalar: missing value");
+  for (const char* bits : {"0", "1", "-5", "100000000", "1e3", "12x", ""})
+    expect_bad_input("eval " + good_scene + " --scalar mpfi --bits '" + std::string(bits) + "'", "--bits");
+  expect_bad_input("eval " + std::string(APPELL_SOURCE_DIR "/data/scenes"), "is a directory");
+  expect_bad_input("eval /dev/null", "/dev/null: empty");
+  expect_bad_input("extremes --frobnicate", "unknown argument");
+  expect_bad_input("tradeoff", "no scene given");
 }
 
 // tradeoff and extremes share eval's exit statuses: a scene that cannot be

@@ -6,7 +6,9 @@
 //      max_i |x_i - x*_i| <= 16 * error_amplification * 2^(1 - p) * max_i |x*_i|,
 //    error_amplification being the check every point result carries; where it
 //    is infinite (the companion interval evaluation refused), the stated bound
-//    is half the precision instead: max_i |x_i - x*_i| <= 2^(-p/2) max_i |x*_i|;
+//    is half the precision instead: max_i |x_i - x*_i| <= 2^(-p/2) max_i |x*_i|
+//    (not reached while no refusal is allowed: an interval refusal fails the
+//    sweep first; it is there for sweeps that admit refusals);
 //  * refusals are bounded: every sweep point has a 2048-bit reference, and the
 //    study (data/extremes/summary.txt) has no refusal in any scalar, so none is
 //    allowed per sweep and scalar (kRefusalsAllowed); a change that makes a

@@ -17,8 +17,8 @@
 // round-to-nearest reading is counted and listed as "inexact vector literal",
 // not as a failure.  APPELL_ITF1788_VERBOSE=1 lists the non-tightest cases.
 //
-// mpfi runs at set_mp_precision_bits(53) (Boost 1.74 sets precision in decimal
-// digits: 55 bits) on the cases without an empty input.  Its bounds have an
+// mpfi runs at set_mp_precision_bits(53) (exactly 53 bits: appell's backend)
+// on the cases without an empty input.  Its bounds have an
 // unbounded exponent range and no subnormals, so they are first rounded
 // outward into binary64 (appell::round_to_double, subnormals and overflow
 // honoured) and then compared with the listed bounds: if the mpfi result

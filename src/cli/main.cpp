@@ -1,6 +1,7 @@
 // appell -- the command-line tool.  `appell eval SCENE [--scalar NAME] [--bits N]
 // [--format json|text]` evaluates a scene (../shared/SCENES.md).
-// Exit status: 0 done; 1 usage; 2 bad input; 3 a result could not be certified.
+// Exit status: 0 done; 2 bad input (the command line included); 3 a result could
+// not be certified; 4 an internal error (a bug: please report it).
 // Output is assembled in full before anything is written to stdout.
 #include <cstring>
 #include <iostream>
@@ -30,9 +31,11 @@ struct options {
   std::string format = "json";
 };
 
+// A usage error is bad input (exit 2) like any other: one line on stderr, naming
+// what was wrong; `appell --help` prints the usage.
 int usage(const std::string& why) {
-  std::cerr << "appell: " << why << "\n" << usage_text;
-  return 1;
+  std::cerr << "appell: " << why << " (appell --help lists the commands and options)\n";
+  return 2;
 }
 
 // One mapping from exceptions to exit statuses for every command (SCENES.md):
@@ -144,7 +147,11 @@ int main(int argc, char** argv) {
     const std::string out = dispatch(scene, o);
     std::cout << out;
     std::cout.flush();
-    return std::cout ? 0 : 1;
+    if (!std::cout) {
+      std::cerr << "appell: internal error: could not write the result to stdout\n";
+      return 4;
+    }
+    return 0;
   } catch (...) {
     return exit_status_of_current_exception();
   }

@@ -2,6 +2,7 @@
 // validating scene files, and the measured error amplification.
 #include "appell/io/scene.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -58,10 +59,13 @@ double error_amplification(const scene_input& scene) {
 }
 
 scene_input read_scene_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw input_error(path + ": is a directory, not a scene file");
   std::ifstream file(path);
   if (!file) throw input_error(path + ": cannot read the scene file");
   std::ostringstream text;
   text << file.rdbuf();
+  if (text.str().empty()) throw input_error(path + ": empty, not a scene file");
   return read_scene(parse_json(text.str()));
 }
 

@@ -12,7 +12,6 @@
 
 #include <boost/multiprecision/detail/digits.hpp>
 
-#include <atomic>
 #include <cctype>
 #include <cmath>
 #include <initializer_list>
@@ -29,33 +28,30 @@ unsigned digits10_holding(unsigned bits) {
 }
 }  // namespace
 
-namespace {
-// The bits asked for by the last set_mp_precision_bits (those of new mpfi values).
-// Process-wide, as Boost's own default precision is.
-std::atomic<unsigned> requested_bits{0};
-}  // namespace
-
 unsigned set_mp_precision_bits(unsigned bits) {
   if (bits < 2) throw parse_error("precision must be at least 2 bits");
   mpfr::default_precision(digits10_holding(bits));
   mp::mpfi_backend::default_bits(bits);
-  requested_bits = bits;
   return bits;
 }
 
-unsigned mp_precision_bits() {
-  const unsigned b = requested_bits;
-  return b ? b : mpfr_precision_bits();  // before any set: Boost's default, as mpfr
-}
+// The bits of new mpfi values: exactly those asked for (appell's backend).
+unsigned mp_precision_bits() { return mp::mpfi_backend::default_bits(); }
 
 unsigned mpfr_precision_bits() {
   return boost::multiprecision::detail::digits10_2_2(mpfr::default_precision());
 }
 
+// Saves and restores both settings as they were (mpfr's in decimal digits, mpfi's in bits).
 mp_precision_scope::mp_precision_scope(unsigned bits)
-    : saved_bits_(mp_precision_bits()), bits_(set_mp_precision_bits(bits)) {}
+    : saved_mpfr_digits10_(mpfr::default_precision()),
+      saved_mpfi_bits_(mp::mpfi_backend::default_bits()),
+      bits_(set_mp_precision_bits(bits)) {}
 
-mp_precision_scope::~mp_precision_scope() { set_mp_precision_bits(saved_bits_); }
+mp_precision_scope::~mp_precision_scope() {
+  mpfr::default_precision(saved_mpfr_digits10_);
+  mp::mpfi_backend::default_bits(saved_mpfi_bits_);
+}
 
 namespace {
 

@@ -105,10 +105,14 @@ class prepared_scene {
   prepared_scene(std::shared_ptr<const void> state, compute_fn f) : state_(std::move(state)), compute_(f) {}
   /// The model's dynamics alone (no evaluation policy: use appell::compute).
   evaluation<T> run() const { return compute_(state_.get()); }
+  /// Keeps the scene's inputs alive as long as this (prepared state may point
+  /// into them: a cone's compiled expressions do).
+  void keep(std::shared_ptr<const model_input> inputs) { inputs_ = std::move(inputs); }
 
  private:
   std::shared_ptr<const void> state_;
   compute_fn compute_;
+  std::shared_ptr<const model_input> inputs_;
 };
 
 template <class T>  // unconstrained: a template template argument of per_standard_scalar
@@ -135,7 +139,10 @@ scene_input read_scene_file(const std::string& path);
 template <Scalar T>
 prepared_scene<T> prepare(const scene_input& scene) {
   const evaluation_scope<T> scope;
-  return std::get<prepare_fn<T>>(scene.entry->prepare)(*scene.input);
+  prepared_scene<T> p = std::get<prepare_fn<T>>(scene.entry->prepare)(*scene.input);
+  p.keep(scene.input);
+  scope.verify();  // the state's constraint residuals are results too
+  return p;
 }
 
 /// The dynamics of a prepared scene, under the evaluation policy of T

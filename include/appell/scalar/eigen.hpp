@@ -60,8 +60,8 @@ struct NumTraits<appell::float128> : appell::detail::numtraits_common<appell::fl
 
 template <>
 struct NumTraits<appell::mpfr> : appell::detail::numtraits_common<appell::mpfr> {
-  static int digits() { return static_cast<int>(appell::mp_precision_bits()); }
-  static int digits10() { return static_cast<int>(appell::mp_precision_bits() * 0.30103); }
+  static int digits() { return static_cast<int>(appell::mpfr_precision_bits()); }
+  static int digits10() { return static_cast<int>(appell::mpfr_precision_bits() * 0.30103); }
   static appell::mpfr epsilon() {
     appell::mpfr e(1);
     mpfr_mul_2si(e.backend().data(), e.backend().data(), 1 - digits(), MPFR_RNDN);

@@ -171,6 +171,7 @@ class mpfi_backend {
     default_bits_ = static_cast<mpfr_prec_t>(boost::multiprecision::detail::digits10_2_2(digits10));
   }
   /// appell's interface, in bits (set_mp_precision_bits): new values get exactly `bits` bits.
+  static unsigned default_bits() noexcept { return static_cast<unsigned>(default_bits_); }
   static void default_bits(unsigned bits) noexcept {
     default_bits_ = static_cast<mpfr_prec_t>(bits);
     default_digits10_ = static_cast<unsigned>(boost::multiprecision::detail::digits2_2_10(bits));

@@ -56,12 +56,18 @@ class evaluation_scope {
   /// Makes x a result of this evaluation: mpfi rounds outward to result_bits();
   /// interval checks that the rounding mode stayed upward.
   void finish(T& x) const {
-    if constexpr (scalar_traits<T>::needs_upward_rounding) {
-      if (!mode_->intact())  // the operations assumed upward rounding: refuse, never return an unproved box
-        throw certification_error("the rounding mode was changed during the interval evaluation");
-    }
+    verify();
     if constexpr (std::is_same_v<T, mpfi>) x.backend().round_prec(static_cast<mpfr_prec_t>(result_bits_));
     (void)x;
+  }
+  /// interval: certification_error if the rounding mode was changed behind the
+  /// scope's back (the operations assumed upward rounding: refuse, never return
+  /// an unproved box).  Other scalars: nothing to check.
+  void verify() const {
+    if constexpr (scalar_traits<T>::needs_upward_rounding) {
+      if (!mode_->intact())
+        throw certification_error("the rounding mode was changed during the interval evaluation");
+    }
   }
 
  private:

@@ -40,7 +40,7 @@ using dd = ::dd_real;
 /// decimal digits) gets the smallest reachable count of at least `bits` bits:
 /// 113 -> 114, 256 -> 257; mpfr_precision_bits() tells which.
 unsigned set_mp_precision_bits(unsigned bits);
-/// The precision, in bits, asked for by the last set_mp_precision_bits (that of new `mpfi` values).
+/// The precision, in bits, of new `mpfi` values: what the last set_mp_precision_bits asked for.
 unsigned mp_precision_bits();
 /// The precision, in bits, that new `mpfr` values get (>= mp_precision_bits()).
 unsigned mpfr_precision_bits();
@@ -55,7 +55,8 @@ class mp_precision_scope {
   unsigned bits() const { return bits_; }
 
  private:
-  unsigned saved_bits_;
+  unsigned saved_mpfr_digits10_;
+  unsigned saved_mpfi_bits_;
   unsigned bits_;
 };
 
