@@ -231,6 +231,44 @@ BOOST_AUTO_TEST_CASE(bad_command_lines_exit_2_with_one_line) {
   expect_bad_input("tradeoff", "no scene given");
 }
 
+// Bounded time and memory on any input (README "Bad input"): what exceeds a
+// limit is bad input naming it; a result that overflows the scalar is exit 3.
+BOOST_AUTO_TEST_CASE(inputs_beyond_the_limits_exit_2_and_overflow_exits_3) {
+  expect_bad_input("eval /dev/zero", "larger than the limit of 1048576 bytes");
+  expect_bad_input("eval " + scene_file("deep", std::string(100000, '[') + std::string(100000, ']')),
+                   "nested deeper than 64");
+  std::string keys = "{";
+  for (int i = 0; i < 300; ++i) keys += (i ? ", \"k" : "\"k") + std::to_string(i) + "\": 0";
+  expect_bad_input("eval " + scene_file("keys", keys + "}"), "more than 256 keys");
+  expect_bad_input("eval " + scene_file("exponent", euler(R"({"A": "2", "B": "3", "C": "1e10000000"})", "[0, 0, 0]",
+                                                          R"({"omega": ["1", "1", "1"]})")),
+                   "inertia.C: '1e10000000' is not a decimal number");
+  expect_bad_input("eval " + scene_file("big_number", euler(R"({"A": "2", "B": "3", "C": 1e400})", "[0, 0, 0]",
+                                                            R"({"omega": ["1", "1", "1"]})")),
+                   "write it as a decimal string");
+  expect_bad_input("eval " + scene_file("control", euler(R"({"A": "2", "B": "3", "C": "4"})", "[0, 0, 0]",
+                                                         "{\"omega\": [\"1\", \"1\", \"1\"], \"a\\nb\": 1}")),
+                   "a\\x0ab: unknown key");
+  expect_bad_input("eval " + scene_file("paren", top(good_top, std::string(150, '(') + "theta" + std::string(150, ')'), "0.7")),
+                   "cone: nested deeper than 100");
+  expect_bad_input("eval " + scene_file("long_cone", top(good_top, std::string(20000, '1'), "0.7")),
+                   "cone: longer than 10000 characters");
+  std::string tower = "theta";
+  for (int i = 0; i < 89; ++i) tower += "^theta";
+  expect_bad_input("eval " + scene_file("tower", top(good_top, tower, "0.7")), "operations when unfolded");
+  // 1e300^2 overflows double: exit 3 naming the result, never "nan" with exit 0
+  const std::string huge = scene_file("huge", euler(R"({"A": "2", "B": "3", "C": "4"})", "[0, 0, 0]",
+                                                    R"({"omega": ["1e300", "1e300", "1e300"]})"));
+  for (const char* scalar : {"double", "interval"}) {
+    const outcome o = run("eval " + huge + " --scalar " + scalar);
+    BOOST_TEST(o.status == 3, scalar << ": exit " << o.status << " " << o.err);
+    BOOST_TEST(o.out.empty());
+    BOOST_TEST(std::count(o.err.begin(), o.err.end(), '\n') == 1);
+  }
+  const outcome wide = run("eval " + huge + " --scalar mpfr --bits 64");  // MPFR's exponent range holds it
+  BOOST_TEST(wide.status == 0, wide.err);
+}
+
 // tradeoff and extremes share eval's exit statuses: a scene that cannot be
 // read or parsed is bad input (2, one line naming the problem), as for eval.
 BOOST_AUTO_TEST_CASE(tradeoff_reports_bad_scenes_as_eval_does) {

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "appell/io/models/top_on_cone.hpp"
+#include "reference_top.hpp"
 
 using namespace appell;
 // The reference has a fixed precision of its own (160 digits, 532 bits), independent of appell::mpfr's.
@@ -43,41 +44,14 @@ const std::vector<cone_case> cones = {
      }},
 };
 
-struct reference {
-  ref_t theta_ddot, phi_ddot, psi_ddot, H;
-  ref_t couple[3];
-  ref_t scale;  // magnitude of the terms that cancel (for point-type tolerances)
-};
+using reference = testing::top_reference<ref_t>;
 
 reference closed_form(const top_on_cone_input& in, const cone_case& cone) {
   auto d = [](const decimal_field& x) { return ref_t(x.text); };
-  const ref_t A = d(in.A), C = d(in.C), m = d(in.mass), l = d(in.l), g = d(in.gravity);
-  const ref_t th = d(in.theta), ph = d(in.phi), thd = d(in.theta_dot), phd = d(in.phi_dot);
   ref_t f, fp, fpp;
-  cone.f(th, f, fp, fpp);
-  const ref_t s = sin(th), c = cos(th), psd = fp * thd, r = phd + psd * c;
-  const ref_t num_terms[] = {A * psd * psd * s * c, -C * r * psd * s, m * g * l * s,
-                             -fp * 2 * A * s * c * thd * psd, -fp * A * s * s * fpp * thd * thd, fp * C * r * s * thd};
-  ref_t num = 0, mag = 0;
-  for (const auto& t : num_terms) {
-    num += t;
-    mag += abs(t);
-  }
-  reference R;
-  R.theta_ddot = num / (A * (1 + s * s * fp * fp));
-  R.psi_ddot = fpp * thd * thd + fp * R.theta_ddot;
-  R.phi_ddot = psd * thd * s - R.psi_ddot * c;  // r' = 0
-  R.H = 2 * A * s * c * thd * psd + A * s * s * R.psi_ddot - C * r * s * thd;
-  R.scale = mag / A + abs(A * s * s * R.psi_ddot) + abs(C * r * s * thd) + abs(2 * A * s * c * thd * psd) +
-            abs(R.theta_ddot) + abs(R.phi_ddot) + abs(R.psi_ddot) + abs(psd * thd) + 1;
-  // Couple: Gamma . e3 = H, Gamma . e_z = 0, Gamma . (n + f' e3) = 0 (virtual work, sec. 6).
-  const ref_t psi = f, sp = sin(psi), cp = cos(psi);
-  Eigen::Matrix<ref_t, 3, 3> K;
-  K << 0, 0, 1, s * sp, -s * cp, c, cp, sp, fp;
-  Eigen::Matrix<ref_t, 3, 1> rhs(R.H, 0, 0);
-  const Eigen::Matrix<ref_t, 3, 1> G = K.partialPivLu().solve(rhs);
-  for (int i = 0; i < 3; ++i) R.couple[i] = G(i);
-  return R;
+  cone.f(d(in.theta), f, fp, fpp);
+  return testing::top_lagrange<ref_t>(d(in.A), d(in.C), d(in.mass), d(in.l), d(in.gravity), d(in.theta),
+                                      d(in.theta_dot), d(in.phi_dot), f, fp, fpp);
 }
 
 std::string decimal(std::mt19937_64& rng, double lo, double hi, int digits = 6) {

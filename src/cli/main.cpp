@@ -31,10 +31,32 @@ struct options {
   std::string format = "json";
 };
 
+// A message fit for the one-line contract: control and non-ASCII bytes as
+// \xNN (user text such as an unknown key or option is echoed in messages),
+// at most 400 characters.
+std::string one_line(std::string_view why) {
+  std::string out;
+  for (char c : why) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u < 0x7f) out += c;
+    else {
+      static const char hex[] = "0123456789abcdef";
+      out += "\\x";
+      out += hex[u >> 4];
+      out += hex[u & 15];
+    }
+    if (out.size() >= 400) {
+      out += "...";
+      break;
+    }
+  }
+  return out;
+}
+
 // A usage error is bad input (exit 2) like any other: one line on stderr, naming
 // what was wrong; `appell --help` prints the usage.
 int usage(const std::string& why) {
-  std::cerr << "appell: " << why << " (appell --help lists the commands and options)\n";
+  std::cerr << "appell: " << one_line(why) << " (appell --help lists the commands and options)\n";
   return 2;
 }
 
@@ -45,19 +67,19 @@ int exit_status_of_current_exception() {
   try {
     throw;
   } catch (const appell::input_error& e) {
-    std::cerr << "appell: " << e.what() << "\n";
+    std::cerr << "appell: " << one_line(e.what()) << "\n";
     return 2;
   } catch (const appell::parse_error& e) {
-    std::cerr << "appell: " << e.what() << "\n";
+    std::cerr << "appell: " << one_line(e.what()) << "\n";
     return 2;
   } catch (const appell::certification_error& e) {
-    std::cerr << "appell: cannot certify: " << e.what() << "\n";
+    std::cerr << "appell: cannot certify: " << one_line(e.what()) << "\n";
     return 3;
   } catch (const appell::domain_error& e) {
-    std::cerr << "appell: cannot certify: " << e.what() << "\n";
+    std::cerr << "appell: cannot certify: " << one_line(e.what()) << "\n";
     return 3;
   } catch (const std::exception& e) {
-    std::cerr << "appell: internal error: " << e.what() << "\n";
+    std::cerr << "appell: internal error: " << one_line(e.what()) << "\n";
     return 4;
   }
 }
@@ -100,7 +122,7 @@ int main(int argc, char** argv) {
       else if (a == "--reps") {
         const std::string r = argv[++i];
         if (r.empty() || r.find_first_not_of("0123456789") != std::string::npos || r.size() > 7 || std::stoi(r) < 1) {
-          std::cerr << "appell: --reps: expected a positive integer, got '" << r << "'\n";
+          std::cerr << "appell: --reps: expected a positive integer, got '" << one_line(r) << "'\n";
           return 2;
         }
         t.reps = std::stoi(r);

@@ -1,6 +1,7 @@
 // Parsing and symbolic differentiation of scene expressions.
 #include "appell/expr/expression.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 namespace appell {
@@ -22,8 +23,18 @@ class parser {
  private:
   using op = expression::op;
   [[noreturn]] void fail(const std::string& why) const {
-    throw input_error(where_ + ": " + why + " at position " + std::to_string(i_ + 1) + " of '" + s_ + "'");
+    throw input_error(where_ + ": " + why + " at position " + std::to_string(i_ + 1) + " of '" + printable(s_) + "'");
   }
+  // Counts the parser's recursion (parentheses, function arguments, unary
+  // signs, exponents) so that no input can exhaust the stack.
+  struct nesting {
+    explicit nesting(parser& p) : p_(p) {
+      if (++p_.depth_ > expression::limits::nesting)
+        p_.fail("nested deeper than " + std::to_string(expression::limits::nesting));
+    }
+    ~nesting() { --p_.depth_; }
+    parser& p_;
+  };
   void skip() {
     while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
   }
@@ -40,6 +51,7 @@ class parser {
     return static_cast<int>(nodes_.size()) - 1;
   }
   int expr() {
+    const nesting guard(*this);
     int left = term();
     for (;;) {
       if (eat('+')) left = make(op::add, left, term());
@@ -56,6 +68,7 @@ class parser {
     }
   }
   int unary() {
+    const nesting guard(*this);
     if (eat('-')) return make(op::neg, unary());
     if (eat('+')) return unary();
     return power();
@@ -112,7 +125,7 @@ class parser {
   }
 
   std::string s_, var_, where_;
-  std::size_t i_ = 0;
+  std::size_t i_ = 0, depth_ = 0;
   [[maybe_unused]] expression& out_;
   std::vector<expression::node>& nodes_;
 };
@@ -125,11 +138,36 @@ int expression::add_node(op k, int a, int b, std::string number) {
 }
 
 expression expression::parse(const std::string& text, const std::string& variable, const std::string& where) {
+  if (text.size() > limits::characters)
+    throw input_error(where + ": longer than " + std::to_string(limits::characters) + " characters");
   expression e;
   e.where_ = where;
   parser p(text, variable, where, e, e.nodes_);
   e.root_ = p.parse_all();
+  e.check_limits();
   return e;
+}
+
+// Depth and unfolded size of every node, children first (a node's operands
+// always have smaller indices), saturating: linear in the number of nodes.
+void expression::check_limits() const {
+  std::vector<std::size_t> depth(nodes_.size(), 0), size(nodes_.size(), 0);
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    const node& n = nodes_[i];
+    std::size_t d = 0, s = 1;
+    for (int c : {n.a, n.b})
+      if (c >= 0) {
+        d = std::max(d, depth[static_cast<std::size_t>(c)]);
+        s = std::min(s + size[static_cast<std::size_t>(c)], limits::size + 1);
+      }
+    depth[i] = d + 1;
+    size[i] = s;
+  }
+  const auto r = static_cast<std::size_t>(root_);
+  if (depth[r] > limits::depth)
+    throw input_error(where_ + ": a tree deeper than " + std::to_string(limits::depth) + " (a sum of too many terms?)");
+  if (size[r] > limits::size)
+    throw input_error(where_ + ": more than " + std::to_string(limits::size) + " operations when unfolded");
 }
 
 bool expression::is_integer(int i, long& value) const {
@@ -222,6 +260,7 @@ expression expression::derivative() const {
   std::vector<int> copied(nodes_.size(), -1);
   const int r = derive(root_, out, copied);
   out.root_ = r < 0 ? out.add_node(op::number, -1, -1, "0") : r;
+  out.check_limits();
   return out;
 }
 

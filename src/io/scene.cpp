@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <sstream>
 
 #include "appell/io/validate.hpp"
 
@@ -61,12 +60,17 @@ double error_amplification(const scene_input& scene) {
 scene_input read_scene_file(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw input_error(path + ": is a directory, not a scene file");
-  std::ifstream file(path);
+  std::ifstream file(path, std::ios::binary);
   if (!file) throw input_error(path + ": cannot read the scene file");
-  std::ostringstream text;
-  text << file.rdbuf();
-  if (text.str().empty()) throw input_error(path + ": empty, not a scene file");
-  return read_scene(parse_json(text.str()));
+  // read at most one byte past the limit: /dev/zero or a pipe must not hang us
+  std::string text(json_limits::bytes + 1, '\0');
+  file.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(file.gcount()));
+  if (file.bad()) throw input_error(path + ": cannot read the scene file");
+  if (text.size() > json_limits::bytes)
+    throw input_error(path + ": larger than the limit of " + std::to_string(json_limits::bytes) + " bytes");
+  if (text.empty()) throw input_error(path + ": empty, not a scene file");
+  return read_scene(parse_json(text));
 }
 
 }  // namespace appell

@@ -37,8 +37,10 @@ class tree_builder {
   }
   bool key(json::string_t& k) {
     json_value& object = *stack_.back();
-    if (object.find(k)) throw input_error("duplicate key '" + k + "'");
-    object.members.emplace_back(k, json_value{});
+    if (object.find(k)) throw input_error("duplicate key '" + printable(k) + "'");
+    if (object.members.size() == json_limits::members)
+      throw input_error("JSON: an object with more than " + std::to_string(json_limits::members) + " keys");
+    object.members.push_back({k, json_value{}});
     pending_key_ = true;
     return true;
   }
@@ -50,6 +52,9 @@ class tree_builder {
   }
   bool end_array() { return close(); }
   bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) {
+    if (e.id == 406)  // the parser converts a JSON number to a double: beyond its range it stops
+      throw input_error("JSON number at byte " + std::to_string(position) +
+                        " beyond the range of the JSON parser (double): write it as a decimal string, \"1e400\"");
     throw input_error("JSON syntax error at byte " + std::to_string(position) + ": " + e.what());
   }
 
@@ -67,17 +72,21 @@ class tree_builder {
       return &top;
     }
     if (top.type == json_value::kind::array) {
+      if (top.items.size() == json_limits::items)
+        throw input_error("JSON: a list of more than " + std::to_string(json_limits::items) + " values");
       top.items.emplace_back();
       return &top.items.back();
     }
     pending_key_ = false;
-    return &top.members.back().second;
+    return &top.members.back().value;
   }
   bool put(json_value v) {
     *slot() = std::move(v);
     return true;
   }
   bool open(json_value v) {
+    if (stack_.size() > json_limits::depth)
+      throw input_error("JSON: lists and objects nested deeper than " + std::to_string(json_limits::depth));
     json_value* s = slot();
     *s = std::move(v);
     stack_.push_back(s);
@@ -106,7 +115,26 @@ const char* kind_name(json_value::kind k) {
 
 }  // namespace
 
+std::string printable(const std::string& s) {
+  std::string out;
+  for (char c : s.substr(0, 64)) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u < 0x7f) out += c;
+    else {
+      static const char hex[] = "0123456789abcdef";
+      out += "\\x";
+      out += hex[u >> 4];
+      out += hex[u & 15];
+    }
+  }
+  if (s.size() > 64) out += "...";
+  return out;
+}
+
 json_value parse_json(const std::string& text) {
+  if (text.size() > json_limits::bytes)
+    throw input_error("JSON: " + std::to_string(text.size()) + " bytes, more than the limit of " +
+                      std::to_string(json_limits::bytes));
   json_value root;
   tree_builder builder(root);
   nlohmann::json::sax_parse(text, &builder);
@@ -117,7 +145,7 @@ decimal_field decimal_text(const json_value& v, const std::string& path) {
   if (v.type != json_value::kind::number && v.type != json_value::kind::string)
     throw input_error(path + ": expected a number, got " + kind_name(v.type));
   if (!is_decimal_literal(v.text))
-    throw input_error(path + ": '" + v.text + "' is not a decimal number");
+    throw input_error(path + ": '" + printable(v.text) + "' is not a decimal number");
   return {v.text, path};
 }
 
@@ -162,10 +190,10 @@ std::string object_reader::string(const std::string& key) {
 object_reader object_reader::object(const std::string& key) { return object_reader(required(key), path(key)); }
 
 void object_reader::finish() const {
-  for (const auto& [k, v] : v_->members) {
+  for (const auto& m : v_->members) {
     bool used = false;
-    for (const auto& u : used_) used = used || u == k;
-    if (!used) throw input_error(path(k) + ": unknown key");
+    for (const auto& u : used_) used = used || u == m.key;
+    if (!used) throw input_error(path(printable(m.key)) + ": unknown key");
   }
 }
 

@@ -26,6 +26,16 @@ namespace appell {
 class expression {
  public:
   enum class op { number, pi, variable, add, sub, mul, div, pow, neg, sin, cos, tan, exp, log, sqrt };
+  /// What parse and derivative accept (bounded time and stack on any input):
+  /// longer text, deeper nesting, or an expression or derivative whose tree
+  /// (shared subexpressions counted each time they are used) is larger or
+  /// deeper is bad input.
+  struct limits {
+    static constexpr std::size_t characters = 10000;
+    static constexpr std::size_t nesting = 100;      ///< parentheses, unary signs, ^
+    static constexpr std::size_t depth = 1000;       ///< of the tree
+    static constexpr std::size_t size = 100000;      ///< nodes of the unfolded tree
+  };
   struct node {
     op kind;
     int a = -1, b = -1;  ///< operands (indices into nodes)
@@ -70,6 +80,7 @@ class expression {
   int copy_into(int i, expression& out, std::vector<int>& copied) const;
   std::string node_string(int i) const;
   bool is_integer(int i, long& value) const;
+  void check_limits() const;
 
   template <class S>
   S eval_node(int i, const S& x, const std::vector<base_scalar_t<S>>* constants) const;

@@ -23,22 +23,45 @@ struct decimal_field {
   std::string path;  ///< e.g. "state.omega[0]"
 };
 
+/// What parse_json accepts (bounded time, memory and stack on any input;
+/// scenes need far less): deeper, longer or larger input is bad input.
+struct json_limits {
+  static constexpr std::size_t bytes = 1 << 20;  ///< a scene file: 1 MiB
+  static constexpr std::size_t depth = 64;       ///< nested lists and objects
+  static constexpr std::size_t members = 256;    ///< keys in one object
+  static constexpr std::size_t items = 4096;     ///< values in one list
+};
+
+struct json_member;
+
 struct json_value {
   enum class kind { null, boolean, number, string, array, object };
   kind type = kind::null;
   bool boolean = false;
   std::string text;  ///< a number's decimal text, or a string
   std::vector<json_value> items;
-  std::vector<std::pair<std::string, json_value>> members;
+  std::vector<json_member> members;  ///< in file order
 
-  const json_value* find(const std::string& key) const {
-    for (const auto& [k, v] : members)
-      if (k == key) return &v;
-    return nullptr;
-  }
+  const json_value* find(const std::string& key) const;
 };
 
-/// Parses JSON text; throws input_error with the position of a syntax error.
+struct json_member {
+  std::string key;
+  json_value value;
+};
+
+inline const json_value* json_value::find(const std::string& key) const {
+  for (const auto& m : members)
+    if (m.key == key) return &m.value;
+  return nullptr;
+}
+
+/// `s` fit for a one-line message: at most 64 characters, bytes outside
+/// printable ASCII as \xNN, "..." where cut.
+std::string printable(const std::string& s);
+
+/// Parses JSON text; throws input_error with the position of a syntax error or
+/// of the first place where the text exceeds json_limits.
 json_value parse_json(const std::string& text);
 
 /// Reads an object field by field and rejects what it was not asked for.

@@ -147,13 +147,21 @@ prepared_scene<T> prepare(const scene_input& scene) {
 
 /// The dynamics of a prepared scene, under the evaluation policy of T
 /// (interval: one upward-rounding scope; mpfi: guard bits, results rounded outward).
+/// A value that is not finite (an overflow, or 0/0, in T) is never returned:
+/// certification_error names it (exit 3; a wider scalar may succeed).
 template <Scalar T>
 evaluation<T> compute(const prepared_scene<T>& scene) {
   const evaluation_scope<T> scope;
   evaluation<T> e = scene.run();
   for (auto* group : {&e.results, &e.checks})
     for (auto& r : *group)
-      for (auto& x : r.values) scope.finish(x);
+      for (std::size_t i = 0; i < r.values.size(); ++i) {
+        scope.finish(r.values[i]);
+        if (!is_finite(r.values[i]))
+          throw certification_error(r.name + (r.is_vector ? "[" + std::to_string(i) + "]" : std::string()) +
+                                    ": not finite in " + scalar_traits<T>::name + " (" + to_string(r.values[i]) +
+                                    "; an overflow? a scalar with a wider range may succeed)");
+      }
   return e;
 }
 
