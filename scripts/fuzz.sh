@@ -3,8 +3,8 @@
 #   HARNESS: scene (scene files, then `appell eval` in every scalar) or
 #            expression (cone expressions, their derivatives and evaluation).
 # Builds the library and the harness with Clang, libFuzzer, ASan and UBSan in
-# ./build-fuzz, runs libFuzzer for SECONDS (default 3600) on the committed
-# corpus, then merges what reached new coverage into tests/fuzz/corpus/HARNESS
+# ./build-fuzz, runs libFuzzer for SECONDS (default 3600, one process) on the
+# committed corpus, then merges what reached new coverage into tests/fuzz/corpus/HARNESS
 # (minimized).  Findings (crash-*, timeout-*, oom-*) go to build-fuzz/findings/HARNESS;
 # the statistics to build-fuzz/HARNESS.log.  Limits per input: 10 s, 2 GiB.
 set -euo pipefail
@@ -14,15 +14,20 @@ seconds=${2:-3600}
 case "$harness" in scene|expression) ;; *) echo "fuzz.sh: unknown harness '$harness'" >&2; exit 2;; esac
 scripts/deps.sh
 if ! command -v clang++ >/dev/null || ! ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a >/dev/null 2>&1; then
-  apt-get install -y clang libclang-rt-14-dev >/dev/null
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends clang libclang-rt-14-dev >/dev/null
 fi
 CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Fuzz -DCMAKE_CXX_FLAGS_FUZZ="-O1 -g1" -DAPPELL_FUZZ=ON >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target "fuzz_$harness"
 work=build-fuzz/corpus/$harness findings=build-fuzz/findings/$harness
 mkdir -p "$work" "$findings"
+# -fork=1: the campaign goes on after a finding (each is saved, and counted in the log)
 ./build-fuzz/tests/fuzz/fuzz_"$harness" "$work" tests/fuzz/corpus/"$harness" \
+  -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
   -dict=tests/fuzz/"$harness".dict -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-  -max_len=4096 -artifact_prefix="$findings"/ -print_final_stats=1 2>&1 | tee build-fuzz/"$harness".log | grep -E '^#[0-9]+ +(pulse|DONE)|ERROR|stat::' || true
+  -max_len=4096 -artifact_prefix="$findings"/ >build-fuzz/"$harness".log 2>&1 || true
+grep -E '^#[0-9]+: cov' build-fuzz/"$harness".log | tail -1 | sed "s/^/fuzz.sh: $harness: last status: /"
 # keep a minimal set that covers what the campaign reached
 merged=build-fuzz/merged/$harness
 rm -rf "$merged" && mkdir -p "$merged"

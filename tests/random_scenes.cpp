@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <optional>
 #include <random>
 
@@ -224,6 +225,7 @@ struct tally {
   long scenes = 0, values = 0, misses = 0, uncertified = 0, straddling_zero = 0;
   std::vector<double> relative_widths;
   std::string first_miss;
+  std::map<std::string, long> refusals;  ///< why, for the scenes not certified
 };
 
 template <class T>
@@ -232,8 +234,10 @@ void check(const random_scene& s, tally& t) {
   std::optional<evaluation<T>> e;
   try {
     e = evaluate<T>(read_scene(parse_json(s.json)));
-  } catch (const certification_error&) {
+  } catch (const certification_error& e) {
     ++t.uncertified;
+    std::string why = e.what();
+    ++t.refusals[why.substr(0, why.find_first_of("([0123456789"))];
     return;
   }
   for (const truth& want : s.expected) {
@@ -277,6 +281,7 @@ void run(const std::string& model, long n, const std::function<random_scene(long
     BOOST_TEST_MESSAGE(model << ", " << name << ": " << t.scenes << " scenes, " << t.values << " values, " << t.misses
                              << " misses, " << t.uncertified << " not certified, " << t.straddling_zero
                              << " enclosures of 0; relative widths: " << quantiles(t.relative_widths));
+    for (const auto& [why, count] : t.refusals) BOOST_TEST_MESSAGE("  not certified " << count << "x: " << why);
     BOOST_TEST(t.misses == 0, model << " " << name << ": first miss " << t.first_miss);
     BOOST_TEST(t.uncertified * 100 <= t.scenes, model << " " << name << ": " << t.uncertified << " not certified");
     BOOST_TEST(t.values > 0);

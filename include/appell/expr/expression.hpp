@@ -6,7 +6,7 @@
 // hand-written formulas).  eval() runs on any scalar and on dual numbers of
 // it; decimal constants are enclosed exactly like every other input (they are
 // converted by from_decimal<T>, never through a double).  Division by zero, log
-// or sqrt outside the domain at the evaluation point are errors naming the
+// or sqrt outside the domain, sin/cos/tan beyond 2^40 rad, at the evaluation point are errors naming the
 // expression: input_error when they certainly happen, certification_error when
 // an interval merely cannot exclude them.
 #pragma once
@@ -110,6 +110,15 @@ S expression::eval_node(int i, const S& x, const std::vector<base_scalar_t<S>>* 
     if (possibly_bad)
       throw certification_error(where_ + ": cannot exclude " + what + " at the state (" + detail::describe(at) + ")");
   };
+  // sin, cos, tan of |y| > 2^40 rad: no physical angle, and an argument
+  // reduction that costs time in the exponent (MPFR, MPFI) or loses every digit (QD)
+  auto angle = [&](const S& y, const char* fn) {
+    const T& d = detail::value_of(y);
+    const T limit(1099511627776.0);  // 2^40, exact in every scalar
+    domain(certainly_positive(T(d - limit)) || certainly_negative(T(d + limit)),
+           !(certainly_nonpositive(T(d - limit)) && certainly_nonnegative(T(d + limit))),
+           std::string(fn) + " of an angle beyond 2^40 rad", d);
+  };
   switch (n.kind) {
     case op::number: return S(constants ? (*constants)[static_cast<std::size_t>(i)] : from_decimal<T>(n.number));
     case op::pi: return S(constants ? (*constants)[static_cast<std::size_t>(i)] : constant_pi<T>());
@@ -138,10 +147,19 @@ S expression::eval_node(int i, const S& x, const std::vector<base_scalar_t<S>>* 
       domain(certainly_nonpositive(d), !certainly_positive(d), "a non-integer power of a number <= 0", d);
       return exp(eval_node(n.b, x, constants) * log(base));
     }
-    case op::sin: return sin(eval_node(n.a, x, constants));
-    case op::cos: return cos(eval_node(n.a, x, constants));
+    case op::sin: {
+      const S y = eval_node(n.a, x, constants);
+      angle(y, "sin");
+      return sin(y);
+    }
+    case op::cos: {
+      const S y = eval_node(n.a, x, constants);
+      angle(y, "cos");
+      return cos(y);
+    }
     case op::tan: {
       const S y = eval_node(n.a, x, constants);
+      angle(y, "tan");
       const S c = cos(y);
       const T& d = detail::value_of(c);
       domain(certainly_nonnegative(d) && certainly_nonpositive(d), possibly_zero(d), "tan at a pole", d);

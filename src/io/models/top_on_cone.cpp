@@ -33,6 +33,12 @@ top_on_cone_input top_on_cone_model::read(object_reader& scene) {
   in.theta_dot = state.number("theta_dot");
   in.phi_dot = state.number("phi_dot");
   state.finish();
+  // Angles beyond 2^40 rad are no physical state, and their sines cost time in
+  // the exponent (MPFR, MPFI) or lose every digit (QD): refused, exactly.
+  for (const auto& [key, d] : {std::pair<const char*, const decimal_field*>{"theta", &in.theta}, {"phi", &in.phi}})
+    if (decimal_sign_of_sum({{1, d->text}, {-1, "1099511627776"}}) > 0 ||
+        decimal_sign_of_sum({{1, d->text}, {1, "1099511627776"}}) < 0)
+      throw input_error(state.path(key) + ": an angle beyond 2^40 rad, got " + printable(d->text));
   // The cone at the state, once, in 256-bit interval arithmetic: a division by
   // zero (or a log/sqrt outside its domain) at the exact state is bad input for
   // every scalar, even where a 53-bit enclosure could not tell it from a tiny
@@ -40,7 +46,9 @@ top_on_cone_input top_on_cone_model::read(object_reader& scene) {
   try {
     mp_precision_scope scope(256);
     const mpfi theta = value<mpfi>(in.theta);
-    (void)in.f->eval(theta);
+    const mpfi psi = in.f->eval(theta);
+    if (!(certainly_nonpositive(mpfi(psi - 1099511627776.0)) && certainly_nonnegative(mpfi(psi + 1099511627776.0))))
+      throw input_error("cone: psi = f(theta) = " + to_string(psi) + " at the state, beyond 2^40 rad");
     (void)in.fprime->eval(theta);
     (void)in.fsecond->eval(theta);
   } catch (const certification_error& e) {
