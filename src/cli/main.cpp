@@ -6,6 +6,7 @@
 #include <cstring>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "appell/io/scene.hpp"
@@ -52,6 +53,20 @@ std::string one_line(std::string_view why) {
   }
   return out;
 }
+
+// Swallows what libraries write to std::cerr while it lives (restored before
+// any of appell's own messages: it is destroyed when its scope unwinds).
+class cerr_silenced {
+ public:
+  cerr_silenced() : saved_(std::cerr.rdbuf(sink_.rdbuf())) {}
+  ~cerr_silenced() { std::cerr.rdbuf(saved_); }
+  cerr_silenced(const cerr_silenced&) = delete;
+  cerr_silenced& operator=(const cerr_silenced&) = delete;
+
+ private:
+  std::ostringstream sink_;
+  std::streambuf* saved_;
+};
 
 // A usage error is bad input (exit 2) like any other: one line on stderr, naming
 // what was wrong; `appell --help` prints the usage.
@@ -165,8 +180,15 @@ int main(int argc, char** argv) {
   try {
     if (o.format != "json" && o.format != "text")
       throw appell::input_error("--format: expected json or text, got '" + o.format + "'");
-    const appell::scene_input scene = appell::read_scene_file(o.scene);
-    const std::string out = dispatch(scene, o);
+    std::string out;
+    {
+      // QD writes its own complaints (npwr(0, 0), sin of a huge argument) to
+      // std::cerr and returns NaN; appell answers for it (exit 3 naming the
+      // result that is not finite), so stderr keeps to one line.
+      const cerr_silenced quiet;
+      const appell::scene_input scene = appell::read_scene_file(o.scene);
+      out = dispatch(scene, o);
+    }
     std::cout << out;
     std::cout.flush();
     if (!std::cout) {
