@@ -183,7 +183,6 @@ void eval_abs(mpfi_backend& r, const mpfi_backend& x) { mpfi_abs(r.data(), x.dat
 void eval_fabs(mpfi_backend& r, const mpfi_backend& x) { mpfi_abs(r.data(), x.data()); }
 void eval_exp(mpfi_backend& r, const mpfi_backend& x) { mpfi_exp(r.data(), x.data()); }
 void eval_exp2(mpfi_backend& r, const mpfi_backend& x) { mpfi_exp2(r.data(), x.data()); }
-void eval_tan(mpfi_backend& r, const mpfi_backend& x) { mpfi_tan(r.data(), x.data()); }
 void eval_asin(mpfi_backend& r, const mpfi_backend& x) { mpfi_asin(r.data(), x.data()); }
 void eval_acos(mpfi_backend& r, const mpfi_backend& x) { mpfi_acos(r.data(), x.data()); }
 void eval_atan(mpfi_backend& r, const mpfi_backend& x) { mpfi_atan(r.data(), x.data()); }
