@@ -32,6 +32,7 @@ grep -E '^#[0-9]+: cov' build-fuzz/"$harness".log | tail -1 | sed "s/^/fuzz.sh: 
 merged=build-fuzz/merged/$harness
 rm -rf "$merged" && mkdir -p "$merged"
 ./build-fuzz/tests/fuzz/fuzz_"$harness" -merge=1 -timeout=10 -rss_limit_mb=2048 "$merged" tests/fuzz/corpus/"$harness" "$work" >/dev/null 2>&1
+rm -f tests/fuzz/corpus/"$harness"/found-*   # the merged set covers them
 seeds=$(sha1sum tests/fuzz/corpus/"$harness"/seed-* | cut -d' ' -f1)
 for f in "$merged"/*; do
   b=$(basename "$f")   # libFuzzer names a merged input by its SHA-1

@@ -164,6 +164,7 @@ void expression::check_limits() const {
     size[i] = s;
   }
   const auto r = static_cast<std::size_t>(root_);
+  operations_ = size[r];
   if (depth[r] > limits::depth)
     throw input_error(where_ + ": a tree deeper than " + std::to_string(limits::depth) + " (a sum of too many terms?)");
   if (size[r] > limits::size)

@@ -34,8 +34,13 @@ class expression {
     static constexpr std::size_t characters = 10000;
     static constexpr std::size_t nesting = 100;      ///< parentheses, unary signs, ^
     static constexpr std::size_t depth = 1000;       ///< of the tree
-    static constexpr std::size_t size = 100000;      ///< nodes of the unfolded tree
+    static constexpr std::size_t size = 20000;       ///< nodes of the unfolded tree
+    /// unfolded nodes x bits of the scalar it is compiled for (compiled_expression):
+    /// 20,000 nodes up to 1000 bits, 200 at 100,000 bits
+    static constexpr std::size_t operation_bits = 20000000;
   };
+  /// Nodes of the unfolded tree (shared subexpressions counted each time used).
+  std::size_t operations() const { return operations_; }
   struct node {
     op kind;
     int a = -1, b = -1;  ///< operands (indices into nodes)
@@ -88,6 +93,7 @@ class expression {
   std::vector<node> nodes_;
   int root_ = -1;
   std::string where_;
+  mutable std::size_t operations_ = 0;  ///< set by check_limits
 };
 
 namespace detail {
@@ -192,7 +198,13 @@ template <Scalar T>
 class compiled_expression {
  public:
   compiled_expression() = default;
-  explicit compiled_expression(const expression& e) : e_(&e), constants_(e.constants<T>()) {}
+  explicit compiled_expression(const expression& e) : e_(&e), constants_(e.constants<T>()) {
+    const std::size_t bits = scalar_traits<T>::precision_bits();
+    if (e.operations() * bits > expression::limits::operation_bits)
+      throw input_error(e.where() + ": " + std::to_string(e.operations()) + " operations at " + std::to_string(bits) +
+                        " bits, more than the budget of " + std::to_string(expression::limits::operation_bits) +
+                        " operation-bits (a simpler expression, or fewer bits)");
+  }
   template <class S>
   S eval(const S& x) const {
     return e_->eval_bound(x, constants_);
