@@ -32,27 +32,9 @@ struct options {
   std::string format = "json";
 };
 
-// A message fit for the one-line contract: control and non-ASCII bytes as
-// \xNN (user text such as an unknown key or option is echoed in messages),
-// at most 400 characters.
-std::string one_line(std::string_view why) {
-  std::string out;
-  for (char c : why) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u >= 0x20 && u < 0x7f) out += c;
-    else {
-      static const char hex[] = "0123456789abcdef";
-      out += "\\x";
-      out += hex[u >> 4];
-      out += hex[u & 15];
-    }
-    if (out.size() >= 400) {
-      out += "...";
-      break;
-    }
-  }
-  return out;
-}
+// A message fit for the one-line contract (user text such as an unknown key or
+// option is echoed in messages): appell::printable, at most 400 characters.
+std::string one_line(std::string_view why) { return appell::printable(why, 400); }
 
 // Swallows what libraries write to std::cerr while it lives (restored before
 // any of appell's own messages: it is destroyed when its scope unwinds).

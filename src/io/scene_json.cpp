@@ -115,19 +115,23 @@ const char* kind_name(json_value::kind k) {
 
 }  // namespace
 
-std::string printable(const std::string& s) {
+std::string printable(std::string_view s, std::size_t limit) {
   std::string out;
-  for (char c : s.substr(0, 64)) {
+  for (char c : s) {
+    if (out.size() >= limit) {
+      out += "...";
+      break;
+    }
     const auto u = static_cast<unsigned char>(c);
-    if (u >= 0x20 && u < 0x7f) out += c;
-    else {
+    if (u >= 0x20 && u < 0x7f) {
+      out += c;
+    } else {
       static const char hex[] = "0123456789abcdef";
       out += "\\x";
       out += hex[u >> 4];
       out += hex[u & 15];
     }
   }
-  if (s.size() > 64) out += "...";
   return out;
 }
 

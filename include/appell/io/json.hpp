@@ -7,6 +7,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -56,9 +57,9 @@ inline const json_value* json_value::find(const std::string& key) const {
   return nullptr;
 }
 
-/// `s` fit for a one-line message: at most 64 characters, bytes outside
-/// printable ASCII as \xNN, "..." where cut.
-std::string printable(const std::string& s);
+/// `s` fit for a one-line message: bytes outside printable ASCII as \xNN, cut
+/// ("...") once `limit` characters are written.
+std::string printable(std::string_view s, std::size_t limit = 64);
 
 /// Parses JSON text; throws input_error with the position of a syntax error or
 /// of the first place where the text exceeds json_limits.
