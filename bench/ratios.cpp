@@ -17,6 +17,7 @@
 #include <set>
 
 #include "appell/io/scene.hpp"
+#include "median_reporter.hpp"
 
 using namespace appell;
 
@@ -73,27 +74,13 @@ void bench_in_place(benchmark::State& state, unsigned bits) {
   }
 }
 
-class ratio_reporter : public benchmark::ConsoleReporter {
+class ratio_reporter : public median_reporter {
  public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    // With --benchmark_repetitions the median of the repetitions is used; without, the one run.
-    for (const auto& r : runs) {
-      if (r.run_type == Run::RT_Aggregate) {
-        if (r.aggregate_name == "median") {
-          ns_[r.run_name.function_name] = r.GetAdjustedRealTime();
-          medians_.insert(r.run_name.function_name);
-        }
-      } else if (!medians_.count(r.run_name.function_name)) {
-        ns_[r.run_name.function_name] = r.GetAdjustedRealTime();
-      }
-    }
-    ConsoleReporter::ReportRuns(runs);
-  }
   void Finalize() override {
     ConsoleReporter::Finalize();
     std::cout << "\nratios from this run (goal in brackets):\n";
     for (const char* s : scenes) {
-      auto t = [&](const std::string& name) { return ns_[name + "/" + s]; };
+      auto t = [&](const std::string& name) { return ns(name + "/" + s); };
       auto line = [&](const std::string& what, double ratio, double goal) {
         if (!(ratio > 0) || !std::isfinite(ratio)) return;  // filtered out of this run
         std::cout << "  " << std::left << std::setw(26) << s << std::setw(24) << what << std::right << std::setw(8)
@@ -106,21 +93,17 @@ class ratio_reporter : public benchmark::ConsoleReporter {
       line("mpfi / mpfr at 113 bits", t("mpfi113") / t("mpfr113"), 2.2);
       line("mpfi / mpfr at 256 bits", t("mpfi256") / t("mpfr256"), 2.2);
     }
-    const double e113 = ns_["elementary/mpfi113"] / ns_["elementary/mpfr113"];
-    const double e256 = ns_["elementary/mpfi256"] / ns_["elementary/mpfr256"];
+    const double e113 = ns("elementary/mpfi113") / ns("elementary/mpfr113");
+    const double e256 = ns("elementary/mpfi256") / ns("elementary/mpfr256");
     if (e113 > 0 && std::isfinite(e113))
       std::cout << "  elementary s = a b + c: mpfi / mpfr " << std::setprecision(3) << e113 << " at 113 bits, " << e256
                 << " at 256 bits (a new value per operation, as the scenes compute)\n";
-    const double i113 = ns_["in_place/mpfi113"] / ns_["in_place/mpfr113"];
-    const double i256 = ns_["in_place/mpfi256"] / ns_["in_place/mpfr256"];
+    const double i113 = ns("in_place/mpfi113") / ns("in_place/mpfr113");
+    const double i256 = ns("in_place/mpfi256") / ns("in_place/mpfr256");
     if (i113 > 0 && std::isfinite(i113))
       std::cout << "  in place s = a b + c:   mpfi / mpfr " << std::setprecision(3) << i113 << " at 113 bits, " << i256
                 << " at 256 bits (no new values: the bounds' arithmetic alone)\n";
   }
-
- private:
-  std::map<std::string, double> ns_;
-  std::set<std::string> medians_;
 };
 
 }  // namespace

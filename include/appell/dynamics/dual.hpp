@@ -12,6 +12,7 @@
 // in which case the derivative is enclosed as rigorously as the value.
 #pragma once
 
+#include <array>
 #include <cmath>
 
 #include "appell/scalar/functions.hpp"
@@ -88,22 +89,163 @@ template <class T> dual<T> pown(const dual<T>& x, int n) {  // (x^n)' = n x^(n-1
 }
 template <class T> dual<T> sqr(const dual<T>& x) { return {sqr(x.v), T(2) * x.v * x.d}; }
 
+/// N directional derivatives carried at once (N fixed at compile time): one
+/// evaluation of the user's kinematics gives every column of J and the
+/// velocity-product terms (system.hpp), where N single duals would evaluate
+/// it N times.  Each slot's arithmetic is exactly that of a single dual seeded
+/// with that slot's direction (the same operations in the same order, the same
+/// exact-zero skips), so the derivatives are the same numbers bit for bit;
+/// the values are computed once.
+template <class T, int N>
+struct multi_dual {
+  T v;                 ///< value
+  std::array<T, N> d;  ///< derivatives along the N seeded directions
+
+  multi_dual() : v(0) { d.fill(T(0)); }
+  multi_dual(const T& value) : v(value) { d.fill(T(0)); }  // NOLINT: constants convert implicitly
+  template <class X>
+    requires std::is_arithmetic_v<X>
+  multi_dual(X n) : v(T(n)) { d.fill(T(0)); }  // NOLINT
+  multi_dual(const T& value, const std::array<T, N>& derivatives) : v(value), d(derivatives) {}
+
+  multi_dual& operator+=(const multi_dual& o) { v += o.v; for (int i = 0; i < N; ++i) d[i] += o.d[i]; return *this; }
+  multi_dual& operator-=(const multi_dual& o) { v -= o.v; for (int i = 0; i < N; ++i) d[i] -= o.d[i]; return *this; }
+  multi_dual& operator*=(const multi_dual& o) { *this = *this * o; return *this; }
+  multi_dual& operator/=(const multi_dual& o) { *this = *this / o; return *this; }
+  friend multi_dual operator-(const multi_dual& a) {
+    multi_dual r(-a.v);
+    for (int i = 0; i < N; ++i) r.d[i] = -a.d[i];
+    return r;
+  }
+  friend multi_dual operator+(const multi_dual& a) { return a; }
+  friend multi_dual operator+(const multi_dual& a, const multi_dual& b) {
+    multi_dual r(a.v + b.v);
+    for (int i = 0; i < N; ++i) r.d[i] = a.d[i] + b.d[i];
+    return r;
+  }
+  friend multi_dual operator-(const multi_dual& a, const multi_dual& b) {
+    multi_dual r(a.v - b.v);
+    for (int i = 0; i < N; ++i) r.d[i] = a.d[i] - b.d[i];
+    return r;
+  }
+  friend multi_dual operator*(const multi_dual& a, const multi_dual& b) {
+    multi_dual r(a.v * b.v);
+    for (int i = 0; i < N; ++i) {
+      if constexpr (!std::is_floating_point_v<T>) {  // as dual: exact zeros skip their products
+        const bool az = structurally_zero(a.d[i]), bz = structurally_zero(b.d[i]);
+        if (az || bz) {
+          if (!(az && bz)) r.d[i] = az ? T(a.v * b.d[i]) : T(a.d[i] * b.v);
+          continue;
+        }
+      }
+      r.d[i] = a.d[i] * b.v + a.v * b.d[i];
+    }
+    return r;
+  }
+  friend multi_dual operator/(const multi_dual& a, const multi_dual& b) {
+    multi_dual r(a.v / b.v);
+    for (int i = 0; i < N; ++i) r.d[i] = (a.d[i] - r.v * b.d[i]) / b.v;
+    return r;
+  }
+  /// f(x) with f(x.v) = value and f'(x.v) = slope: d_i = slope * x.d_i.
+  static multi_dual chain(const T& value, const T& slope, const multi_dual& x) {
+    multi_dual r(value);
+    for (int i = 0; i < N; ++i) r.d[i] = slope * x.d[i];
+    return r;
+  }
+};
+
+template <class T, int N> multi_dual<T, N> sin(const multi_dual<T, N>& x) {
+  T s, c;
+  sin_cos(x.v, s, c);
+  return multi_dual<T, N>::chain(s, c, x);
+}
+template <class T, int N> multi_dual<T, N> cos(const multi_dual<T, N>& x) {
+  T s, c;
+  sin_cos(x.v, s, c);
+  multi_dual<T, N> r(c);
+  for (int i = 0; i < N; ++i) r.d[i] = -s * x.d[i];
+  return r;
+}
+template <class T, int N> multi_dual<T, N> tan(const multi_dual<T, N>& x) {
+  using std::tan;
+  const T t = tan(x.v);
+  return multi_dual<T, N>::chain(t, T(1) + sqr(t), x);
+}
+template <class T, int N> multi_dual<T, N> atan(const multi_dual<T, N>& x) {
+  using std::atan;
+  multi_dual<T, N> r(atan(x.v));
+  const T den = T(1) + sqr(x.v);
+  for (int i = 0; i < N; ++i) r.d[i] = x.d[i] / den;
+  return r;
+}
+template <class T, int N> multi_dual<T, N> exp(const multi_dual<T, N>& x) {
+  using std::exp;
+  const T e = exp(x.v);
+  return multi_dual<T, N>::chain(e, e, x);
+}
+template <class T, int N> multi_dual<T, N> log(const multi_dual<T, N>& x) {
+  using std::log;
+  multi_dual<T, N> r(log(x.v));
+  for (int i = 0; i < N; ++i) r.d[i] = x.d[i] / x.v;
+  return r;
+}
+template <class T, int N> multi_dual<T, N> sqrt(const multi_dual<T, N>& x) {
+  using std::sqrt;
+  const T s = sqrt(x.v);
+  multi_dual<T, N> r(s);
+  const T den = T(2) * s;
+  for (int i = 0; i < N; ++i) r.d[i] = x.d[i] / den;
+  return r;
+}
+template <class T, int N> multi_dual<T, N> pown(const multi_dual<T, N>& x, int n) {
+  if (n == 0) return multi_dual<T, N>(T(1));
+  const T slope = T(n) * appell::pown(x.v, n - 1);
+  multi_dual<T, N> r(appell::pown(x.v, n));
+  for (int i = 0; i < N; ++i) r.d[i] = slope * x.d[i];
+  return r;
+}
+template <class T, int N> multi_dual<T, N> sqr(const multi_dual<T, N>& x) {
+  const T twice = T(2) * x.v;
+  multi_dual<T, N> r(sqr(x.v));
+  for (int i = 0; i < N; ++i) r.d[i] = twice * x.d[i];
+  return r;
+}
+
 template <class T> struct is_dual : std::false_type {};
 template <class T> struct is_dual<dual<T>> : std::true_type {};
+template <class T, int N> struct is_dual<multi_dual<T, N>> : std::true_type {};
+template <class T> struct is_multi_dual : std::false_type {};
+template <class T, int N> struct is_multi_dual<multi_dual<T, N>> : std::true_type {};
 
 /// The base scalar of a (possibly nested) dual type.
 template <class T> struct base_scalar { using type = T; };
 template <class T> struct base_scalar<dual<T>> { using type = typename base_scalar<T>::type; };
+template <class T, int N> struct base_scalar<multi_dual<T, N>> { using type = typename base_scalar<T>::type; };
 template <class T> using base_scalar_t = typename base_scalar<T>::type;
 
 /// Exactly 0 / exactly 1 (value and every derivative part) for scalars and duals alike.
 template <class S> bool structurally_zero(const S& x) {
-  if constexpr (is_dual<S>::value) return structurally_zero(x.v) && structurally_zero(x.d);
-  else return exactly_zero(x);
+  if constexpr (is_multi_dual<S>::value) {
+    for (const auto& di : x.d)
+      if (!structurally_zero(di)) return false;
+    return structurally_zero(x.v);
+  } else if constexpr (is_dual<S>::value) {
+    return structurally_zero(x.v) && structurally_zero(x.d);
+  } else {
+    return exactly_zero(x);
+  }
 }
 template <class S> bool structurally_one(const S& x) {
-  if constexpr (is_dual<S>::value) return structurally_one(x.v) && structurally_zero(x.d);
-  else return exactly_one(x);
+  if constexpr (is_multi_dual<S>::value) {
+    for (const auto& di : x.d)
+      if (!structurally_zero(di)) return false;
+    return structurally_one(x.v);
+  } else if constexpr (is_dual<S>::value) {
+    return structurally_one(x.v) && structurally_zero(x.d);
+  } else {
+    return exactly_one(x);
+  }
 }
 
 /// x^n for scalars and duals alike.

@@ -19,8 +19,18 @@
 
 namespace appell {
 
+namespace detail {
+/// with_speeds inherits its base's bound on the number of speeds, if it has one.
+template <class Base>
+struct speeds_bound {};
+template <bounded_speeds Base>
+struct speeds_bound<Base> {
+  static constexpr int max_speeds = Base::max_speeds;
+};
+}  // namespace detail
+
 template <class Base, class Change>
-struct with_speeds {
+struct with_speeds : detail::speeds_bound<Base> {
   const Base* base;
   Change change;  ///< change.template apply<S>(q, v, t) -> u, affine in v
   int k;          ///< dim v
@@ -54,7 +64,7 @@ struct constant_change {
 
 template <class Base, class Change>
 with_speeds<Base, Change> change_speeds(const Base& base, Change change, int k) {
-  return {&base, std::move(change), k};
+  return {{}, &base, std::move(change), k};
 }
 
 /// Frictionless constraints A(q,t) u = a(q,t) given by a templated callable:

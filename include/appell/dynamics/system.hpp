@@ -6,6 +6,7 @@
 //     int speeds() const;                                   // k = dim u
 //     template <class S> vector_t<S> qdot(q, u, t) const;   // q' = W(q,t) u + w(q,t)
 //     template <class S> void bodies(q, u, t, std::vector<body_state<S>>& out) const;
+//     static constexpr int max_speeds = ...;  // optional: then differentiated in one evaluation
 //   };
 //
 // For each rigid body (or particle: zero inertia, zero omega) `bodies` gives,
@@ -26,6 +27,9 @@
 //   Q = sum J_v^T F + J_w^T Gamma  (virtual power of the applied forces).
 #pragma once
 
+#include <algorithm>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "appell/dynamics/dual.hpp"
@@ -88,10 +92,93 @@ template <class T>
 vec3<T> derivative(const vec3<dual<T>>& x) { return vec3<T>(x(0).d, x(1).d, x(2).d); }
 }  // namespace detail
 
-/// Kinematics of every body at (q, u, t), with J and c obtained by forward differentiation.
+/// A system that bounds its number of speeds at compile time
+/// (`static constexpr int max_speeds`): its kinematics are differentiated in
+/// one evaluation on multi_dual numbers instead of k + 1 evaluations on duals.
+template <class Sys>
+concept bounded_speeds = requires { typename std::integral_constant<int, Sys::max_speeds>; };
+
+namespace detail {
+/// The values of a body evaluated on (multi_)dual numbers.
+template <class T, class D>
+body_state<T> values(const body_state<D>& d) {
+  body_state<T> s;
+  s.mass = d.mass.v;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) s.inertia(i, j) = d.inertia(i, j).v;
+    s.velocity(i) = d.velocity(i).v;
+    s.omega(i) = d.omega(i).v;
+    s.frame_rate(i) = d.frame_rate(i).v;
+    s.force(i) = d.force(i).v;
+    s.couple(i) = d.couple(i).v;
+  }
+  return s;
+}
+template <class T, int N>
+vec3<T> derivative(const vec3<multi_dual<T, N>>& x, int slot) {
+  return vec3<T>(x(0).d[slot], x(1).d[slot], x(2).d[slot]);
+}
+
+/// Evaluations on multi_dual<T, N>, each covering N of the k + 1 directions:
+/// direction c < k seeds u_c (a column of J), direction k seeds q' = W u + w
+/// and t' = 1 (the velocity-product terms).  Each slot's arithmetic is that of
+/// the corresponding single-dual pass (differentiate_kinematics_by_columns),
+/// and the values are those of the plain evaluation: the results are the same
+/// numbers, bit for bit (tests/generic_path.cpp).  N >= k + 1 takes one evaluation.
+template <int N, class T, class Sys>
+std::vector<body_kinematics<T>> differentiate_kinematics_in_slots(const Sys& sys, const vector_t<T>& q,
+                                                                  const vector_t<T>& u, const T& t) {
+  using D = multi_dual<T, N>;
+  const int k = sys.speeds();
+  const vector_t<T> qd = sys.template qdot<T>(q, u, t);
+  std::vector<body_kinematics<T>> out;
+  std::vector<body_state<D>> d;
+  vector_t<D> qs(q.size()), us(u.size());
+  for (int first = 0; first <= k; first += N) {  // directions first .. first + N - 1
+    const bool has_c = k - first < N;              // direction k falls in this evaluation
+    const auto c_slot = static_cast<std::size_t>(k - first);
+    for (Eigen::Index i = 0; i < q.size(); ++i) {
+      qs(i) = D(q(i));
+      if (has_c) qs(i).d[c_slot] = qd(i);
+    }
+    for (Eigen::Index i = 0; i < u.size(); ++i) {
+      us(i) = D(u(i));
+      if (i >= first && i < first + N) us(i).d[static_cast<std::size_t>(i - first)] = T(1);
+    }
+    D ts(t);
+    if (has_c) ts.d[c_slot] = T(1);
+    d.clear();
+    sys.template bodies<D>(qs, us, ts, d);
+    if (first == 0) {
+      out.resize(d.size());
+      for (std::size_t i = 0; i < d.size(); ++i) {
+        out[i].state = values<T>(d[i]);
+        out[i].Jv.resize(3, k);
+        out[i].Jw.resize(3, k);
+      }
+    }
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      body_kinematics<T>& B = out[i];
+      for (int c = first; c < std::min(k, first + N); ++c) {
+        B.Jv.col(c) = derivative(d[i].velocity, c - first);
+        B.Jw.col(c) = derivative(d[i].omega, c - first);
+      }
+      if (has_c) {
+        B.cv = derivative(d[i].velocity, k - first) + cross(B.state.frame_rate, B.state.velocity);
+        B.cw = derivative(d[i].omega, k - first) + cross(B.state.frame_rate, B.state.omega);
+      }
+    }
+  }
+  return out;
+}
+}  // namespace detail
+
+/// The k + 1 directional derivatives by k + 1 evaluations on single duals (and
+/// one plain evaluation for the values): the reference the slotted evaluations
+/// are tested against.
 template <Scalar T, class Sys>
-std::vector<body_kinematics<T>> differentiate_kinematics(const Sys& sys, const vector_t<T>& q,
-                                                         const vector_t<T>& u, const T& t) {
+std::vector<body_kinematics<T>> differentiate_kinematics_by_columns(const Sys& sys, const vector_t<T>& q,
+                                                                    const vector_t<T>& u, const T& t) {
   const int k = sys.speeds();
   std::vector<body_state<T>> plain;
   sys.template bodies<T>(q, u, t, plain);
@@ -125,6 +212,22 @@ std::vector<body_kinematics<T>> differentiate_kinematics(const Sys& sys, const v
   return out;
 }
 
+/// Kinematics of every body at (q, u, t), with J and c obtained by forward
+/// differentiation: one evaluation on multi_dual<T, max_speeds + 1> for a system
+/// that declares max_speeds, otherwise evaluations 8 directions at a time.
+template <Scalar T, class Sys>
+std::vector<body_kinematics<T>> differentiate_kinematics(const Sys& sys, const vector_t<T>& q,
+                                                         const vector_t<T>& u, const T& t) {
+  if constexpr (bounded_speeds<Sys>) {
+    if (sys.speeds() > Sys::max_speeds)
+      throw std::logic_error("a system has more speeds than its max_speeds (" + std::to_string(sys.speeds()) + " > " +
+                             std::to_string(Sys::max_speeds) + ")");
+    return detail::differentiate_kinematics_in_slots<Sys::max_speeds + 1>(sys, q, u, t);
+  } else {
+    return detail::differentiate_kinematics_in_slots<8>(sys, q, u, t);
+  }
+}
+
 /// Appell's equations M u' + b = Q at one state.
 template <Scalar T>
 struct appell_equations {
@@ -145,18 +248,32 @@ struct appell_equations {
   vector_t<T> accelerations() const { return solve_spd(M, vector_t<T>(Q - b)); }
 };
 
-/// Assembles M, b, Q from the differentiated kinematics.
+/// Assembles M, b, Q from the differentiated kinematics.  A speed that does
+/// not move a body (its columns of J_v and J_w exactly 0) adds exactly 0 to
+/// that body's terms: it is skipped (a link of a chain moves with the speeds
+/// of the joints before it only, so a chain's M costs N^3 / 6 products, not N^3 / 2).
 template <Scalar T>
 appell_equations<T> assemble(const std::vector<body_kinematics<T>>& bodies, int k) {
   appell_equations<T> e{matrix_t<T>::Zero(k, k), vector_t<T>::Zero(k), vector_t<T>::Zero(k)};
+  std::vector<int> active;
+  active.reserve(static_cast<std::size_t>(k));
   for (const auto& B : bodies) {
+    active.clear();
+    for (int i = 0; i < k; ++i) {
+      bool moves = false;
+      for (int r = 0; r < 3 && !moves; ++r) moves = !structurally_zero(B.Jv(r, i)) || !structurally_zero(B.Jw(r, i));
+      if (moves) active.push_back(i);
+    }
+    if (active.empty()) continue;
     const body_state<T>& s = B.state;
     const vec3<T> Iw = mat_vec(s.inertia, s.omega);
     const vec3<T> rot_bias = mat_vec(s.inertia, B.cw) + cross(s.omega, Iw);  // I c_w + w x I w
-    for (int i = 0; i < k; ++i) {
+    for (std::size_t ii = 0; ii < active.size(); ++ii) {
+      const int i = active[ii];
       const vec3<T> jvi = B.Jv.col(i), jwi = B.Jw.col(i);
       const vec3<T> Ijwi = mat_vec(s.inertia, jwi);
-      for (int j = i; j < k; ++j) {
+      for (std::size_t jj = ii; jj < active.size(); ++jj) {
+        const int j = active[jj];
         const vec3<T> jvj = B.Jv.col(j), jwj = B.Jw.col(j);
         const T mij = s.mass * dot(jvi, jvj) + dot(Ijwi, jwj);
         e.M(i, j) += mij;

@@ -2,8 +2,9 @@
 // virtual work of the inertia forces, the same number in every choice of speeds.
 //
 // inertia_virtual_work() computes  sum m a_G . dr_G + (I alpha + omega x I omega) . dtheta
-// body by body, from two dual passes of the user's kinematics (one seeded with
-// (q', u', 1) for the accelerations, one seeded with du for the displacements),
+// body by body, from one evaluation of the user's kinematics on two-slot dual
+// numbers (one slot seeded with (q', u', 1) for the accelerations, one with du
+// for the displacements),
 // without going through M and b.  The residual  P(u') . du - that  must be 0
 // (an interval holding 0 for interval types): a check of the assembly that
 // every `appell eval` result carries.
@@ -16,18 +17,22 @@ namespace appell {
 template <Scalar T, class Sys>
 T inertia_virtual_work(const Sys& sys, const vector_t<T>& q, const vector_t<T>& u, const T& t,
                        const vector_t<T>& udot, const vector_t<T>& du) {
-  std::vector<body_state<T>> plain;
-  sys.template bodies<T>(q, u, t, plain);
+  // One evaluation on multi_dual<T, 2>: slot 0 seeded with (q', u', 1) (the
+  // accelerations), slot 1 with (0, du, 0) (the displacements); the values are
+  // the plain evaluation's.
+  using D = multi_dual<T, 2>;
   const vector_t<T> qd = sys.template qdot<T>(q, u, t);
-  std::vector<body_state<dual<T>>> acc, disp;
-  sys.template bodies<dual<T>>(detail::seeded<T>(q, &qd), detail::seeded<T>(u, &udot), dual<T>(t, T(1)), acc);
-  sys.template bodies<dual<T>>(detail::seeded<T>(q, nullptr), detail::seeded<T>(u, &du), dual<T>(t), disp);
+  vector_t<D> qs(q.size()), us(u.size());
+  for (Eigen::Index i = 0; i < q.size(); ++i) qs(i) = D(q(i), {qd(i), T(0)});
+  for (Eigen::Index i = 0; i < u.size(); ++i) us(i) = D(u(i), {udot(i), du(i)});
+  std::vector<body_state<D>> bodies;
+  sys.template bodies<D>(qs, us, D(t, {T(1), T(0)}), bodies);
   T work = T(0);
-  for (std::size_t i = 0; i < plain.size(); ++i) {
-    const body_state<T>& s = plain[i];
-    const vec3<T> a = detail::derivative(acc[i].velocity) + cross(s.frame_rate, s.velocity);
-    const vec3<T> alpha = detail::derivative(acc[i].omega) + cross(s.frame_rate, s.omega);
-    const vec3<T> dr = detail::derivative(disp[i].velocity), dtheta = detail::derivative(disp[i].omega);
+  for (const body_state<D>& b : bodies) {
+    const body_state<T> s = detail::values<T>(b);
+    const vec3<T> a = detail::derivative(b.velocity, 0) + cross(s.frame_rate, s.velocity);
+    const vec3<T> alpha = detail::derivative(b.omega, 0) + cross(s.frame_rate, s.omega);
+    const vec3<T> dr = detail::derivative(b.velocity, 1), dtheta = detail::derivative(b.omega, 1);
     const vec3<T> moment = mat_vec(s.inertia, alpha) + cross(s.omega, mat_vec(s.inertia, s.omega));
     work += s.mass * dot(a, dr) + dot(moment, dtheta);
   }

@@ -88,6 +88,7 @@ template <Scalar T, class Angles = euler_angles>
 struct heavy_top {
   T A, C, mass, l, g;
 
+  static constexpr int max_speeds = 3;  ///< differentiated in one pass (system.hpp)
   int speeds() const { return 3; }
   template <class S>
   vector_t<S> qdot(const vector_t<S>& q, const vector_t<S>& u, const S&) const {
@@ -132,6 +133,7 @@ template <Scalar T, class Angles = euler_angles>
 struct heavy_top_resal {
   T A, C, mass, l, g;
 
+  static constexpr int max_speeds = 3;  ///< differentiated in one pass (system.hpp)
   int speeds() const { return 3; }
   template <class S>
   vector_t<S> qdot(const vector_t<S>& q, const vector_t<S>& u, const S&) const {
