@@ -9,6 +9,7 @@
 // enclosures) and on random states, so the ratios compare equal work.
 #pragma once
 
+#include "appell/scalar/decimal.hpp"
 #include "appell/scalar/functions.hpp"
 #include "appell/scenes/euler_body.hpp"
 #include "appell/scenes/rolling_sphere.hpp"
@@ -104,5 +105,34 @@ top_result<T> top_on_cone(const T& A, const T& C, const T& m, const T& l, const 
   o.energy_rate = A * (thd * o.theta_ddot + psd * o.psi_ddot * s * s + psd * psd * s * c * thd) - mgl * s * thd;
   return o;
 }
+
+/// Example I's cone psi = f(theta) = theta / 2 + sin(2 theta) / 10, written by hand, its
+/// constants converted to T once (as the generic path's compiled expression has them): a
+/// cone for top_on_cone_motion (f' on scalars and duals, f''), and all three of f, f', f''
+/// from one sin_cos for the closed form.
+template <Scalar T>
+struct example_one_cone {
+  T half = rational<T>(1, 2), tenth = rational<T>(1, 10), fifth = rational<T>(1, 5), two_fifths = rational<T>(2, 5);
+  T f(const T& th) const {
+    using std::sin;
+    return half * th + tenth * sin(T(th * T(2)));
+  }
+  template <class S>
+  S fprime(const S& th) const {
+    using std::cos;
+    return S(half) + S(fifth) * cos(S(th * S(2)));
+  }
+  T fsecond(const T& th) const {
+    using std::sin;
+    return -(two_fifths * sin(T(th * T(2))));
+  }
+  void all(const T& th, T& f, T& fp, T& fpp) const {
+    T s2, c2;
+    sin_cos(T(th * T(2)), s2, c2);
+    f = th * half + s2 * tenth;
+    fp = half + c2 * fifth;
+    fpp = -(s2 * two_fifths);
+  }
+};
 
 }  // namespace appell::closed_form

@@ -37,20 +37,6 @@ const char* const scalars[] = {"double", "interval"};
 
 scene_input load(const std::string& file) { return read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file); }
 
-// Example I's cone, written by hand: f = 0.5 theta + 0.1 sin(2 theta); its
-// constants converted to T once (as the generic path's compiled expression has them).
-template <Scalar T>
-struct example_one_cone {
-  T half = rational<T>(1, 2), tenth = rational<T>(1, 10), fifth = rational<T>(1, 5), two_fifths = rational<T>(2, 5);
-  void operator()(const T& th, T& f, T& fp, T& fpp) const {
-    T s2, c2;
-    sin_cos(T(th * T(2)), s2, c2);
-    f = th * half + s2 * tenth;
-    fp = half + c2 * fifth;
-    fpp = -(s2 * two_fifths);
-  }
-};
-
 /// Runs `f(prepared model inputs)` for the scene's model in T.
 template <Scalar T, class F>
 void with_model(const scene_input& scene, F&& f) {
@@ -70,9 +56,9 @@ auto closed(const rolling_sphere_model::prepared<T>& m) {
 }
 template <Scalar T>
 auto closed(const top_on_cone_model::prepared<T>& m) {
-  static const example_one_cone<T> cone;
+  static const closed_form::example_one_cone<T> cone;
   T f, fp, fpp;
-  cone(m.theta, f, fp, fpp);
+  cone.all(m.theta, f, fp, fpp);
   const heavy_top<T>& t = m.top;
   return closed_form::top_on_cone(t.A, t.C, t.mass, t.l, t.g, m.theta, m.theta_dot, m.phi_dot, f, fp, fpp);
 }

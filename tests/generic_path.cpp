@@ -93,24 +93,8 @@ void expect_same_differentiation(const Sys& sys, const vector_t<T>& q, const vec
 std::mt19937_64 rng(20261123);
 double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
 
-/// Example I's cone psi = 0.5 theta + 0.1 sin(2 theta), written by hand.
 template <Scalar T>
-struct hand_cone {
-  T half = rational<T>(1, 2), tenth = rational<T>(1, 10), fifth = rational<T>(1, 5), two_fifths = rational<T>(2, 5);
-  T f(const T& th) const {
-    using std::sin;
-    return half * th + tenth * sin(T(th * T(2)));
-  }
-  template <class S>
-  S fprime(const S& th) const {
-    using std::cos;
-    return S(half) + S(fifth) * cos(S(th * S(2)));
-  }
-  T fsecond(const T& th) const {
-    using std::sin;
-    return -(two_fifths * sin(T(th * T(2))));
-  }
-};
+using hand_cone = closed_form::example_one_cone<T>;  // Example I's cone, written by hand
 
 template <Scalar T>
 vector_t<T> random_vector(int n, double lo, double hi) {

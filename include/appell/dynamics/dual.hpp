@@ -153,6 +153,18 @@ struct multi_dual {
     for (int i = 0; i < N; ++i) r.d[i] = slope * x.d[i];
     return r;
   }
+  /// f(x) with f'(x.v) = 1 / den: d_i = x.d_i / den (as dual's rules divide, not multiply by 1 / den).
+  static multi_dual chain_over(const T& value, const T& den, const multi_dual& x) {
+    multi_dual r(value);
+    for (int i = 0; i < N; ++i) r.d[i] = x.d[i] / den;
+    return r;
+  }
+  /// Every derivative exactly 0.
+  bool derivatives_zero() const {
+    for (const T& di : d)
+      if (!structurally_zero(di)) return false;
+    return true;
+  }
 };
 
 template <class T, int N> multi_dual<T, N> sin(const multi_dual<T, N>& x) {
@@ -163,9 +175,7 @@ template <class T, int N> multi_dual<T, N> sin(const multi_dual<T, N>& x) {
 template <class T, int N> multi_dual<T, N> cos(const multi_dual<T, N>& x) {
   T s, c;
   sin_cos(x.v, s, c);
-  multi_dual<T, N> r(c);
-  for (int i = 0; i < N; ++i) r.d[i] = -s * x.d[i];
-  return r;
+  return multi_dual<T, N>::chain(c, -s, x);
 }
 template <class T, int N> multi_dual<T, N> tan(const multi_dual<T, N>& x) {
   using std::tan;
@@ -174,10 +184,7 @@ template <class T, int N> multi_dual<T, N> tan(const multi_dual<T, N>& x) {
 }
 template <class T, int N> multi_dual<T, N> atan(const multi_dual<T, N>& x) {
   using std::atan;
-  multi_dual<T, N> r(atan(x.v));
-  const T den = T(1) + sqr(x.v);
-  for (int i = 0; i < N; ++i) r.d[i] = x.d[i] / den;
-  return r;
+  return multi_dual<T, N>::chain_over(atan(x.v), T(1) + sqr(x.v), x);
 }
 template <class T, int N> multi_dual<T, N> exp(const multi_dual<T, N>& x) {
   using std::exp;
@@ -186,30 +193,19 @@ template <class T, int N> multi_dual<T, N> exp(const multi_dual<T, N>& x) {
 }
 template <class T, int N> multi_dual<T, N> log(const multi_dual<T, N>& x) {
   using std::log;
-  multi_dual<T, N> r(log(x.v));
-  for (int i = 0; i < N; ++i) r.d[i] = x.d[i] / x.v;
-  return r;
+  return multi_dual<T, N>::chain_over(log(x.v), x.v, x);
 }
 template <class T, int N> multi_dual<T, N> sqrt(const multi_dual<T, N>& x) {
   using std::sqrt;
   const T s = sqrt(x.v);
-  multi_dual<T, N> r(s);
-  const T den = T(2) * s;
-  for (int i = 0; i < N; ++i) r.d[i] = x.d[i] / den;
-  return r;
+  return multi_dual<T, N>::chain_over(s, T(2) * s, x);
 }
 template <class T, int N> multi_dual<T, N> pown(const multi_dual<T, N>& x, int n) {
   if (n == 0) return multi_dual<T, N>(T(1));
-  const T slope = T(n) * appell::pown(x.v, n - 1);
-  multi_dual<T, N> r(appell::pown(x.v, n));
-  for (int i = 0; i < N; ++i) r.d[i] = slope * x.d[i];
-  return r;
+  return multi_dual<T, N>::chain(appell::pown(x.v, n), T(n) * appell::pown(x.v, n - 1), x);
 }
 template <class T, int N> multi_dual<T, N> sqr(const multi_dual<T, N>& x) {
-  const T twice = T(2) * x.v;
-  multi_dual<T, N> r(sqr(x.v));
-  for (int i = 0; i < N; ++i) r.d[i] = twice * x.d[i];
-  return r;
+  return multi_dual<T, N>::chain(sqr(x.v), T(2) * x.v, x);
 }
 
 template <class T> struct is_dual : std::false_type {};
@@ -227,9 +223,7 @@ template <class T> using base_scalar_t = typename base_scalar<T>::type;
 /// Exactly 0 / exactly 1 (value and every derivative part) for scalars and duals alike.
 template <class S> bool structurally_zero(const S& x) {
   if constexpr (is_multi_dual<S>::value) {
-    for (const auto& di : x.d)
-      if (!structurally_zero(di)) return false;
-    return structurally_zero(x.v);
+    return x.derivatives_zero() && structurally_zero(x.v);
   } else if constexpr (is_dual<S>::value) {
     return structurally_zero(x.v) && structurally_zero(x.d);
   } else {
@@ -238,9 +232,7 @@ template <class S> bool structurally_zero(const S& x) {
 }
 template <class S> bool structurally_one(const S& x) {
   if constexpr (is_multi_dual<S>::value) {
-    for (const auto& di : x.d)
-      if (!structurally_zero(di)) return false;
-    return structurally_one(x.v);
+    return x.derivatives_zero() && structurally_one(x.v);
   } else if constexpr (is_dual<S>::value) {
     return structurally_one(x.v) && structurally_zero(x.d);
   } else {
