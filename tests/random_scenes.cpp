@@ -28,9 +28,11 @@
 #include "appell/io/scene.hpp"
 #include "../proofs/sphere_newton_euler.hpp"
 #include "reference_top.hpp"
+#include "bounds_400.hpp"
 
 using namespace appell;
-using ref_t = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<120>, boost::multiprecision::et_off>;
+using testing::ref_t;
+using testing::bounds_of;
 
 namespace {
 
@@ -68,7 +70,33 @@ struct truth {
 struct random_scene {
   std::string json;
   std::vector<truth> expected;
+  // The same system as a "system" scene file (SCENES.md here), with the names
+  // its results have there: the same references must be enclosed.
+  std::string system_json;
+  std::vector<truth> system_expected;
 };
+
+// --- pieces of system files ---------------------------------------------------------
+std::string qlist(const std::vector<std::string>& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + q(v[i]);
+  return s + "]";
+}
+/// The entries of R = rz(psi) rx(theta) rz(phi) (body axes to fixed), as expressions.
+const char* const rotation[3][3] = {
+    {"cos(psi)*cos(phi) - sin(psi)*cos(theta)*sin(phi)", "-cos(psi)*sin(phi) - sin(psi)*cos(theta)*cos(phi)",
+     "sin(psi)*sin(theta)"},
+    {"sin(psi)*cos(phi) + cos(psi)*cos(theta)*sin(phi)", "-sin(psi)*sin(phi) + cos(psi)*cos(theta)*cos(phi)",
+     "-cos(psi)*sin(theta)"},
+    {"sin(theta)*sin(phi)", "sin(theta)*cos(phi)", "cos(theta)"}};
+/// A decimal that is a transcendental number to 110 digits (within 1e-110 of the
+/// constraint: the readers take what 256 bits cannot tell from exact as exact).
+std::string digits110(const ref_t& x) { return x.str(110, std::ios_base::scientific); }
+/// Euler angles z-x-z away from their singularity.
+std::string random_angles(std::string& psi, std::string& theta, std::string& phi) {
+  psi = random_decimal(-3000, 3000, 3), theta = random_decimal(200, 2900, 3), phi = random_decimal(-3000, 3000, 3);
+  return "\"psi\": " + q(psi) + ", \"theta\": " + q(theta) + ", \"phi\": " + q(phi);
+}
 
 // --- euler_body -------------------------------------------------------------
 random_scene euler_scene() {
@@ -92,6 +120,23 @@ random_scene euler_scene() {
   s.expected.push_back({"omega_dot",
                         {((b - c) * w2 * w3 + R(L[0])) / a, ((c - a) * w3 * w1 + R(L[1])) / b,
                          ((a - b) * w1 * w2 + R(L[2])) / c}});
+  // As a system: Euler angles, speeds (p, q, r) on the body axes, the torque turned to the fixed axes.
+  std::string psi, theta, phi;
+  const std::string angles = random_angles(psi, theta, phi);
+  std::vector<std::string> couple;
+  for (int i = 0; i < 3; ++i)
+    couple.push_back("(" + std::string(rotation[i][0]) + ")*L + (" + rotation[i][1] + ")*M + (" + rotation[i][2] + ")*N");
+  s.system_json =
+      "{\"model\": \"system\", \"parameters\": {\"A\": " + q(A) + ", \"B\": " + q(B) + ", \"C\": " + q(C) +
+      ", \"L\": " + q(L[0]) + ", \"M\": " + q(L[1]) + ", \"N\": " + q(L[2]) +
+      "}, \"coordinates\": [\"psi\", \"theta\", \"phi\"], \"speeds\": [\"p\", \"q\", \"r\"], "
+      "\"kinematics\": {\"psi\": \"(p*sin(phi) + q*cos(phi))/sin(theta)\", \"theta\": \"p*cos(phi) - q*sin(phi)\", "
+      "\"phi\": \"r - cos(theta)*(p*sin(phi) + q*cos(phi))/sin(theta)\"}, "
+      "\"bodies\": {\"body\": {\"mass\": \"1\", \"inertia\": [\"A\", \"B\", \"C\"], \"center\": [\"0\", \"0\", \"0\"], "
+      "\"orientation\": \"rz(psi) rx(theta) rz(phi)\", \"couple\": " + qlist(couple) + "}}, "
+      "\"state\": {" + angles + ", \"p\": " + q(w[0]) + ", \"q\": " + q(w[1]) + ", \"r\": " + q(w[2]) + "}}";
+  const auto& wd = s.expected.back().values;
+  s.system_expected = {{"p_dot", {wd[0]}}, {"q_dot", {wd[1]}}, {"r_dot", {wd[2]}}};
   return s;
 }
 
@@ -122,6 +167,19 @@ random_scene top_scene() {
   const auto r = testing::top_lagrange<ref_t>(R(A), R(C), R(m), R(l), R("9.81"), t, R(thd), R(phd), f, fp, fpp);
   s.expected = {{"theta_ddot", {r.theta_ddot}}, {"phi_ddot", {r.phi_ddot}}, {"psi_ddot", {r.psi_ddot}},
                 {"H", {r.H}}, {"couple", {r.couple[0], r.couple[1], r.couple[2]}}};
+  // As a system: the top's centre and orientation in Euler angles, the cone a holonomic constraint.
+  s.system_json =
+      "{\"model\": \"system\", \"parameters\": {\"A\": " + q(A) + ", \"C\": " + q(C) + ", \"m\": " + q(m) +
+      ", \"l\": " + q(l) + ", \"g\": \"9.81\"}, \"coordinates\": [\"theta\", \"phi\", \"psi\"], "
+      "\"gravity\": [\"0\", \"0\", \"-g\"], \"bodies\": {\"top\": {\"mass\": \"m\", "
+      "\"inertia\": [\"A - m*l^2\", \"A - m*l^2\", \"C\"], "
+      "\"center\": [\"l*sin(theta)*sin(psi)\", \"-l*sin(theta)*cos(psi)\", \"l*cos(theta)\"], "
+      "\"orientation\": \"rz(psi) rx(theta) rz(phi)\"}}, "
+      "\"constraints\": {\"cone\": {\"holonomic\": " + q("psi - (" + cone + ")") + "}}, "
+      "\"state\": {\"theta\": " + q(th) + ", \"phi\": " + q(ph) + ", \"psi\": " + q(digits110(f)) +
+      ", \"theta_dot\": " + q(thd) + ", \"phi_dot\": " + q(phd) + ", \"psi_dot\": " + q(digits110(fp * R(thd))) + "}}";
+  s.system_expected = {{"theta_ddot", {r.theta_ddot}}, {"phi_ddot", {r.phi_ddot}}, {"psi_ddot", {r.psi_ddot}},
+                       {"cone_reaction", {r.H}}};
   return s;
 }
 
@@ -206,20 +264,46 @@ random_scene sphere_scene(int surface) {
                 {"tangential_force", {tangential}},
                 {"pivot_couple", {ne.Gn}},
                 {"friction_ratio", {tangential / normal}}};
+  // As a system: the centre and Euler angles, speeds v and omega on the fixed axes,
+  // rolling as v - a omega x n = 0 and omega . n = 0 with n from the coordinates.
+  std::string n_expr[3] = {"0", "0", "1"};
+  if (surface != 0) {
+    const std::string sign = inside ? "-" : "";
+    const std::string norm = surface <= 2 ? "sqrt(x^2 + y^2 + z^2)" : "sqrt(x^2 + y^2)";
+    n_expr[0] = sign + "x/" + norm, n_expr[1] = sign + "y/" + norm, n_expr[2] = surface <= 2 ? sign + "z/" + norm : "0";
+  }
+  auto nx_ = [&](int i) { return "(" + n_expr[i] + ")"; };
+  const std::string wxn[3] = {"wy*" + nx_(2) + " - wz*" + nx_(1), "wz*" + nx_(0) + " - wx*" + nx_(2),
+                              "wx*" + nx_(1) + " - wy*" + nx_(0)};
+  const V v = om.cross(n) * ar;  // the centre's velocity, from rolling
+  std::string psi, theta, phi;
+  const std::string angles = random_angles(psi, theta, phi);
+  s.system_json =
+      "{\"model\": \"system\", \"parameters\": {\"M\": " + q(M) + ", \"a\": " + q(a) + ", \"A\": " +
+      q(homogeneous ? "2/5*M*a^2" : A) + "}, \"coordinates\": [\"x\", \"y\", \"z\", \"psi\", \"theta\", \"phi\"], "
+      "\"speeds\": [\"vx\", \"vy\", \"vz\", \"wx\", \"wy\", \"wz\"], "
+      "\"kinematics\": {\"x\": \"vx\", \"y\": \"vy\", \"z\": \"vz\", "
+      "\"psi\": \"wz - cos(theta)*(wx*sin(psi) - wy*cos(psi))/sin(theta)\", "
+      "\"theta\": \"wx*cos(psi) + wy*sin(psi)\", \"phi\": \"(wx*sin(psi) - wy*cos(psi))/sin(theta)\"}, "
+      "\"gravity\": " + list3(g[0], g[1], g[2]) + ", \"bodies\": {\"sphere\": {\"mass\": \"M\", "
+      "\"inertia\": [\"A\", \"A\", \"A\"], \"center\": [\"x\", \"y\", \"z\"], "
+      "\"orientation\": \"rz(psi) rx(theta) rz(phi)\", \"force\": " + list3(F[0], F[1], F[2]) +
+      ", \"couple\": " + list3(tau[0], tau[1], tau[2]) + "}}, \"constraints\": {"
+      "\"slip_x\": {\"nonholonomic\": " + q("vx - a*(" + wxn[0] + ")") + "}, "
+      "\"slip_y\": {\"nonholonomic\": " + q("vy - a*(" + wxn[1] + ")") + "}, "
+      "\"slip_z\": {\"nonholonomic\": " + q("vz - a*(" + wxn[2] + ")") + "}, "
+      "\"pivot\": {\"nonholonomic\": " + q("wx*" + nx_(0) + " + wy*" + nx_(1) + " + wz*" + nx_(2)) + "}}, "
+      "\"state\": {\"x\": " + q(cx) + ", \"y\": " + q(cy) + ", \"z\": " + q(cz) + ", " + angles +
+      ", \"vx\": " + q(digits110(v(0))) + ", \"vy\": " + q(digits110(v(1))) + ", \"vz\": " + q(digits110(v(2))) +
+      ", \"wx\": " + q(w[0]) + ", \"wy\": " + q(w[1]) + ", \"wz\": " + q(w[2]) + "}}";
+  s.system_expected = {{"vx_dot", {ne.aG(0)}}, {"vy_dot", {ne.aG(1)}}, {"vz_dot", {ne.aG(2)}},
+                       {"wx_dot", {ne.alpha(0)}}, {"wy_dot", {ne.alpha(1)}}, {"wz_dot", {ne.alpha(2)}},
+                       {"slip_x_reaction", {ne.Fc(0)}}, {"slip_y_reaction", {ne.Fc(1)}},
+                       {"slip_z_reaction", {ne.Fc(2)}}, {"pivot_reaction", {ne.Gn}}};
   return s;
 }
 
 // --- checking -------------------------------------------------------------------
-// The bounds of an enclosure as 400-bit numbers (outward: exact for both types).
-template <class T>
-std::pair<ref_t, ref_t> bounds_of(const T& x) {
-  mpfr_value lo, hi;
-  scalar_traits<T>::to_mpfr(x, lo, hi);
-  std::pair<ref_t, ref_t> r;
-  mpfr_set(r.first.backend().data(), lo, MPFR_RNDD);
-  mpfr_set(r.second.backend().data(), hi, MPFR_RNDU);
-  return r;
-}
 
 struct tally {
   long scenes = 0, values = 0, misses = 0, uncertified = 0, straddling_zero = 0;
@@ -229,18 +313,18 @@ struct tally {
 };
 
 template <class T>
-void check(const random_scene& s, tally& t) {
+void check(const std::string& json, const std::vector<truth>& expected, tally& t) {
   ++t.scenes;
   std::optional<evaluation<T>> e;
   try {
-    e = evaluate<T>(read_scene(parse_json(s.json)));
+    e = evaluate<T>(read_scene(parse_json(json)));
   } catch (const certification_error& e) {
     ++t.uncertified;
     std::string why = e.what();
     ++t.refusals[why.substr(0, why.find_first_of("([0123456789"))];
     return;
   }
-  for (const truth& want : s.expected) {
+  for (const truth& want : expected) {
     const auto& got = e->result(want.name).values;
     BOOST_REQUIRE_EQUAL(got.size(), want.values.size());
     for (std::size_t i = 0; i < got.size(); ++i) {
@@ -251,7 +335,7 @@ void check(const random_scene& s, tally& t) {
       if (hi < r - delta || lo > r + delta) {
         if (t.misses++ == 0)
           t.first_miss = want.name + "[" + std::to_string(i) + "] = " + to_string(got[i]) + " misses " + r.str(40) +
-                         " in " + s.json;
+                         " in " + json;
       }
       if (lo > 0 || hi < 0) t.relative_widths.push_back(static_cast<double>((hi - lo) / std::min(abs(lo), abs(hi))));
       else ++t.straddling_zero;
@@ -269,13 +353,16 @@ std::string quantiles(std::vector<double> w) {
   return b;
 }
 
-void run(const std::string& model, long n, const std::function<random_scene(long)>& make) {
+/// The model's scenes, or (as_system) the same systems as "system" scene files.
+void run(const std::string& model, long n, const std::function<random_scene(long)>& make, bool as_system = false) {
   tally ti, tm;
   for (long k = 0; k < n; ++k) {
     const random_scene s = make(k);
-    check<interval>(s, ti);
+    const std::string& json = as_system ? s.system_json : s.json;
+    const std::vector<truth>& expected = as_system ? s.system_expected : s.expected;
+    check<interval>(json, expected, ti);
     const mp_precision_scope bits(128);
-    check<mpfi>(s, tm);
+    check<mpfi>(json, expected, tm);
   }
   for (const auto& [name, t] : {std::pair<const char*, const tally&>{"interval", ti}, {"mpfi 128", tm}}) {
     BOOST_TEST_MESSAGE(model << ", " << name << ": " << t.scenes << " scenes, " << t.values << " values, " << t.misses
@@ -296,4 +383,18 @@ BOOST_AUTO_TEST_CASE(top_on_cone_random_scenes_are_enclosed) { run("top_on_cone"
 
 BOOST_AUTO_TEST_CASE(rolling_sphere_random_scenes_are_enclosed) {
   run("rolling_sphere", scenes_per_model(), [](long k) { return sphere_scene(static_cast<int>(k % 5)); });
+}
+
+// The same random systems written as "system" scene files (SCENES.md in this
+// repository): the generic expression model must enclose the same references.
+BOOST_AUTO_TEST_CASE(euler_body_as_system_files_are_enclosed) {
+  run("system (euler_body)", scenes_per_model() / 4, [](long) { return euler_scene(); }, true);
+}
+
+BOOST_AUTO_TEST_CASE(top_on_cone_as_system_files_are_enclosed) {
+  run("system (top_on_cone)", scenes_per_model() / 4, [](long) { return top_scene(); }, true);
+}
+
+BOOST_AUTO_TEST_CASE(rolling_sphere_as_system_files_are_enclosed) {
+  run("system (rolling_sphere)", scenes_per_model() / 4, [](long k) { return sphere_scene(static_cast<int>(k % 5)); }, true);
 }

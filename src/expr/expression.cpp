@@ -9,9 +9,9 @@ namespace {
 
 class parser {
  public:
-  parser(const std::string& text, const std::string& variable, const std::string& where, expression& out,
+  parser(const std::string& text, const std::vector<std::string>& variables, const std::string& where,
          std::vector<expression::node>& nodes)
-      : s_(text), var_(variable), where_(where), out_(out), nodes_(nodes) {}
+      : s_(text), vars_(variables), where_(where), nodes_(nodes) {}
 
   int parse_all() {
     const int r = expr();
@@ -46,8 +46,8 @@ class parser {
     }
     return false;
   }
-  int make(op k, int a = -1, int b = -1, std::string number = {}) {
-    nodes_.push_back({k, a, b, std::move(number)});
+  int make(op k, int a = -1, int b = -1, std::string number = {}, int var = 0) {
+    nodes_.push_back({k, a, b, std::move(number), var});
     return static_cast<int>(nodes_.size()) - 1;
   }
   int expr() {
@@ -106,7 +106,8 @@ class parser {
       const std::size_t start = i_;
       while (i_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_')) ++i_;
       const std::string name = s_.substr(start, i_ - start);
-      if (name == var_) return make(op::variable);
+      for (std::size_t v = 0; v < vars_.size(); ++v)
+        if (name == vars_[v]) return make(op::variable, -1, -1, {}, static_cast<int>(v));
       if (name == "pi") return make(op::pi);
       static const std::pair<const char*, op> functions[] = {{"sin", op::sin}, {"cos", op::cos}, {"tan", op::tan},
                                                              {"exp", op::exp}, {"log", op::log}, {"sqrt", op::sqrt}};
@@ -119,33 +120,60 @@ class parser {
         }
       }
       i_ = start;
-      fail("unknown name '" + name + "' (known: " + var_ + ", pi, sin, cos, tan, exp, log, sqrt)");
+      std::string known;
+      for (const std::string& v : vars_) known += v + ", ";
+      fail("unknown name '" + name + "' (known: " + printable(known, 200) + "pi, sin, cos, tan, exp, log, sqrt)");
     }
     fail("unexpected '" + std::string(1, c) + "'");
   }
 
-  std::string s_, var_, where_;
+  std::string s_;
+  const std::vector<std::string>& vars_;
+  std::string where_;
   std::size_t i_ = 0, depth_ = 0;
-  [[maybe_unused]] expression& out_;
   std::vector<expression::node>& nodes_;
 };
 
 }  // namespace
 
-int expression::add_node(op k, int a, int b, std::string number) {
-  nodes_.push_back({k, a, b, std::move(number)});
+int expression::add_node(op k, int a, int b, std::string number, int var) {
+  nodes_.push_back({k, a, b, std::move(number), var});
   return static_cast<int>(nodes_.size()) - 1;
 }
 
 expression expression::parse(const std::string& text, const std::string& variable, const std::string& where) {
+  return parse(text, std::vector<std::string>{variable}, where);
+}
+
+expression expression::parse(const std::string& text, const std::vector<std::string>& variables,
+                             const std::string& where) {
   if (text.size() > limits::characters)
     throw input_error(where + ": longer than " + std::to_string(limits::characters) + " characters");
   expression e;
   e.where_ = where;
-  parser p(text, variable, where, e, e.nodes_);
+  e.variables_ = variables;
+  parser p(text, e.variables_, where, e.nodes_);
   e.root_ = p.parse_all();
   e.check_limits();
   return e;
+}
+
+bool expression::depends_on(int variable) const {
+  std::vector<char> reached(nodes_.size(), 0);
+  reached[static_cast<std::size_t>(root_)] = 1;
+  for (std::size_t i = nodes_.size(); i-- > 0;) {  // operands have smaller indices
+    if (!reached[i]) continue;
+    const node& n = nodes_[i];
+    if (n.kind == op::variable && n.var == variable) return true;
+    for (int c : {n.a, n.b})
+      if (c >= 0) reached[static_cast<std::size_t>(c)] = 1;
+  }
+  return false;
+}
+
+bool expression::is_zero() const {
+  const node& n = nodes_[static_cast<std::size_t>(root_)];
+  return n.kind == op::number && n.number.find_first_not_of("0.") == std::string::npos;
 }
 
 // Depth and unfolded size of every node, children first (a node's operands
@@ -188,11 +216,11 @@ int expression::copy_into(int i, expression& out, std::vector<int>& copied) cons
   const node& n = nodes_[static_cast<std::size_t>(i)];
   const int a = n.a >= 0 ? copy_into(n.a, out, copied) : -1;
   const int b = n.b >= 0 ? copy_into(n.b, out, copied) : -1;
-  return copied[static_cast<std::size_t>(i)] = out.add_node(n.kind, a, b, n.number);
+  return copied[static_cast<std::size_t>(i)] = out.add_node(n.kind, a, b, n.number, n.var);
 }
 
-// d(node i)/dx into `out`; -1 stands for the derivative 0 (kept out of the tree).
-int expression::derive(int i, expression& out, std::vector<int>& copied) const {
+// d(node i)/d(variable) into `out`; -1 stands for the derivative 0 (kept out of the tree).
+int expression::derive(int i, int variable, expression& out, std::vector<int>& copied) const {
   const node& n = nodes_[static_cast<std::size_t>(i)];
   auto copy = [&](int j) { return copy_into(j, out, copied); };
   auto num = [&](const char* text) { return out.add_node(op::number, -1, -1, text); };
@@ -203,16 +231,16 @@ int expression::derive(int i, expression& out, std::vector<int>& copied) const {
   switch (n.kind) {
     case op::number:
     case op::pi: return -1;
-    case op::variable: return num("1");
-    case op::add: return add(derive(n.a, out, copied), derive(n.b, out, copied));
-    case op::sub: return add(derive(n.a, out, copied), neg(derive(n.b, out, copied)));
-    case op::neg: return neg(derive(n.a, out, copied));
+    case op::variable: return n.var == variable ? num("1") : -1;
+    case op::add: return add(derive(n.a, variable, out, copied), derive(n.b, variable, out, copied));
+    case op::sub: return add(derive(n.a, variable, out, copied), neg(derive(n.b, variable, out, copied)));
+    case op::neg: return neg(derive(n.a, variable, out, copied));
     case op::mul: {  // (ab)' = a'b + ab'
-      const int da = derive(n.a, out, copied), db = derive(n.b, out, copied);
+      const int da = derive(n.a, variable, out, copied), db = derive(n.b, variable, out, copied);
       return add(da < 0 ? -1 : mul(da, copy(n.b)), db < 0 ? -1 : mul(copy(n.a), db));
     }
     case op::div: {  // (a/b)' = a'/b - a b' / b^2
-      const int da = derive(n.a, out, copied), db = derive(n.b, out, copied);
+      const int da = derive(n.a, variable, out, copied), db = derive(n.b, variable, out, copied);
       const int first = da < 0 ? -1 : out.add_node(op::div, da, copy(n.b));
       const int second =
           db < 0 ? -1
@@ -221,7 +249,7 @@ int expression::derive(int i, expression& out, std::vector<int>& copied) const {
     }
     case op::pow: {
       long k = 0;
-      const int da = derive(n.a, out, copied);
+      const int da = derive(n.a, variable, out, copied);
       if (is_integer(n.b, k)) {  // (a^k)' = k a^(k-1) a'
         if (k == 0 || da < 0) return -1;
         const int km1 = out.add_node(op::number, -1, -1, std::to_string(std::labs(k - 1)));
@@ -231,35 +259,36 @@ int expression::derive(int i, expression& out, std::vector<int>& copied) const {
         return mul(mul(coeff, out.add_node(op::pow, copy(n.a), exponent)), da);
       }
       // (a^b)' = a^b (b' log a + b a'/a)
-      const int db = derive(n.b, out, copied);
+      const int db = derive(n.b, variable, out, copied);
       const int t1 = db < 0 ? -1 : mul(db, out.add_node(op::log, copy(n.a)));
       const int t2 = da < 0 ? -1 : out.add_node(op::div, mul(copy(n.b), da), copy(n.a));
       const int inner = add(t1, t2);
       return inner < 0 ? -1 : mul(copy(i), inner);
     }
-    case op::sin: return chain(out.add_node(op::cos, copy(n.a)), derive(n.a, out, copied));
-    case op::cos: return chain(neg(out.add_node(op::sin, copy(n.a))), derive(n.a, out, copied));
+    case op::sin: return chain(out.add_node(op::cos, copy(n.a)), derive(n.a, variable, out, copied));
+    case op::cos: return chain(neg(out.add_node(op::sin, copy(n.a))), derive(n.a, variable, out, copied));
     case op::tan:  // 1 + tan^2
       return chain(add(num("1"), out.add_node(op::pow, out.add_node(op::tan, copy(n.a)), num("2"))),
-                   derive(n.a, out, copied));
-    case op::exp: return chain(copy(i), derive(n.a, out, copied));
+                   derive(n.a, variable, out, copied));
+    case op::exp: return chain(copy(i), derive(n.a, variable, out, copied));
     case op::log: {
-      const int da = derive(n.a, out, copied);
+      const int da = derive(n.a, variable, out, copied);
       return da < 0 ? -1 : out.add_node(op::div, da, copy(n.a));
     }
     case op::sqrt: {  // 1 / (2 sqrt a)
-      const int da = derive(n.a, out, copied);
+      const int da = derive(n.a, variable, out, copied);
       return da < 0 ? -1 : out.add_node(op::div, da, mul(num("2"), copy(i)));
     }
   }
   throw std::logic_error("expression: unknown node");
 }
 
-expression expression::derivative() const {
+expression expression::derivative(int variable) const {
   expression out;
-  out.where_ = where_ + "'";
+  out.where_ = variables_.size() > 1 ? "d(" + where_ + ")/d" + variables_[static_cast<std::size_t>(variable)] : where_ + "'";
+  out.variables_ = variables_;
   std::vector<int> copied(nodes_.size(), -1);
-  const int r = derive(root_, out, copied);
+  const int r = derive(root_, variable, out, copied);
   out.root_ = r < 0 ? out.add_node(op::number, -1, -1, "0") : r;
   out.check_limits();
   return out;
@@ -270,7 +299,7 @@ std::string expression::node_string(int i) const {
   switch (n.kind) {
     case op::number: return n.number;
     case op::pi: return "pi";
-    case op::variable: return "x";
+    case op::variable: return variables_.empty() ? "x" : variables_[static_cast<std::size_t>(n.var)];
     case op::add: return "(" + node_string(n.a) + " + " + node_string(n.b) + ")";
     case op::sub: return "(" + node_string(n.a) + " - " + node_string(n.b) + ")";
     case op::mul: return "(" + node_string(n.a) + " * " + node_string(n.b) + ")";

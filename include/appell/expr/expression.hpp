@@ -1,5 +1,6 @@
 // appell/expr/expression.hpp -- the scene expression language (SCENES.md):
-// numbers, pi, one variable, + - * / ^, parentheses, sin cos tan exp log sqrt.
+// numbers, pi, named variables (one for a cone's f(theta), many for a system
+// file's), + - * / ^, parentheses, sin cos tan exp log sqrt.
 //
 // An expression is parsed once into a tree; derivative() differentiates it
 // symbolically (f' and f'' of the cone psi = f(theta) come from here, not from
@@ -45,20 +46,36 @@ class expression {
     op kind;
     int a = -1, b = -1;  ///< operands (indices into nodes)
     std::string number;  ///< the decimal text of a number
+    int var = 0;         ///< a variable's index in the list it was parsed with
   };
 
   /// Parses `text` in the variable `variable`; throws input_error("where: ...").
   static expression parse(const std::string& text, const std::string& variable, const std::string& where);
-  /// d/d(variable), symbolically.
-  expression derivative() const;
+  /// Parses `text` in the named variables (a name's index is its place in the list).
+  static expression parse(const std::string& text, const std::vector<std::string>& variables,
+                          const std::string& where);
+  /// d/d(variable), symbolically (the only variable, or variable number `variable`).
+  expression derivative(int variable = 0) const;
+  /// Whether variable number `variable` occurs in the expression (its tree as
+  /// written: x - x depends on x).
+  bool depends_on(int variable) const;
+  /// Whether the expression is the number 0 as written (a derivative that vanishes
+  /// structurally is written so).
+  bool is_zero() const;
   std::string to_string() const;
   const std::string& where() const { return where_; }
+  const std::vector<std::string>& variables() const { return variables_; }
 
   /// The value at x (S a scalar or a dual of one); decimal constants and pi
   /// are converted to the scalar at each call.  For repeated evaluation use a
   /// compiled_expression<T> (below), which converts them once.
   template <class S>
   S eval(const S& x) const {
+    return eval_node<S>(root_, &x, nullptr);
+  }
+  /// The value at the variables `x[0], x[1], ...` (in the order parsed).
+  template <class S>
+  S eval_at(const S* x) const {
     return eval_node<S>(root_, x, nullptr);
   }
   /// The constants converted to T, one slot per node (the value for a number or
@@ -76,23 +93,28 @@ class expression {
   /// constants<base_scalar_t<S>>()) instead of converted again.
   template <class S>
   S eval_bound(const S& x, const std::vector<base_scalar_t<S>>& constants) const {
+    return eval_node<S>(root_, &x, &constants);
+  }
+  template <class S>
+  S eval_bound_at(const S* x, const std::vector<base_scalar_t<S>>& constants) const {
     return eval_node<S>(root_, x, &constants);
   }
 
  private:
-  int add_node(op k, int a = -1, int b = -1, std::string number = {});
-  int derive(int i, expression& out, std::vector<int>& copied) const;
+  int add_node(op k, int a = -1, int b = -1, std::string number = {}, int var = 0);
+  int derive(int i, int variable, expression& out, std::vector<int>& copied) const;
   int copy_into(int i, expression& out, std::vector<int>& copied) const;
   std::string node_string(int i) const;
   bool is_integer(int i, long& value) const;
   void check_limits() const;
 
   template <class S>
-  S eval_node(int i, const S& x, const std::vector<base_scalar_t<S>>* constants) const;
+  S eval_node(int i, const S* x, const std::vector<base_scalar_t<S>>* constants) const;
 
   std::vector<node> nodes_;
   int root_ = -1;
   std::string where_;
+  std::vector<std::string> variables_;
   mutable std::size_t operations_ = 0;  ///< set by check_limits
 };
 
@@ -107,7 +129,7 @@ std::string describe(const T& x) { return to_string(x); }
 }  // namespace detail
 
 template <class S>
-S expression::eval_node(int i, const S& x, const std::vector<base_scalar_t<S>>* constants) const {
+S expression::eval_node(int i, const S* x, const std::vector<base_scalar_t<S>>* constants) const {
   using T = base_scalar_t<S>;
   using std::sin, std::cos, std::tan, std::exp, std::log, std::sqrt;
   const node& n = nodes_[static_cast<std::size_t>(i)];
@@ -128,7 +150,7 @@ S expression::eval_node(int i, const S& x, const std::vector<base_scalar_t<S>>* 
   switch (n.kind) {
     case op::number: return S(constants ? (*constants)[static_cast<std::size_t>(i)] : from_decimal<T>(n.number));
     case op::pi: return S(constants ? (*constants)[static_cast<std::size_t>(i)] : constant_pi<T>());
-    case op::variable: return x;
+    case op::variable: return x[n.var];
     case op::add: return eval_node(n.a, x, constants) + eval_node(n.b, x, constants);
     case op::sub: return eval_node(n.a, x, constants) - eval_node(n.b, x, constants);
     case op::mul: return eval_node(n.a, x, constants) * eval_node(n.b, x, constants);
@@ -209,6 +231,12 @@ class compiled_expression {
   S eval(const S& x) const {
     return e_->eval_bound(x, constants_);
   }
+  /// At the variables x[0], x[1], ... (in the order the expression was parsed with).
+  template <class S>
+  S eval_at(const S* x) const {
+    return e_->eval_bound_at(x, constants_);
+  }
+  const expression& source() const { return *e_; }
 
  private:
   const expression* e_ = nullptr;

@@ -1,0 +1,66 @@
+// appell/io/models/system.hpp -- the scene model "system": a mechanical system
+// of the user's own, described by expressions (SCENES.md in this repository):
+// parameters, coordinates, speeds (the coordinates' rates, or quasi-velocities
+// with their kinematics), bodies, gravity, applied forces and couples, and
+// named holonomic and nonholonomic constraints.  The mechanics are in
+// scenes/expression_system.hpp; the reader (src/io/models/system.cpp) parses,
+// differentiates and checks everything once, at 256 bits, on exact decimals.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "appell/io/model.hpp"
+#include "appell/scenes/expression_system.hpp"
+
+namespace appell {
+
+struct system_input : model_input {
+  std::shared_ptr<const system_definition> def;
+  std::vector<decimal_field> q, u;  ///< the state: coordinates and speeds
+  decimal_field t;                  ///< the time (default 0)
+  std::vector<std::string> acceleration_names;  ///< per speed: q_ddot (rates) or u_dot
+};
+
+struct system_model {
+  static constexpr const char* name = "system";
+  using input = system_input;
+  static input read(object_reader& scene);
+
+  template <Scalar T>
+  struct prepared {
+    const system_input* in;
+    compiled_system<T> sys;
+    vector_t<T> q, u;
+    T t;
+  };
+  template <Scalar T>
+  static prepared<T> prepare(const input& in) {
+    vector_t<T> q(static_cast<Eigen::Index>(in.q.size())), u(static_cast<Eigen::Index>(in.u.size()));
+    for (std::size_t i = 0; i < in.q.size(); ++i) q(static_cast<Eigen::Index>(i)) = value<T>(in.q[i]);
+    for (std::size_t j = 0; j < in.u.size(); ++j) u(static_cast<Eigen::Index>(j)) = value<T>(in.u[j]);
+    return {&in, compiled_system<T>(*in.def), q, u, value<T>(in.t)};
+  }
+  template <Scalar T>
+  static evaluation<T> compute(const prepared<T>& m) {
+    const system_motion_result<T> r = system_motion(m.sys, m.q, m.u, m.t);
+    evaluation<T> e;
+    for (std::size_t j = 0; j < m.in->acceleration_names.size(); ++j)
+      e.results.push_back(detail::scalar_result(m.in->acceleration_names[j], T(r.accelerations(static_cast<Eigen::Index>(j)))));
+    const auto& constraints = m.in->def->constraints;
+    for (std::size_t c = 0; c < constraints.size(); ++c)
+      e.results.push_back(detail::scalar_result(constraints[c].name + "_reaction", T(r.reactions(static_cast<Eigen::Index>(c)))));
+    e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
+    for (std::size_t c = 0; c < constraints.size(); ++c) {
+      const auto i = static_cast<Eigen::Index>(c);
+      e.checks.push_back(detail::scalar_result(constraints[c].name + "_cotton_minus_lagrange",
+                                               T(r.reactions(i) - r.multipliers(i))));
+    }
+    return e;
+  }
+};
+
+APPELL_EXTERN_MODEL(system_model)
+
+}  // namespace appell

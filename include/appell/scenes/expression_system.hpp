@@ -1,0 +1,391 @@
+// appell/scenes/expression_system.hpp -- a mechanical system described by
+// expressions: the scene model "system" (SCENES.md in this repository).
+//
+// The description (system_definition) is scalar-free: parsed expressions in
+// the variables  parameters..., q..., u..., t  (in that order), with the
+// partial derivatives the dynamics need taken symbolically once, when the
+// scene is read.  compiled_system<T> holds their constants and the
+// parameters' values in T; expression_system<T> is then an ordinary
+// mechanical system of the generic path (system.hpp):
+//   q' = kinematics(q, u, t)  (u = q' when the speeds are the coordinates' rates);
+//   for each body, on the fixed axes,
+//     v_G   = sum_i dr_G/dq_i q'_i + dr_G/dt,
+//     omega = sum_m a_m' R_1 ... R_(m-1) e_(axis m)  for the orientation
+//             R = R_1(a_1) R_2(a_2) ... (elementary rotations about x, y, z
+//             by angles a_m(q, t), composed left to right, body axes to fixed),
+//     force = mass g + F,  couple Gamma;
+//   a body that turns is given to the generic path on its own axes (a frame
+//   turning with omega; components R^T x, each R_m^T applied in turn, so the
+//   inertia is the exact I_body and never R I_body R^T, which intervals would
+//   widen), unless its inertia is a multiple of the identity as written: then
+//   R I R^T = I and the fixed axes serve;
+// the library differentiates these once more (multi_dual) for J and the
+// velocity-product terms, as for every other system.
+// The constraints (expression_constraints<T>) read A(q, t) u = a(q, t), one row each:
+//   holonomic f(q, t) = 0:       A = df/dq W,  a = -(df/dq w + df/dt),
+//                                with q' = W u + w (W = dq'/du, w = q'(u = 0));
+//   nonholonomic g(q, u, t) = 0: A = dg/du,    a = -g(q, 0, t)   (g affine in u).
+// Their reactions are Cotton's Q'_c in speeds adapted with v_c = A u - a, equal
+// to the Lagrange multipliers of those rows (both are computed; the scene's
+// checks carry the difference).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "appell/dynamics/speeds.hpp"
+#include "appell/dynamics/virtual_work.hpp"
+#include "appell/expr/expression.hpp"
+#include "appell/reactions/cotton.hpp"
+#include "appell/reactions/lagrange.hpp"
+
+namespace appell {
+
+/// Where each kind of variable sits in the expressions' variable list.
+struct system_variables {
+  int parameters = 0, coordinates = 0, speeds = 0;
+  int q(int i) const { return parameters + i; }
+  int u(int j) const { return parameters + coordinates + j; }
+  int t() const { return parameters + coordinates + speeds; }
+  int size() const { return t() + 1; }
+};
+
+using shared_expression = std::shared_ptr<const expression>;
+
+/// A function of (q, t) with its partial derivatives that are not 0 as written.
+struct differentiated_expression {
+  shared_expression value;
+  std::vector<std::pair<int, shared_expression>> dq;  ///< (i, d value / dq_i)
+  shared_expression dt;                               ///< d value / dt, or null
+};
+
+struct system_body_definition {
+  std::string name;
+  shared_expression mass;
+  std::array<shared_expression, 6> inertia;  ///< central, on body axes: xx yy zz xy yz zx (null: 0)
+  std::array<differentiated_expression, 3> center;  ///< G on the fixed axes
+  std::vector<std::pair<int, differentiated_expression>> rotations;  ///< (axis 0/1/2, angle), left to right
+  std::array<shared_expression, 3> force, couple;  ///< force through G and couple (null: 0), on the body's axes
+  /// Given instead of an orientation: the angular velocity (affine in u), on
+  /// the fixed axes (an isotropic inertia: its orientation plays no part), or
+  /// with body_axes on the body's own axes, with the centre's velocity there
+  /// too (the paper's free body on moving axes, sec. 3 and 4).
+  std::array<shared_expression, 3> omega, velocity;
+  bool has_omega = false, body_axes = false;
+};
+
+struct system_constraint_definition {
+  std::string name;
+  bool holonomic = true;
+  differentiated_expression f;                        ///< holonomic: f(q, t) = 0
+  shared_expression g;                                ///< nonholonomic: g(q, u, t) = 0
+  std::vector<std::pair<int, shared_expression>> du;  ///< nonholonomic: (j, dg/du_j) not 0
+};
+
+/// A whole system file's mechanics, independent of any scalar.
+struct system_definition {
+  system_variables vars;
+  std::vector<std::string> names;              ///< every variable, in order
+  std::vector<shared_expression> parameters;   ///< each parameter's value (an expression of parameters)
+  std::vector<int> parameter_order;            ///< each parameter after those it uses
+  bool rates_as_speeds = true;                 ///< u = q' (no kinematics given)
+  std::vector<shared_expression> kinematics;   ///< q'_i(q, u, t), when not rates_as_speeds
+  std::vector<std::vector<std::pair<int, shared_expression>>> kinematics_du;  ///< (j, dq'_i/du_j) not 0
+  std::array<shared_expression, 3> gravity;    ///< null: none
+  std::vector<system_body_definition> bodies;
+  std::vector<system_constraint_definition> constraints;
+};
+
+namespace detail {
+/// An optional expression compiled in T (an empty one is 0).
+template <Scalar T>
+struct compiled_term {
+  std::optional<compiled_expression<T>> e;
+  compiled_term() = default;
+  explicit compiled_term(const shared_expression& x) {
+    if (x) e.emplace(*x);
+  }
+  template <class S>
+  S at(const S* x) const {
+    return e ? e->eval_at(x) : S(0);
+  }
+  explicit operator bool() const { return e.has_value(); }
+};
+template <Scalar T>
+struct compiled_differentiated {
+  compiled_term<T> value, dt;
+  std::vector<std::pair<int, compiled_term<T>>> dq;
+  compiled_differentiated() = default;
+  explicit compiled_differentiated(const differentiated_expression& d) : value(d.value), dt(d.dt) {
+    for (const auto& [i, e] : d.dq) dq.emplace_back(i, compiled_term<T>(e));
+  }
+  /// d/dt along q' = qd:  sum_i d/dq_i qd_i + d/dt.
+  template <class S>
+  S rate(const S* x, const vector_t<S>& qd) const {
+    S r = dt.at(x);
+    for (const auto& [i, e] : dq) r += e.at(x) * qd(i);
+    return r;
+  }
+};
+}  // namespace detail
+
+/// A system file's mechanics with its constants and parameters in T.  It
+/// refers to the definition, which must outlive it.
+template <Scalar T>
+struct compiled_system {
+  struct body {
+    detail::compiled_term<T> mass;
+    std::array<detail::compiled_term<T>, 6> inertia;
+    std::array<detail::compiled_differentiated<T>, 3> center;
+    std::vector<std::pair<int, detail::compiled_differentiated<T>>> rotations;
+    std::array<detail::compiled_term<T>, 3> force, couple, omega, velocity;
+    bool has_omega = false, body_axes = false;
+    bool has_inertia = false;
+    bool isotropic = false;  ///< inertia a multiple of the identity, as written (then R I R^T = I)
+    template <class S>
+    mat3<S> inertia_on_body_axes(const S* x) const {
+      const auto I = [&](std::size_t k) { return inertia[k].at(x); };
+      mat3<S> Ib;
+      Ib << I(0), I(3), I(5), I(3), I(1), I(4), I(5), I(4), I(2);
+      return Ib;
+    }
+  };
+  struct constraint {
+    bool holonomic = true;
+    detail::compiled_differentiated<T> f;
+    detail::compiled_term<T> g;
+    std::vector<std::pair<int, detail::compiled_term<T>>> du;
+  };
+  const system_definition* def = nullptr;
+  std::vector<T> parameters;  ///< values in T
+  std::vector<detail::compiled_term<T>> kinematics;
+  std::vector<std::vector<std::pair<int, detail::compiled_term<T>>>> kinematics_du;
+  std::array<detail::compiled_term<T>, 3> gravity;
+  std::vector<body> bodies;
+  std::vector<constraint> constraints;
+
+  explicit compiled_system(const system_definition& d) : def(&d) {
+    parameters.assign(d.parameters.size(), T(0));
+    std::vector<T> x(static_cast<std::size_t>(d.vars.size()), T(0));
+    for (int p : d.parameter_order) {
+      const auto i = static_cast<std::size_t>(p);
+      parameters[i] = compiled_expression<T>(*d.parameters[i]).eval_at(x.data());
+      x[i] = parameters[i];
+    }
+    for (const auto& k : d.kinematics) kinematics.emplace_back(k);
+    for (const auto& row : d.kinematics_du) {
+      kinematics_du.emplace_back();
+      for (const auto& [j, e] : row) kinematics_du.back().emplace_back(j, detail::compiled_term<T>(e));
+    }
+    for (int i = 0; i < 3; ++i) gravity[static_cast<std::size_t>(i)] = detail::compiled_term<T>(d.gravity[static_cast<std::size_t>(i)]);
+    for (const auto& b : d.bodies) {
+      body c;
+      c.mass = detail::compiled_term<T>(b.mass);
+      for (std::size_t i = 0; i < 6; ++i) c.inertia[i] = detail::compiled_term<T>(b.inertia[i]);
+      for (std::size_t i = 0; i < 3; ++i) {
+        c.center[i] = detail::compiled_differentiated<T>(b.center[i]);
+        c.force[i] = detail::compiled_term<T>(b.force[i]);
+        c.couple[i] = detail::compiled_term<T>(b.couple[i]);
+        c.omega[i] = detail::compiled_term<T>(b.omega[i]);
+        c.velocity[i] = detail::compiled_term<T>(b.velocity[i]);
+      }
+      for (const auto& [axis, angle] : b.rotations) c.rotations.emplace_back(axis, detail::compiled_differentiated<T>(angle));
+      c.has_omega = b.has_omega;
+      c.body_axes = b.body_axes;
+      for (const auto& e : b.inertia) c.has_inertia = c.has_inertia || bool(e);
+      c.isotropic = b.inertia[0] && b.inertia[1] && b.inertia[2] && !b.inertia[3] && !b.inertia[4] && !b.inertia[5] &&
+                    b.inertia[0]->to_string() == b.inertia[1]->to_string() &&
+                    b.inertia[0]->to_string() == b.inertia[2]->to_string();
+      bodies.push_back(std::move(c));
+    }
+    for (const auto& k : d.constraints) {
+      constraint c;
+      c.holonomic = k.holonomic;
+      if (k.holonomic) c.f = detail::compiled_differentiated<T>(k.f);
+      else c.g = detail::compiled_term<T>(k.g);
+      for (const auto& [j, e] : k.du) c.du.emplace_back(j, detail::compiled_term<T>(e));
+      constraints.push_back(std::move(c));
+    }
+  }
+
+  /// The variable list at (q, u, t), parameters first.
+  template <class S>
+  std::vector<S> variables(const vector_t<S>& q, const vector_t<S>& u, const S& t) const {
+    const system_variables& v = def->vars;
+    std::vector<S> x(static_cast<std::size_t>(v.size()), S(0));
+    for (std::size_t i = 0; i < parameters.size(); ++i) x[i] = S(parameters[i]);
+    for (int i = 0; i < v.coordinates; ++i) x[static_cast<std::size_t>(v.q(i))] = q(i);
+    for (int j = 0; j < v.speeds && j < u.size(); ++j) x[static_cast<std::size_t>(v.u(j))] = u(j);
+    x[static_cast<std::size_t>(v.t())] = t;
+    return x;
+  }
+  /// q' at the variables x (u included).
+  template <class S>
+  vector_t<S> rates(const std::vector<S>& x) const {
+    const system_variables& v = def->vars;
+    vector_t<S> qd(v.coordinates);
+    for (int i = 0; i < v.coordinates; ++i)
+      qd(i) = def->rates_as_speeds ? x[static_cast<std::size_t>(v.u(i))]
+                                   : kinematics[static_cast<std::size_t>(i)].at(x.data());
+    return qd;
+  }
+};
+
+/// The system as the generic path sees it.
+template <Scalar T>
+struct expression_system {
+  const compiled_system<T>* c;
+  int speeds() const { return c->def->vars.speeds; }
+  template <class S>
+  vector_t<S> qdot(const vector_t<S>& q, const vector_t<S>& u, const S& t) const {
+    return c->rates(c->template variables<S>(q, u, t));
+  }
+  template <class S>
+  void bodies(const vector_t<S>& q, const vector_t<S>& u, const S& t, std::vector<body_state<S>>& out) const {
+    const std::vector<S> x = c->template variables<S>(q, u, t);
+    const vector_t<S> qd = c->rates(x);
+    vec3<S> g = vec3<S>::Zero();
+    for (int i = 0; i < 3; ++i) g(i) = c->gravity[static_cast<std::size_t>(i)].at(x.data());
+    for (const auto& b : c->bodies) {
+      body_state<S> s;
+      s.mass = b.mass.at(x.data());
+      for (int i = 0; i < 3; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        s.velocity(i) = b.body_axes ? b.velocity[k].at(x.data()) : b.center[k].rate(x.data(), qd);
+        s.force(i) = b.body_axes ? b.force[k].at(x.data()) : S(s.mass * g(i) + b.force[k].at(x.data()));
+        s.couple(i) = b.couple[k].at(x.data());
+        if (b.has_omega) s.omega(i) = b.omega[k].at(x.data());
+      }
+      if (b.body_axes) s.frame_rate = s.omega;  // the body's own axes turn with it
+      if (b.rotations.empty()) {  // a particle, a body that does not turn, or one given by omega
+        if (b.has_inertia) s.inertia = b.inertia_on_body_axes(x.data());
+        out.push_back(s);
+        continue;
+      }
+      // The angles' sines and cosines once; their rates along q' = qd.
+      const std::size_t m = b.rotations.size();
+      std::vector<S> c(m), sn(m), rate(m);
+      for (std::size_t k = 0; k < m; ++k) {
+        using std::sin, std::cos;
+        const auto& [axis, angle] = b.rotations[k];
+        const S a = angle.value.at(x.data());
+        c[k] = cos(a), sn[k] = sin(a), rate[k] = angle.rate(x.data(), qd);
+      }
+      auto turn = [&](std::size_t k, const vec3<S>& v, bool transpose) {  // R_k v or R_k^T v
+        const int axis = b.rotations[k].first, i = (axis + 1) % 3, j = (axis + 2) % 3;
+        const S sk = transpose ? S(-sn[k]) : sn[k];
+        vec3<S> r = v;
+        r(i) = c[k] * v(i) - sk * v(j);
+        r(j) = sk * v(i) + c[k] * v(j);
+        return r;
+      };
+      auto along = [&](std::size_t k) {  // rate_k e_(axis k)
+        vec3<S> e = vec3<S>::Zero();
+        e(b.rotations[k].first) = rate[k];
+        return e;
+      };
+      if (b.isotropic) {
+        // I = R I R^T = I: the fixed axes, omega = r_1 e_1 + R_1 (r_2 e_2 + R_2 (r_3 e_3 + ...)).
+        vec3<S> w = along(m - 1);
+        for (std::size_t k = m - 1; k-- > 0;) w = vec3<S>(turn(k, w, false) + along(k));
+        s.omega = w;
+        if (b.has_inertia) s.inertia = b.inertia_on_body_axes(x.data());
+        out.push_back(s);
+        continue;
+      }
+      // The body's axes (a frame turning with omega): the inertia as given, exactly;
+      // omega = R_m^T (... R_2^T (R_1^T 0 + r_1 e_1) + r_2 e_2 ...) + r_m e_m; v, force, couple turned.
+      vec3<S> w = vec3<S>::Zero();
+      for (std::size_t k = 0; k < m; ++k) {
+        w = vec3<S>(turn(k, w, true) + along(k));
+        s.velocity = turn(k, s.velocity, true);
+        s.force = turn(k, s.force, true);
+        s.couple = turn(k, s.couple, true);
+      }
+      s.omega = w;
+      s.frame_rate = w;
+      if (b.has_inertia) s.inertia = b.inertia_on_body_axes(x.data());
+      out.push_back(s);
+    }
+  }
+};
+
+/// The constraints, A(q, t) u = a(q, t), one row each (see the top of this file).
+template <Scalar T>
+struct expression_constraints {
+  const compiled_system<T>* c;
+  int count() const { return static_cast<int>(c->constraints.size()); }
+  template <class S>
+  void eval(const vector_t<S>& q, const S& t, matrix_t<S>& A, vector_t<S>& a) const {
+    const system_variables& v = c->def->vars;
+    const vector_t<S> u0 = vector_t<S>::Zero(v.speeds);
+    const std::vector<S> x = c->template variables<S>(q, u0, t);
+    A.setZero();
+    for (int r = 0; r < count(); ++r) {
+      const auto& k = c->constraints[static_cast<std::size_t>(r)];
+      if (!k.holonomic) {
+        for (const auto& [j, e] : k.du) A(r, j) = e.at(x.data());
+        a(r) = -k.g.at(x.data());
+        continue;
+      }
+      S rhs = k.f.dt.at(x.data());
+      for (const auto& [i, e] : k.f.dq) {
+        const S dfi = e.at(x.data());
+        if (c->def->rates_as_speeds) {
+          A(r, i) += dfi;
+          continue;
+        }
+        for (const auto& [j, w] : c->kinematics_du[static_cast<std::size_t>(i)]) A(r, j) += dfi * w.at(x.data());
+        rhs += dfi * c->kinematics[static_cast<std::size_t>(i)].at(x.data());  // w_i = q'_i at u = 0
+      }
+      a(r) = -rhs;
+    }
+  }
+};
+
+template <Scalar T>
+struct system_motion_result {
+  vector_t<T> accelerations;  ///< u'
+  vector_t<T> reactions;      ///< Cotton's Q'_c, one per constraint
+  vector_t<T> multipliers;    ///< Lagrange's, for comparison
+  T virtual_work_residual;    ///< eq. (4), in the speeds adapted to the constraints
+};
+
+/// The system's motion at (q, u, t): u' by Gibbs-Appell (Cotton's method when
+/// there are constraints), the reactions, the Lagrange multipliers and eq. (4).
+template <Scalar T>
+system_motion_result<T> system_motion(const compiled_system<T>& c, const vector_t<T>& q, const vector_t<T>& u,
+                                      const T& t) {
+  const expression_system<T> sys{&c};
+  const int n = sys.speeds();
+  system_motion_result<T> r;
+  if (c.constraints.empty()) {
+    const appell_equations<T> eq = gibbs_appell(sys, q, u, t);
+    r.accelerations = eq.accelerations();
+    r.virtual_work_residual = virtual_work_residual(sys, eq, q, u, t, r.accelerations, vector_t<T>(vector_t<T>::Ones(n)));
+    return r;
+  }
+  const expression_constraints<T> con{&c};
+  const auto change = adapt_speeds<T>(con, q, t, n);
+  appell_equations<T> adapted_eq;
+  const constrained_motion<T> m = cotton_reactions(sys, change, q, u, t, &adapted_eq);
+  r.accelerations = m.accelerations;
+  r.reactions = m.reactions;
+  r.multipliers = lagrange_multipliers(sys, con, q, u, t).reactions;
+  // eq. (4) in the adapted speeds (v_a, v_c): v = (u_free, 0), v' = (u_free', 0)
+  const int k = static_cast<int>(change.free_columns.size());
+  vector_t<T> v = vector_t<T>::Zero(n), vdot = vector_t<T>::Zero(n);
+  for (int i = 0; i < k; ++i) {
+    v(i) = u(change.free_columns[static_cast<std::size_t>(i)]);
+    vdot(i) = m.accelerations(change.free_columns[static_cast<std::size_t>(i)]);
+  }
+  r.virtual_work_residual = virtual_work_residual(change_speeds(sys, change, n), adapted_eq, q, v, t, vdot,
+                                                  vector_t<T>(vector_t<T>::Ones(n)));
+  return r;
+}
+
+}  // namespace appell

@@ -1,0 +1,476 @@
+// Scene model "system": schema, symbolic differentiation and validation (SCENES.md
+// in this repository), and its registry entry.
+//
+// Everything that can be decided once is decided here, on the exact decimals:
+// names (undefined, duplicate, reserved, circular parameters), what each
+// expression may depend on (positions and angles on q and t; kinematics and
+// nonholonomic constraints affine in u, checked on the derivatives' trees),
+// and, in 256-bit interval arithmetic at the state, every expression and
+// derivative defined, masses positive, inertia tensors positive semidefinite,
+// the state on every constraint, and the constraints independent.  What
+// 256 bits cannot tell from exact is taken as exact (as for the cone of
+// top_on_cone); the scalar the user asks for certifies the rest.
+#include "appell/io/models/system.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <functional>
+#include <set>
+
+namespace appell {
+namespace {
+
+const std::set<std::string>& reserved_names() {
+  static const std::set<std::string> r{"pi", "t", "sin", "cos", "tan", "exp", "log", "sqrt", "rx", "ry", "rz"};
+  return r;
+}
+
+bool is_identifier(const std::string& s) {
+  if (s.empty() || s.size() > 64 || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+  return std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
+std::string expression_text(const json_value& v, const std::string& path) {
+  if (v.type == json_value::kind::string || v.type == json_value::kind::number) return v.text;
+  throw input_error(path + ": expected an expression (a string) or a number");
+}
+
+std::vector<std::string> name_list(const json_value& v, const std::string& path) {
+  if (v.type != json_value::kind::array) throw input_error(path + ": expected a list of names");
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < v.items.size(); ++i) {
+    const json_value& x = v.items[i];
+    if (x.type != json_value::kind::string) throw input_error(path + "[" + std::to_string(i) + "]: expected a name");
+    out.push_back(x.text);
+  }
+  return out;
+}
+
+const json_value& object_value(object_reader& r, const std::string& key) {
+  const json_value& v = r.raw(key);
+  if (v.type != json_value::kind::object) throw input_error(r.path(key) + ": expected an object");
+  return v;
+}
+
+class builder {
+ public:
+  system_definition def;
+
+  shared_expression parse(const std::string& text, const std::string& where) {
+    return std::make_shared<const expression>(expression::parse(text, def.names, where));
+  }
+  bool depends_on_range(const expression& e, int first, int last) const {
+    for (int v = first; v < last; ++v)
+      if (e.depends_on(v)) return true;
+    return false;
+  }
+  bool depends_on_state(const expression& e) const { return depends_on_range(e, def.vars.parameters, def.vars.size()); }
+  bool depends_on_speeds(const expression& e) const { return depends_on_range(e, def.vars.u(0), def.vars.t()); }
+  shared_expression derivative(const expression& e, int variable) const {
+    auto d = std::make_shared<const expression>(e.derivative(variable));
+    return d->is_zero() ? nullptr : d;
+  }
+  /// A function of (q, t) and its partial derivatives.
+  differentiated_expression function_of_q_t(const std::string& text, const std::string& where) {
+    differentiated_expression d;
+    d.value = parse(text, where);
+    if (depends_on_speeds(*d.value))
+      throw input_error(where + ": depends on the speeds (a position, angle or holonomic constraint is a function of "
+                                "the coordinates and t)");
+    for (int i = 0; i < def.vars.coordinates; ++i)
+      if (auto e = derivative(*d.value, def.vars.q(i))) d.dq.emplace_back(i, e);
+    d.dt = derivative(*d.value, def.vars.t());
+    return d;
+  }
+  /// A constant: parameters only.
+  shared_expression constant(const std::string& text, const std::string& where) {
+    auto e = parse(text, where);
+    if (depends_on_state(*e)) throw input_error(where + ": must depend on the parameters only (not on q, u or t)");
+    return e;
+  }
+  /// (j, d/du_j) of an expression affine in the speeds; input_error otherwise.
+  std::vector<std::pair<int, shared_expression>> speed_coefficients(const expression& e, const std::string& where) {
+    std::vector<std::pair<int, shared_expression>> out;
+    for (int j = 0; j < def.vars.speeds; ++j)
+      if (auto d = derivative(e, def.vars.u(j))) {
+        if (depends_on_speeds(*d))
+          throw input_error(where + ": not linear in the speeds (its derivative in " +
+                            def.names[static_cast<std::size_t>(def.vars.u(j))] + " depends on the speeds)");
+        out.emplace_back(j, d);
+      }
+    return out;
+  }
+};
+
+/// "rz(psi) rx(theta) rz(phi)": elementary rotations, left to right.
+std::vector<std::pair<int, std::string>> rotation_factors(const std::string& s, const std::string& where) {
+  std::vector<std::pair<int, std::string>> out;
+  std::size_t i = 0;
+  auto skip = [&] {
+    while (i < s.size() && (std::isspace(static_cast<unsigned char>(s[i])) || s[i] == '*')) ++i;
+  };
+  skip();
+  if (i == s.size()) throw input_error(where + ": empty (omit the field for a body that does not turn)");
+  while (i < s.size()) {
+    if (i + 2 >= s.size() || s[i] != 'r' || (s[i + 1] != 'x' && s[i + 1] != 'y' && s[i + 1] != 'z') || s[i + 2] != '(')
+      throw input_error(where + ": expected rx(...), ry(...) or rz(...) at position " + std::to_string(i + 1) +
+                        " of '" + printable(s) + "'");
+    const int axis = s[i + 1] - 'x';
+    std::size_t j = i + 3;
+    int depth = 1;
+    for (; j < s.size() && depth > 0; ++j) depth += s[j] == '(' ? 1 : s[j] == ')' ? -1 : 0;
+    if (depth != 0) throw input_error(where + ": missing ')' in '" + printable(s) + "'");
+    out.emplace_back(axis, s.substr(i + 3, j - 1 - (i + 3)));
+    i = j;
+    skip();
+  }
+  return out;
+}
+
+void require_in_256_bits(bool certainly_true, bool certainly_false, const std::string& what) {
+  if (certainly_false) throw input_error(what);
+  if (!certainly_true) throw input_error(what + " (within 2^-256: taken as exact)");
+}
+
+}  // namespace
+
+system_input system_model::read(object_reader& scene) {
+  system_input in;
+  builder b;
+  system_definition& def = b.def;
+
+  // Names: parameters, coordinates, speeds, t.
+  std::vector<std::pair<std::string, std::string>> parameter_texts;  // name, text
+  if (scene.has("parameters")) {
+    const json_value& p = object_value(scene, "parameters");
+    for (const auto& m : p.members)
+      parameter_texts.emplace_back(m.key, expression_text(m.value, scene.path("parameters") + "." + m.key));
+  }
+  const std::vector<std::string> coordinates = name_list(scene.raw("coordinates"), scene.path("coordinates"));
+  std::vector<std::string> speeds;
+  def.rates_as_speeds = !scene.has("speeds");
+  if (coordinates.empty() && def.rates_as_speeds)
+    throw input_error(scene.path("coordinates") + ": a system needs coordinates, or named speeds");
+  if (def.rates_as_speeds) {
+    for (const auto& q : coordinates) {
+      speeds.push_back(q + "_dot");
+      in.acceleration_names.push_back(q + "_ddot");
+    }
+  } else {
+    speeds = name_list(scene.raw("speeds"), scene.path("speeds"));
+    if (speeds.empty()) throw input_error(scene.path("speeds") + ": a system needs at least one speed");
+    for (const auto& u : speeds) in.acceleration_names.push_back(u + "_dot");
+  }
+  def.vars = {static_cast<int>(parameter_texts.size()), static_cast<int>(coordinates.size()),
+              static_cast<int>(speeds.size())};
+  for (const auto& [name, text] : parameter_texts) def.names.push_back(name);
+  def.names.insert(def.names.end(), coordinates.begin(), coordinates.end());
+  def.names.insert(def.names.end(), speeds.begin(), speeds.end());
+  def.names.push_back("t");
+  {
+    std::set<std::string> seen;
+    for (int v = 0; v + 1 < def.vars.size(); ++v) {
+      const std::string& n = def.names[static_cast<std::size_t>(v)];
+      const std::string field = v < def.vars.parameters ? "parameters." + n
+                                : v < def.vars.u(0)     ? "coordinates"
+                                                        : (def.rates_as_speeds ? "coordinates" : "speeds");
+      if (!is_identifier(n))
+        throw input_error(field + ": '" + printable(n) + "' is not a name (a letter or _, then letters, digits, _)");
+      if (reserved_names().count(n)) throw input_error(field + ": '" + n + "' is reserved");
+      if (!seen.insert(n).second)
+        throw input_error(field + ": the name '" + n + "' is used twice" +
+                          (def.rates_as_speeds ? " (the speeds are named q_dot after the coordinates)" : ""));
+    }
+  }
+
+  // Parameters: expressions of parameters, evaluated in an order that puts each after those it uses.
+  for (const auto& [name, text] : parameter_texts) {
+    const std::string where = "parameters." + name;
+    auto e = b.parse(text, where);
+    if (b.depends_on_state(*e)) throw input_error(where + ": a parameter cannot depend on q, u or t");
+    def.parameters.push_back(e);
+  }
+  {
+    const int P = def.vars.parameters;
+    std::vector<int> state(static_cast<std::size_t>(P), 0);  // 0 new, 1 on the path, 2 done
+    std::vector<int> path;
+    std::function<void(int)> visit = [&](int p) {
+      auto& s = state[static_cast<std::size_t>(p)];
+      if (s == 2) return;
+      if (s == 1) {
+        std::string cycle;
+        auto it = std::find(path.begin(), path.end(), p);
+        for (; it != path.end(); ++it) cycle += def.names[static_cast<std::size_t>(*it)] + " -> ";
+        throw input_error("parameters." + def.names[static_cast<std::size_t>(p)] + ": circular definition (" + cycle +
+                          def.names[static_cast<std::size_t>(p)] + ")");
+      }
+      s = 1;
+      path.push_back(p);
+      for (int r = 0; r < P; ++r)
+        if (def.parameters[static_cast<std::size_t>(p)]->depends_on(r)) visit(r);
+      path.pop_back();
+      s = 2;
+      def.parameter_order.push_back(p);
+    };
+    for (int p = 0; p < P; ++p) visit(p);
+  }
+
+  // Kinematics.
+  if (!def.rates_as_speeds) {
+    const json_value& k = object_value(scene, "kinematics");
+    for (const auto& m : k.members)
+      if (std::find(coordinates.begin(), coordinates.end(), m.key) == coordinates.end())
+        throw input_error("kinematics." + printable(m.key) + ": not a coordinate");
+    def.kinematics_du.resize(coordinates.size());
+    for (std::size_t i = 0; i < coordinates.size(); ++i) {
+      const json_value* v = k.find(coordinates[i]);
+      const std::string where = "kinematics." + coordinates[i];
+      if (!v) throw input_error(where + ": missing (each coordinate's rate, as an expression in q, u and t)");
+      auto e = b.parse(expression_text(*v, where), where);
+      def.kinematics_du[i] = b.speed_coefficients(*e, where);
+      def.kinematics.push_back(e);
+    }
+  } else if (scene.has("kinematics")) {
+    throw input_error(scene.path("kinematics") + ": kinematics need named speeds (without \"speeds\", u = q')");
+  }
+
+  // Gravity.
+  if (scene.has("gravity")) {
+    const json_value& g = scene.raw("gravity");
+    if (g.type != json_value::kind::array || g.items.size() != 3)
+      throw input_error(scene.path("gravity") + ": expected a list of 3 expressions");
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::string where = "gravity[" + std::to_string(i) + "]";
+      def.gravity[i] = b.constant(expression_text(g.items[i], where), where);
+    }
+  }
+
+  // Bodies.
+  const json_value& bodies = object_value(scene, "bodies");
+  if (bodies.members.empty()) throw input_error("bodies: a system needs at least one body");
+  for (const auto& m : bodies.members) {
+    object_reader r(m.value, "bodies." + m.key);
+    system_body_definition body;
+    body.name = m.key;
+    auto list3 = [&](const std::string& key, bool constant) {
+      std::array<shared_expression, 3> out;
+      const json_value& v = r.raw(key);
+      if (v.type != json_value::kind::array || v.items.size() != 3)
+        throw input_error(r.path(key) + ": expected a list of 3 expressions");
+      for (std::size_t i = 0; i < 3; ++i) {
+        const std::string where = r.path(key) + "[" + std::to_string(i) + "]";
+        const std::string text = expression_text(v.items[i], where);
+        out[i] = constant ? b.constant(text, where) : b.parse(text, where);
+      }
+      return out;
+    };
+    body.mass = b.constant(expression_text(r.raw("mass"), r.path("mass")), r.path("mass"));
+    if (r.has("inertia")) {
+      const json_value& v = r.raw("inertia");
+      if (v.type != json_value::kind::array || (v.items.size() != 3 && v.items.size() != 6))
+        throw input_error(r.path("inertia") + ": expected 3 principal moments or 6 components (xx yy zz xy yz zx)");
+      for (std::size_t i = 0; i < v.items.size(); ++i) {
+        const std::string where = r.path("inertia") + "[" + std::to_string(i) + "]";
+        body.inertia[i] = b.constant(expression_text(v.items[i], where), where);
+      }
+    }
+    const bool has_orientation = r.has("orientation");
+    body.has_omega = r.has("omega");
+    if (r.has("axes")) {
+      const std::string axes = r.string("axes");
+      if (axes != "fixed" && axes != "body")
+        throw input_error(r.path("axes") + ": expected \"fixed\" or \"body\", got \"" + printable(axes) + "\"");
+      body.body_axes = axes == "body";
+    }
+    auto affine3 = [&](const std::string& key) {  // three expressions affine in the speeds
+      std::array<shared_expression, 3> out = list3(key, false);
+      for (std::size_t i = 0; i < 3; ++i) (void)b.speed_coefficients(*out[i], r.path(key) + "[" + std::to_string(i) + "]");
+      return out;
+    };
+    if (body.body_axes) {
+      // The paper's moving axes: omega and the centre's velocity on the body's own axes.
+      if (!body.has_omega) throw input_error(r.path("omega") + ": required on the body's own axes");
+      if (has_orientation || r.has("center"))
+        throw input_error(r.path(has_orientation ? "orientation" : "center") +
+                          ": a body on its own axes is given by its velocity and omega there, not by its position");
+      if (def.gravity[0])
+        throw input_error(r.path("axes") + ": gravity needs the body's orientation; on its own axes give the weight "
+                                           "as a force on those axes");
+      body.omega = affine3("omega");
+      if (r.has("velocity")) body.velocity = affine3("velocity");
+    } else {
+      if (r.has("velocity"))
+        throw input_error(r.path("velocity") + ": on the fixed axes the velocity follows from \"center\"");
+      const json_value& c = r.raw("center");
+      if (c.type != json_value::kind::array || c.items.size() != 3)
+        throw input_error(r.path("center") + ": expected a list of 3 expressions in q and t");
+      for (std::size_t i = 0; i < 3; ++i) {
+        const std::string where = r.path("center") + "[" + std::to_string(i) + "]";
+        body.center[i] = b.function_of_q_t(expression_text(c.items[i], where), where);
+      }
+      if (body.has_omega) {
+        if (has_orientation)
+          throw input_error(r.path("omega") + ": give the orientation or omega, not both");
+        const bool isotropic = !body.inertia[0] ||
+                               (body.inertia[1] && body.inertia[2] && !body.inertia[3] && !body.inertia[4] &&
+                                !body.inertia[5] && body.inertia[0]->to_string() == body.inertia[1]->to_string() &&
+                                body.inertia[0]->to_string() == body.inertia[2]->to_string());
+        if (!isotropic)
+          throw input_error(r.path("omega") + ": on the fixed axes omega serves a body whose inertia is isotropic "
+                                              "(three equal moments, as written); give an orientation, or use \"axes\": \"body\"");
+        body.omega = affine3("omega");
+      }
+    }
+    if (has_orientation) {
+      const std::string where = r.path("orientation");
+      const json_value& o = r.raw("orientation");
+      if (o.type != json_value::kind::string)
+        throw input_error(where + ": expected a product of rotations such as \"rz(psi) rx(theta) rz(phi)\"");
+      int n = 0;
+      for (const auto& [axis, text] : rotation_factors(o.text, where))
+        body.rotations.emplace_back(axis, b.function_of_q_t(text, where + "[" + std::to_string(n++) + "]"));
+    }
+    if (r.has("force")) body.force = list3("force", false);
+    if (r.has("couple")) body.couple = list3("couple", false);
+    r.finish();
+    def.bodies.push_back(std::move(body));
+  }
+
+  // Constraints.
+  if (scene.has("constraints")) {
+    const json_value& cs = object_value(scene, "constraints");
+    for (const auto& m : cs.members) {
+      object_reader r(m.value, "constraints." + m.key);
+      system_constraint_definition k;
+      k.name = m.key;
+      if (!is_identifier(k.name))
+        throw input_error("constraints: '" + printable(k.name) + "' is not a name (a letter or _, then letters, digits, _)");
+      const bool h = r.has("holonomic"), nh = r.has("nonholonomic");
+      if (h == nh) throw input_error("constraints." + k.name + ": expected one of \"holonomic\" or \"nonholonomic\"");
+      k.holonomic = h;
+      const std::string where = r.path(h ? "holonomic" : "nonholonomic");
+      const std::string text = expression_text(r.raw(h ? "holonomic" : "nonholonomic"), where);
+      r.finish();
+      if (h) {
+        k.f = b.function_of_q_t(text, where);
+        if (k.f.dq.empty())
+          throw input_error(where + ": does not depend on the coordinates (a constraint on t alone is no constraint)");
+      } else {
+        k.g = b.parse(text, where);
+        k.du = b.speed_coefficients(*k.g, where);
+        if (k.du.empty())
+          throw input_error(where + ": does not depend on the speeds (a constraint on q and t is holonomic: write it so)");
+      }
+      def.constraints.push_back(std::move(k));
+    }
+    if (def.constraints.size() >= speeds.size())
+      throw input_error(scene.path("constraints") + ": " + std::to_string(def.constraints.size()) + " constraints on " +
+                        std::to_string(speeds.size()) + " speeds leave nothing to move");
+  }
+
+  // The state.
+  object_reader state = scene.object("state");
+  for (const auto& q : coordinates) in.q.push_back(state.number(q));
+  for (const auto& u : speeds) in.u.push_back(state.number(u));
+  in.t = state.has("t") ? state.number("t") : decimal_field{"0", state.path("t")};
+  state.finish();
+
+  {  // the result names must be distinct
+    std::set<std::string> results(in.acceleration_names.begin(), in.acceleration_names.end());
+    for (const auto& k : def.constraints)
+      if (!results.insert(k.name + "_reaction").second)
+        throw input_error("constraints." + k.name + ": its result " + k.name + "_reaction has the name of another result");
+  }
+  auto shared = std::make_shared<system_definition>(std::move(b.def));
+  in.def = shared;
+
+  // At the state, at 256 bits.
+  try {
+    mp_precision_scope scope(256);
+    const compiled_system<mpfi> sys(*shared);
+    const system_definition& d = *shared;
+    vector_t<mpfi> q(d.vars.coordinates), u(d.vars.speeds);
+    for (int i = 0; i < d.vars.coordinates; ++i) q(i) = value<mpfi>(in.q[static_cast<std::size_t>(i)]);
+    for (int j = 0; j < d.vars.speeds; ++j) u(j) = value<mpfi>(in.u[static_cast<std::size_t>(j)]);
+    const mpfi t = value<mpfi>(in.t);
+    const std::vector<mpfi> x = sys.variables(q, u, t);
+    (void)sys.rates(x);
+    std::vector<body_state<mpfi>> states;
+    expression_system<mpfi>{&sys}.bodies<mpfi>(q, u, t, states);
+    for (std::size_t i = 0; i < d.bodies.size(); ++i) {
+      const auto& bd = d.bodies[i];
+      const auto& bc = sys.bodies[i];
+      const std::string where = "bodies." + bd.name;
+      for (const auto& c : bc.center) (void)c.value.at(x.data());
+      for (const auto& [axis, angle] : bc.rotations) (void)angle.value.at(x.data());
+      const mpfi mass = bc.mass.at(x.data());
+      require_in_256_bits(certainly_positive(mass), certainly_nonpositive(mass),
+                          where + ".mass: must be positive (" + to_string(mass) + ")");
+      // Inertia: positive semidefinite (every principal minor >= 0); principal moments: the triangle inequalities.
+      mpfi I[6];
+      for (std::size_t k = 0; k < 6; ++k) I[k] = bc.inertia[k].at(x.data());
+      const mpfi minors[] = {I[0], I[1], I[2], mpfi(I[0] * I[1] - I[3] * I[3]), mpfi(I[1] * I[2] - I[4] * I[4]),
+                             mpfi(I[0] * I[2] - I[5] * I[5]),
+                             mpfi(I[0] * (I[1] * I[2] - I[4] * I[4]) - I[3] * (I[3] * I[2] - I[4] * I[5]) +
+                                  I[5] * (I[3] * I[4] - I[1] * I[5]))};
+      for (const mpfi& m : minors)
+        if (certainly_negative(m))
+          throw input_error(where + ".inertia: not positive semidefinite (a principal minor is " + to_string(m) + ")");
+      if (bd.inertia[0] && !bd.inertia[3])
+        for (int k = 0; k < 3; ++k) {
+          const mpfi slack = I[(k + 1) % 3] + I[(k + 2) % 3] - I[k];
+          if (certainly_negative(slack))
+            throw input_error(where + ".inertia: principal moments must satisfy the triangle inequalities");
+        }
+    }
+    // The state on the constraints; the constraints independent.
+    if (!d.constraints.empty()) {
+      const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
+      matrix_t<mpfi> A(s, n);
+      vector_t<mpfi> a(s);
+      expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
+      for (int r = 0; r < s; ++r) {
+        const auto& k = d.constraints[static_cast<std::size_t>(r)];
+        const std::string where = "state: constraint " + k.name;
+        if (k.holonomic) {
+          const mpfi f = sys.constraints[static_cast<std::size_t>(r)].f.value.at(x.data());
+          if (!possibly_zero(f))
+            throw input_error(where + " does not hold: f(q, t) = " + to_string(f));
+        } else {
+          (void)sys.constraints[static_cast<std::size_t>(r)].g.at(x.data());
+        }
+        mpfi res = -a(r);
+        for (int j = 0; j < n; ++j) res += A(r, j) * u(j);
+        if (!possibly_zero(res))
+          throw input_error(where + ": the speeds violate it (" + std::string(k.holonomic ? "df/dt" : "g") + " = " +
+                            to_string(res) + ")");
+      }
+      // Independence: elimination with a pivot that is certainly nonzero in each row.
+      std::vector<bool> used(static_cast<std::size_t>(n), false);
+      for (int r = 0; r < s; ++r) {
+        int best = -1;
+        double best_abs = 0;
+        for (int j = 0; j < n; ++j)
+          if (!used[static_cast<std::size_t>(j)] && !possibly_zero(A(r, j)) && std::abs(approx_double(A(r, j))) > best_abs) {
+            best_abs = std::abs(approx_double(A(r, j)));
+            best = j;
+          }
+        if (best < 0)
+          throw input_error("constraints." + d.constraints[static_cast<std::size_t>(r)].name +
+                            ": depends on the constraints before it at the state (or is 0 there)");
+        used[static_cast<std::size_t>(best)] = true;
+        for (int r2 = r + 1; r2 < s; ++r2) {
+          const mpfi f = A(r2, best) / A(r, best);
+          for (int j = 0; j < n; ++j) A(r2, j) -= f * A(r, j);
+        }
+      }
+    }
+  } catch (const certification_error& e) {
+    throw input_error(std::string(e.what()) + " (within 2^-256 of it: taken as exact)");
+  }
+  return in;
+}
+
+APPELL_DEFINE_MODEL_ENTRY(system_model)
+
+}  // namespace appell
