@@ -12,7 +12,9 @@
 // an interval merely cannot exclude them.
 #pragma once
 
+#include <map>
 #include <memory>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -111,6 +113,17 @@ class expression {
   template <class S>
   S eval_node(int i, const S* x, const std::vector<base_scalar_t<S>>* constants) const;
 
+ public:
+  /// One operation on evaluated operands, with its domain checks (errors name
+  /// `where`); for pow, `integer` is the exponent when it is an integer literal
+  /// (b is then unused).  eval and expression_tape both go through it.
+  template <class S>
+  static S apply(op kind, const S& a, const S& b, const long* integer, const std::string& where);
+
+ private:
+  template <Scalar T>
+  friend class expression_tape;
+
   std::vector<node> nodes_;
   int root_ = -1;
   std::string where_;
@@ -129,14 +142,13 @@ std::string describe(const T& x) { return to_string(x); }
 }  // namespace detail
 
 template <class S>
-S expression::eval_node(int i, const S* x, const std::vector<base_scalar_t<S>>* constants) const {
+S expression::apply(op kind, const S& a, const S& b, const long* integer, const std::string& where) {
   using T = base_scalar_t<S>;
   using std::sin, std::cos, std::tan, std::exp, std::log, std::sqrt;
-  const node& n = nodes_[static_cast<std::size_t>(i)];
   auto domain = [&](bool certainly_bad, bool possibly_bad, const std::string& what, const T& at) {
-    if (certainly_bad) throw input_error(where_ + ": " + what + " at the state (" + detail::describe(at) + ")");
+    if (certainly_bad) throw input_error(where + ": " + what + " at the state (" + detail::describe(at) + ")");
     if (possibly_bad)
-      throw certification_error(where_ + ": cannot exclude " + what + " at the state (" + detail::describe(at) + ")");
+      throw certification_error(where + ": cannot exclude " + what + " at the state (" + detail::describe(at) + ")");
   };
   // sin, cos, tan of |y| > 2^40 rad: no physical angle, and an argument
   // reduction that costs time in the exponent (MPFR, MPFI) or loses every digit (QD)
@@ -147,72 +159,93 @@ S expression::eval_node(int i, const S* x, const std::vector<base_scalar_t<S>>* 
            !(certainly_nonpositive(T(d - limit)) && certainly_nonnegative(T(d + limit))),
            std::string(fn) + " of an angle beyond 2^40 rad", d);
   };
-  switch (n.kind) {
-    case op::number: return S(constants ? (*constants)[static_cast<std::size_t>(i)] : from_decimal<T>(n.number));
-    case op::pi: return S(constants ? (*constants)[static_cast<std::size_t>(i)] : constant_pi<T>());
-    case op::variable: return x[n.var];
-    case op::add: return eval_node(n.a, x, constants) + eval_node(n.b, x, constants);
-    case op::sub: return eval_node(n.a, x, constants) - eval_node(n.b, x, constants);
-    case op::mul: return eval_node(n.a, x, constants) * eval_node(n.b, x, constants);
-    case op::neg: return -eval_node(n.a, x, constants);
+  switch (kind) {
+    case op::add: return a + b;
+    case op::sub: return a - b;
+    case op::mul: return a * b;
+    case op::neg: return -a;
     case op::div: {
-      const S den = eval_node(n.b, x, constants);
-      const T& d = detail::value_of(den);
+      const T& d = detail::value_of(b);
       domain(certainly_nonnegative(d) && certainly_nonpositive(d), possibly_zero(d), "division by zero", d);
-      return eval_node(n.a, x, constants) / den;
+      return a / b;
     }
     case op::pow: {
-      long k = 0;
-      const S base = eval_node(n.a, x, constants);
-      if (is_integer(n.b, k) && k > -1000000 && k < 1000000) {
-        if (k < 0) {
-          const T& d = detail::value_of(base);
+      const T& d = detail::value_of(a);
+      if (integer) {
+        if (*integer < 0)
           domain(certainly_nonnegative(d) && certainly_nonpositive(d), possibly_zero(d), "0 to a negative power", d);
-        }
-        return power(base, static_cast<int>(k));
+        return power(a, static_cast<int>(*integer));
       }
-      const T& d = detail::value_of(base);  // a^b = exp(b log a), a > 0
+      // a^b = exp(b log a), a > 0
       domain(certainly_nonpositive(d), !certainly_positive(d), "a non-integer power of a number <= 0", d);
-      return exp(eval_node(n.b, x, constants) * log(base));
+      return exp(b * log(a));
     }
-    case op::sin: {
-      const S y = eval_node(n.a, x, constants);
-      angle(y, "sin");
-      return sin(y);
-    }
-    case op::cos: {
-      const S y = eval_node(n.a, x, constants);
-      angle(y, "cos");
-      return cos(y);
-    }
+    case op::sin: angle(a, "sin"); return sin(a);
+    case op::cos: angle(a, "cos"); return cos(a);
     case op::tan: {
-      const S y = eval_node(n.a, x, constants);
-      angle(y, "tan");
-      const S c = cos(y);
+      angle(a, "tan");
+      const S c = cos(a);
       const T& d = detail::value_of(c);
       domain(certainly_nonnegative(d) && certainly_nonpositive(d), possibly_zero(d), "tan at a pole", d);
-      return tan(y);
+      return tan(a);
     }
-    case op::exp: return exp(eval_node(n.a, x, constants));
+    case op::exp: return exp(a);
     case op::log: {
-      const S y = eval_node(n.a, x, constants);
-      const T& d = detail::value_of(y);
+      const T& d = detail::value_of(a);
       domain(certainly_nonpositive(d), !certainly_positive(d), "log of a number <= 0", d);
-      return log(y);
+      return log(a);
     }
     case op::sqrt: {
-      const S y = eval_node(n.a, x, constants);
-      const T& d = detail::value_of(y);
+      const T& d = detail::value_of(a);
       // sqrt is not differentiable at 0: a dual argument must be > 0
       if constexpr (is_dual<S>::value)
         domain(certainly_nonpositive(d), !certainly_positive(d), "sqrt of a number <= 0 (its derivative)", d);
       else
         domain(certainly_negative(d), possibly_negative(d), "sqrt of a negative number", d);
-      return sqrt(y);
+      return sqrt(a);
+    }
+    default: break;
+  }
+  throw std::logic_error("expression: not an operation");
+}
+
+template <class S>
+S expression::eval_node(int i, const S* x, const std::vector<base_scalar_t<S>>* constants) const {
+  using T = base_scalar_t<S>;
+  const node& n = nodes_[static_cast<std::size_t>(i)];
+  switch (n.kind) {
+    case op::number: return S(constants ? (*constants)[static_cast<std::size_t>(i)] : from_decimal<T>(n.number));
+    case op::pi: return S(constants ? (*constants)[static_cast<std::size_t>(i)] : constant_pi<T>());
+    case op::variable: return x[n.var];
+    case op::div: {  // the denominator first: its check comes before the numerator's
+      const S den = eval_node(n.b, x, constants);
+      const S num = eval_node(n.a, x, constants);
+      return apply(n.kind, num, den, nullptr, where_);
+    }
+    case op::pow: {
+      long k = 0;
+      const S base = eval_node(n.a, x, constants);
+      if (is_integer(n.b, k) && k > -1000000 && k < 1000000) return apply(n.kind, base, base, &k, where_);
+      return apply(n.kind, base, eval_node(n.b, x, constants), nullptr, where_);
+    }
+    default: {
+      const S a = eval_node(n.a, x, constants);
+      return apply(n.kind, a, n.b >= 0 ? eval_node(n.b, x, constants) : a, nullptr, where_);
     }
   }
-  throw std::logic_error("expression: unknown node");
 }
+
+namespace detail {
+/// The operation budget of an expression compiled for T (expression::limits).
+template <Scalar T>
+void check_operation_budget(const expression& e) {
+  const std::size_t bits = scalar_traits<T>::precision_bits();
+  if (e.operations() * bits > expression::limits::operation_bits)
+    throw input_error(e.where() + ": " + std::to_string(e.operations()) + " operations at " + std::to_string(bits) +
+                      " bits, more than the budget of " + std::to_string(expression::limits::operation_bits) +
+                      " operation-bits (a simpler expression, or fewer bits)");
+}
+}  // namespace detail
 
 /// An expression with its constants in T, for repeated evaluation on T and
 /// dual<T>.  It refers to the expression, which must outlive it.
@@ -221,11 +254,7 @@ class compiled_expression {
  public:
   compiled_expression() = default;
   explicit compiled_expression(const expression& e) : e_(&e), constants_(e.constants<T>()) {
-    const std::size_t bits = scalar_traits<T>::precision_bits();
-    if (e.operations() * bits > expression::limits::operation_bits)
-      throw input_error(e.where() + ": " + std::to_string(e.operations()) + " operations at " + std::to_string(bits) +
-                        " bits, more than the budget of " + std::to_string(expression::limits::operation_bits) +
-                        " operation-bits (a simpler expression, or fewer bits)");
+    detail::check_operation_budget<T>(e);
   }
   template <class S>
   S eval(const S& x) const {
@@ -241,6 +270,90 @@ class compiled_expression {
  private:
   const expression* e_ = nullptr;
   std::vector<T> constants_;
+};
+
+/// Expressions in the same variables merged into one graph, for evaluation in
+/// one pass: a subexpression that occurs in several of them, or several times
+/// in one (symbolic derivatives repeat their operands), is one node, evaluated
+/// once.  Each node applies the operation and the domain checks of
+/// expression::eval (errors name the first expression that brought the node).
+template <Scalar T>
+class expression_tape {
+ public:
+  /// Adds e; returns the index of its value among the node values eval() fills.
+  int add(const expression& e) {
+    detail::check_operation_budget<T>(e);
+    const auto& en = e.nodes_;
+    std::vector<char> reached(en.size(), 0);
+    reached[static_cast<std::size_t>(e.root_)] = 1;
+    for (std::size_t i = en.size(); i-- > 0;)
+      if (reached[i])
+        for (int c : {en[i].a, en[i].b})
+          if (c >= 0) reached[static_cast<std::size_t>(c)] = 1;
+    std::vector<int> mapped(en.size(), -1);
+    for (std::size_t i = 0; i < en.size(); ++i) {
+      if (!reached[i]) continue;
+      const expression::node& n = en[i];
+      const int a = n.a >= 0 ? mapped[static_cast<std::size_t>(n.a)] : -1;
+      const int b = n.b >= 0 ? mapped[static_cast<std::size_t>(n.b)] : -1;
+      const int var = n.kind == expression::op::variable ? n.var : 0;
+      const auto key = std::make_tuple(static_cast<int>(n.kind), a, b, var, n.number);
+      const auto found = index_.find(key);
+      if (found != index_.end()) {
+        mapped[i] = found->second;
+        continue;
+      }
+      entry t{n.kind, a, b, var, 0, false, static_cast<int>(wheres_.size())};
+      long k = 0;
+      if (n.kind == expression::op::pow && e.is_integer(n.b, k) && k > -1000000 && k < 1000000) {
+        t.integer = k;
+        t.has_integer = true;
+      }
+      T c(0);
+      if (n.kind == expression::op::number) c = from_decimal<T>(n.number);
+      if (n.kind == expression::op::pi) c = constant_pi<T>();
+      mapped[i] = static_cast<int>(nodes_.size());
+      nodes_.push_back(t);
+      constants_.push_back(c);
+      index_.emplace(key, mapped[i]);
+    }
+    wheres_.push_back(e.where());
+    return mapped[static_cast<std::size_t>(e.root_)];
+  }
+  std::size_t size() const { return nodes_.size(); }
+
+  /// Every node's value at the variables x (S: T or a dual of T), into `values`.
+  template <class S>
+  void eval(const S* x, std::vector<S>& values) const {
+    values.resize(nodes_.size());
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+      const entry& n = nodes_[i];
+      switch (n.kind) {
+        case expression::op::number:
+        case expression::op::pi: values[i] = S(constants_[i]); break;
+        case expression::op::variable: values[i] = x[n.var]; break;
+        default: {
+          const S& a = values[static_cast<std::size_t>(n.a)];
+          const S& b = n.b >= 0 ? values[static_cast<std::size_t>(n.b)] : a;
+          values[i] = expression::apply(n.kind, a, b, n.has_integer ? &n.integer : nullptr,
+                                        wheres_[static_cast<std::size_t>(n.where)]);
+        }
+      }
+    }
+  }
+
+ private:
+  struct entry {
+    expression::op kind;
+    int a, b, var;
+    long integer;
+    bool has_integer;
+    int where;  ///< index into wheres_
+  };
+  std::vector<entry> nodes_;
+  std::vector<T> constants_;
+  std::vector<std::string> wheres_;
+  std::map<std::tuple<int, int, int, int, std::string>, int> index_;
 };
 
 }  // namespace appell

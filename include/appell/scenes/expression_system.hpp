@@ -101,33 +101,35 @@ struct system_definition {
 };
 
 namespace detail {
-/// An optional expression compiled in T (an empty one is 0).
+/// An optional expression on a tape (an empty one is 0): at(v) reads its value
+/// from the node values v of one evaluation of the tape.
 template <Scalar T>
 struct compiled_term {
-  std::optional<compiled_expression<T>> e;
+  int node = -1;
   compiled_term() = default;
-  explicit compiled_term(const shared_expression& x) {
-    if (x) e.emplace(*x);
+  compiled_term(expression_tape<T>& tape, const shared_expression& x) {
+    if (x) node = tape.add(*x);
   }
   template <class S>
-  S at(const S* x) const {
-    return e ? e->eval_at(x) : S(0);
+  S at(const S* v) const {
+    return node >= 0 ? v[node] : S(0);
   }
-  explicit operator bool() const { return e.has_value(); }
+  explicit operator bool() const { return node >= 0; }
 };
 template <Scalar T>
 struct compiled_differentiated {
   compiled_term<T> value, dt;
   std::vector<std::pair<int, compiled_term<T>>> dq;
   compiled_differentiated() = default;
-  explicit compiled_differentiated(const differentiated_expression& d) : value(d.value), dt(d.dt) {
-    for (const auto& [i, e] : d.dq) dq.emplace_back(i, compiled_term<T>(e));
+  compiled_differentiated(expression_tape<T>& tape, const differentiated_expression& d)
+      : value(tape, d.value), dt(tape, d.dt) {
+    for (const auto& [i, e] : d.dq) dq.emplace_back(i, compiled_term<T>(tape, e));
   }
   /// d/dt along q' = qd:  sum_i d/dq_i qd_i + d/dt.
   template <class S>
-  S rate(const S* x, const vector_t<S>& qd) const {
-    S r = dt.at(x);
-    for (const auto& [i, e] : dq) r += e.at(x) * qd(i);
+  S rate(const S* v, const vector_t<S>& qd) const {
+    S r = dt.at(v);
+    for (const auto& [i, e] : dq) r += e.at(v) * qd(i);
     return r;
   }
 };
@@ -162,8 +164,11 @@ struct compiled_system {
   };
   const system_definition* def = nullptr;
   std::vector<T> parameters;  ///< values in T
-  std::vector<detail::compiled_term<T>> kinematics;
-  std::vector<std::vector<std::pair<int, detail::compiled_term<T>>>> kinematics_du;
+  /// Three tapes, each evaluated in one pass: what bodies() needs, what qdot()
+  /// needs, and what the constraints need (at u = 0).
+  expression_tape<T> body_tape, kinematics_tape, constraint_tape;
+  std::vector<detail::compiled_term<T>> kinematics, kinematics_on_body_tape, kinematics_on_constraint_tape;
+  std::vector<std::vector<std::pair<int, detail::compiled_term<T>>>> kinematics_du;  ///< on the constraint tape
   std::array<detail::compiled_term<T>, 3> gravity;
   std::vector<body> bodies;
   std::vector<constraint> constraints;
@@ -176,24 +181,30 @@ struct compiled_system {
       parameters[i] = compiled_expression<T>(*d.parameters[i]).eval_at(x.data());
       x[i] = parameters[i];
     }
-    for (const auto& k : d.kinematics) kinematics.emplace_back(k);
+    for (const auto& k : d.kinematics) {
+      kinematics.emplace_back(kinematics_tape, k);
+      kinematics_on_body_tape.emplace_back(body_tape, k);
+      kinematics_on_constraint_tape.emplace_back(constraint_tape, k);
+    }
     for (const auto& row : d.kinematics_du) {
       kinematics_du.emplace_back();
-      for (const auto& [j, e] : row) kinematics_du.back().emplace_back(j, detail::compiled_term<T>(e));
+      for (const auto& [j, e] : row) kinematics_du.back().emplace_back(j, detail::compiled_term<T>(constraint_tape, e));
     }
-    for (int i = 0; i < 3; ++i) gravity[static_cast<std::size_t>(i)] = detail::compiled_term<T>(d.gravity[static_cast<std::size_t>(i)]);
+    for (std::size_t i = 0; i < 3; ++i) gravity[i] = detail::compiled_term<T>(body_tape, d.gravity[i]);
     for (const auto& b : d.bodies) {
       body c;
-      c.mass = detail::compiled_term<T>(b.mass);
-      for (std::size_t i = 0; i < 6; ++i) c.inertia[i] = detail::compiled_term<T>(b.inertia[i]);
+      auto& tape = body_tape;
+      c.mass = detail::compiled_term<T>(tape, b.mass);
+      for (std::size_t i = 0; i < 6; ++i) c.inertia[i] = detail::compiled_term<T>(tape, b.inertia[i]);
       for (std::size_t i = 0; i < 3; ++i) {
-        c.center[i] = detail::compiled_differentiated<T>(b.center[i]);
-        c.force[i] = detail::compiled_term<T>(b.force[i]);
-        c.couple[i] = detail::compiled_term<T>(b.couple[i]);
-        c.omega[i] = detail::compiled_term<T>(b.omega[i]);
-        c.velocity[i] = detail::compiled_term<T>(b.velocity[i]);
+        c.center[i] = detail::compiled_differentiated<T>(tape, b.center[i]);
+        c.force[i] = detail::compiled_term<T>(tape, b.force[i]);
+        c.couple[i] = detail::compiled_term<T>(tape, b.couple[i]);
+        c.omega[i] = detail::compiled_term<T>(tape, b.omega[i]);
+        c.velocity[i] = detail::compiled_term<T>(tape, b.velocity[i]);
       }
-      for (const auto& [axis, angle] : b.rotations) c.rotations.emplace_back(axis, detail::compiled_differentiated<T>(angle));
+      for (const auto& [axis, angle] : b.rotations)
+        c.rotations.emplace_back(axis, detail::compiled_differentiated<T>(tape, angle));
       c.has_omega = b.has_omega;
       c.body_axes = b.body_axes;
       for (const auto& e : b.inertia) c.has_inertia = c.has_inertia || bool(e);
@@ -205,9 +216,9 @@ struct compiled_system {
     for (const auto& k : d.constraints) {
       constraint c;
       c.holonomic = k.holonomic;
-      if (k.holonomic) c.f = detail::compiled_differentiated<T>(k.f);
-      else c.g = detail::compiled_term<T>(k.g);
-      for (const auto& [j, e] : k.du) c.du.emplace_back(j, detail::compiled_term<T>(e));
+      if (k.holonomic) c.f = detail::compiled_differentiated<T>(constraint_tape, k.f);
+      else c.g = detail::compiled_term<T>(constraint_tape, k.g);
+      for (const auto& [j, e] : k.du) c.du.emplace_back(j, detail::compiled_term<T>(constraint_tape, e));
       constraints.push_back(std::move(c));
     }
   }
@@ -223,15 +234,24 @@ struct compiled_system {
     x[static_cast<std::size_t>(v.t())] = t;
     return x;
   }
-  /// q' at the variables x (u included).
+  /// q' at the variables x (u included), the kinematics read from the node
+  /// values `values` of a tape that holds them as `terms`.
   template <class S>
-  vector_t<S> rates(const std::vector<S>& x) const {
+  vector_t<S> rates(const std::vector<S>& x, const std::vector<S>& values,
+                    const std::vector<detail::compiled_term<T>>& terms) const {
     const system_variables& v = def->vars;
     vector_t<S> qd(v.coordinates);
     for (int i = 0; i < v.coordinates; ++i)
       qd(i) = def->rates_as_speeds ? x[static_cast<std::size_t>(v.u(i))]
-                                   : kinematics[static_cast<std::size_t>(i)].at(x.data());
+                                   : terms[static_cast<std::size_t>(i)].at(values.data());
     return qd;
+  }
+  /// The node values of `tape` at x.
+  template <class S>
+  std::vector<S> evaluate(const expression_tape<T>& tape, const std::vector<S>& x) const {
+    std::vector<S> values;
+    tape.eval(x.data(), values);
+    return values;
   }
 };
 
@@ -242,27 +262,30 @@ struct expression_system {
   int speeds() const { return c->def->vars.speeds; }
   template <class S>
   vector_t<S> qdot(const vector_t<S>& q, const vector_t<S>& u, const S& t) const {
-    return c->rates(c->template variables<S>(q, u, t));
+    const std::vector<S> x = c->template variables<S>(q, u, t);
+    return c->rates(x, c->evaluate(c->kinematics_tape, x), c->kinematics);
   }
   template <class S>
   void bodies(const vector_t<S>& q, const vector_t<S>& u, const S& t, std::vector<body_state<S>>& out) const {
     const std::vector<S> x = c->template variables<S>(q, u, t);
-    const vector_t<S> qd = c->rates(x);
+    const std::vector<S> values = c->evaluate(c->body_tape, x);
+    const vector_t<S> qd = c->rates(x, values, c->kinematics_on_body_tape);
+    const S* v = values.data();
     vec3<S> g = vec3<S>::Zero();
-    for (int i = 0; i < 3; ++i) g(i) = c->gravity[static_cast<std::size_t>(i)].at(x.data());
+    for (int i = 0; i < 3; ++i) g(i) = c->gravity[static_cast<std::size_t>(i)].at(v);
     for (const auto& b : c->bodies) {
       body_state<S> s;
-      s.mass = b.mass.at(x.data());
+      s.mass = b.mass.at(v);
       for (int i = 0; i < 3; ++i) {
         const auto k = static_cast<std::size_t>(i);
-        s.velocity(i) = b.body_axes ? b.velocity[k].at(x.data()) : b.center[k].rate(x.data(), qd);
-        s.force(i) = b.body_axes ? b.force[k].at(x.data()) : S(s.mass * g(i) + b.force[k].at(x.data()));
-        s.couple(i) = b.couple[k].at(x.data());
-        if (b.has_omega) s.omega(i) = b.omega[k].at(x.data());
+        s.velocity(i) = b.body_axes ? b.velocity[k].at(v) : b.center[k].rate(v, qd);
+        s.force(i) = b.body_axes ? b.force[k].at(v) : S(s.mass * g(i) + b.force[k].at(v));
+        s.couple(i) = b.couple[k].at(v);
+        if (b.has_omega) s.omega(i) = b.omega[k].at(v);
       }
       if (b.body_axes) s.frame_rate = s.omega;  // the body's own axes turn with it
       if (b.rotations.empty()) {  // a particle, a body that does not turn, or one given by omega
-        if (b.has_inertia) s.inertia = b.inertia_on_body_axes(x.data());
+        if (b.has_inertia) s.inertia = b.inertia_on_body_axes(v);
         out.push_back(s);
         continue;
       }
@@ -272,8 +295,8 @@ struct expression_system {
       for (std::size_t k = 0; k < m; ++k) {
         using std::sin, std::cos;
         const auto& [axis, angle] = b.rotations[k];
-        const S a = angle.value.at(x.data());
-        c[k] = cos(a), sn[k] = sin(a), rate[k] = angle.rate(x.data(), qd);
+        const S a = angle.value.at(v);
+        c[k] = cos(a), sn[k] = sin(a), rate[k] = angle.rate(v, qd);
       }
       auto turn = [&](std::size_t k, const vec3<S>& v, bool transpose) {  // R_k v or R_k^T v
         const int axis = b.rotations[k].first, i = (axis + 1) % 3, j = (axis + 2) % 3;
@@ -293,7 +316,7 @@ struct expression_system {
         vec3<S> w = along(m - 1);
         for (std::size_t k = m - 1; k-- > 0;) w = vec3<S>(turn(k, w, false) + along(k));
         s.omega = w;
-        if (b.has_inertia) s.inertia = b.inertia_on_body_axes(x.data());
+        if (b.has_inertia) s.inertia = b.inertia_on_body_axes(v);
         out.push_back(s);
         continue;
       }
@@ -308,7 +331,7 @@ struct expression_system {
       }
       s.omega = w;
       s.frame_rate = w;
-      if (b.has_inertia) s.inertia = b.inertia_on_body_axes(x.data());
+      if (b.has_inertia) s.inertia = b.inertia_on_body_axes(v);
       out.push_back(s);
     }
   }
@@ -321,26 +344,27 @@ struct expression_constraints {
   int count() const { return static_cast<int>(c->constraints.size()); }
   template <class S>
   void eval(const vector_t<S>& q, const S& t, matrix_t<S>& A, vector_t<S>& a) const {
-    const system_variables& v = c->def->vars;
-    const vector_t<S> u0 = vector_t<S>::Zero(v.speeds);
+    const vector_t<S> u0 = vector_t<S>::Zero(c->def->vars.speeds);
     const std::vector<S> x = c->template variables<S>(q, u0, t);
+    const std::vector<S> values = c->evaluate(c->constraint_tape, x);
+    const S* v = values.data();
     A.setZero();
     for (int r = 0; r < count(); ++r) {
       const auto& k = c->constraints[static_cast<std::size_t>(r)];
       if (!k.holonomic) {
-        for (const auto& [j, e] : k.du) A(r, j) = e.at(x.data());
-        a(r) = -k.g.at(x.data());
+        for (const auto& [j, e] : k.du) A(r, j) = e.at(v);
+        a(r) = -k.g.at(v);
         continue;
       }
-      S rhs = k.f.dt.at(x.data());
+      S rhs = k.f.dt.at(v);
       for (const auto& [i, e] : k.f.dq) {
-        const S dfi = e.at(x.data());
+        const S dfi = e.at(v);
         if (c->def->rates_as_speeds) {
           A(r, i) += dfi;
           continue;
         }
-        for (const auto& [j, w] : c->kinematics_du[static_cast<std::size_t>(i)]) A(r, j) += dfi * w.at(x.data());
-        rhs += dfi * c->kinematics[static_cast<std::size_t>(i)].at(x.data());  // w_i = q'_i at u = 0
+        for (const auto& [j, w] : c->kinematics_du[static_cast<std::size_t>(i)]) A(r, j) += dfi * w.at(v);
+        rhs += dfi * c->kinematics_on_constraint_tape[static_cast<std::size_t>(i)].at(v);  // w_i = q'_i at u = 0
       }
       a(r) = -rhs;
     }

@@ -394,21 +394,22 @@ system_input system_model::read(object_reader& scene) {
     for (int j = 0; j < d.vars.speeds; ++j) u(j) = value<mpfi>(in.u[static_cast<std::size_t>(j)]);
     const mpfi t = value<mpfi>(in.t);
     const std::vector<mpfi> x = sys.variables(q, u, t);
-    (void)sys.rates(x);
+    (void)sys.evaluate(sys.kinematics_tape, x);
+    const std::vector<mpfi> bv = sys.evaluate(sys.body_tape, x), cv = sys.evaluate(sys.constraint_tape, x);
     std::vector<body_state<mpfi>> states;
     expression_system<mpfi>{&sys}.bodies<mpfi>(q, u, t, states);
     for (std::size_t i = 0; i < d.bodies.size(); ++i) {
       const auto& bd = d.bodies[i];
       const auto& bc = sys.bodies[i];
       const std::string where = "bodies." + bd.name;
-      for (const auto& c : bc.center) (void)c.value.at(x.data());
-      for (const auto& [axis, angle] : bc.rotations) (void)angle.value.at(x.data());
-      const mpfi mass = bc.mass.at(x.data());
+      for (const auto& c : bc.center) (void)c.value.at(bv.data());
+      for (const auto& [axis, angle] : bc.rotations) (void)angle.value.at(bv.data());
+      const mpfi mass = bc.mass.at(bv.data());
       require_in_256_bits(certainly_positive(mass), certainly_nonpositive(mass),
                           where + ".mass: must be positive (" + to_string(mass) + ")");
       // Inertia: positive semidefinite (every principal minor >= 0); principal moments: the triangle inequalities.
       mpfi I[6];
-      for (std::size_t k = 0; k < 6; ++k) I[k] = bc.inertia[k].at(x.data());
+      for (std::size_t k = 0; k < 6; ++k) I[k] = bc.inertia[k].at(bv.data());
       const mpfi minors[] = {I[0], I[1], I[2], mpfi(I[0] * I[1] - I[3] * I[3]), mpfi(I[1] * I[2] - I[4] * I[4]),
                              mpfi(I[0] * I[2] - I[5] * I[5]),
                              mpfi(I[0] * (I[1] * I[2] - I[4] * I[4]) - I[3] * (I[3] * I[2] - I[4] * I[5]) +
@@ -433,11 +434,11 @@ system_input system_model::read(object_reader& scene) {
         const auto& k = d.constraints[static_cast<std::size_t>(r)];
         const std::string where = "state: constraint " + k.name;
         if (k.holonomic) {
-          const mpfi f = sys.constraints[static_cast<std::size_t>(r)].f.value.at(x.data());
+          const mpfi f = sys.constraints[static_cast<std::size_t>(r)].f.value.at(cv.data());
           if (!possibly_zero(f))
             throw input_error(where + " does not hold: f(q, t) = " + to_string(f));
         } else {
-          (void)sys.constraints[static_cast<std::size_t>(r)].g.at(x.data());
+          (void)sys.constraints[static_cast<std::size_t>(r)].g.at(cv.data());
         }
         mpfi res = -a(r);
         for (int j = 0; j < n; ++j) res += A(r, j) * u(j);
