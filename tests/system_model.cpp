@@ -205,6 +205,9 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused_naming_the_field) {
   expect_refused(replace(base, R"~("orientation": "ry(-theta)")~", R"~("orientation": "ry(-theta) q(1)")~"),
                  "bodies.rod.orientation: expected rx(...)");
   expect_refused(replace(base, R"~("theta_dot": "1")~", R"~("theta_dot": "1", "omega": "2")~"), "omega");
+  std::string many;
+  for (int i = 0; i < 17; ++i) many += "ry(-theta/17) ";
+  expect_refused(replace(base, R"~("ry(-theta)")~", "\"" + many + "\""), "rotations: more than 16 (17)");
   // omega instead of an orientation: isotropic on the fixed axes; on the body's own axes, no gravity.
   expect_refused(replace(base, R"~(, "orientation": "ry(-theta)")~", R"~(, "omega": ["0", "theta_dot", "0"])~"),
                  "bodies.rod.omega: on the fixed axes omega serves a body whose inertia is isotropic");

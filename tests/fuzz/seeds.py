@@ -89,4 +89,23 @@ for name, text in {"shipped": "0.5*theta + 0.1*sin(2*theta)", "constant": "1.25"
                    "bad-number": "1.2.3 + theta", "dangling": "theta +", "unbalanced": "sin(theta",
                    "invalid-utf8": b"theta\xff", "digits-1e5": "1." + "0" * 9990}.items():
     put(expr_dir, name, text)
+# system files: the shipped ones are seeds above; here the ways they go wrong
+disk = json.load(open(os.path.join(here, "..", "..", "data", "scenes", "system_rolling_disk.json")))
+systems = {
+    "circular-parameters": (["parameters"], {"m": "a", "a": "2*m", "g": "9.81"}),
+    "speed-in-holonomic": (["constraints", "ground", "holonomic"], "z - a*cos(theta) + x_dot"),
+    "nonlinear-nonholonomic": (["constraints", "roll_x", "nonholonomic"], "x_dot^2"),
+    "dependent": (["constraints", "roll_y", "nonholonomic"], "x_dot - a*(psi_dot*cos(psi)*sin(theta) + theta_dot*sin(psi)*cos(theta) + phi_dot*cos(psi))"),
+    "off-constraint": (["state", "z"], "0.2866"),
+    "reserved-name": (["coordinates"], ["x", "y", "t", "psi", "theta", "phi"]),
+    "bad-orientation": (["bodies", "disk", "orientation"], "rz(psi) rq(theta)"),
+    "deep-orientation": (["bodies", "disk", "orientation"], "rz(" * 5000 + "psi" + ")" * 5000),
+    "many-rotations": (["bodies", "disk", "orientation"], " ".join(["rx(theta)"] * 3000)),
+    "negative-mass": (["bodies", "disk", "mass"], "-m"),
+    "undefined-at-state": (["bodies", "disk", "center"], ["x", "y", "sqrt(z - 1)"]),
+    "no-bodies": (["bodies"], {}),
+    "too-many-constraints": (["constraints", "more"], {"nonholonomic": "psi_dot"}),
+}
+for name, (path, value) in systems.items():
+    put(scene_dir, "system-" + name, with_field(disk, path, value))
 print("seeds written to", root)

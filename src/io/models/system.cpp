@@ -52,12 +52,31 @@ const json_value& object_value(object_reader& r, const std::string& key) {
   return v;
 }
 
+/// What a system file may hold (bounded time and memory on any input): more is bad input.
+struct system_limits {
+  static constexpr std::size_t names = 64;        ///< coordinates; speeds; bodies; constraints (each)
+  static constexpr std::size_t rotations = 16;    ///< factors of one orientation
+  static constexpr std::size_t operations = 200000;  ///< all expressions and derivatives, unfolded
+};
+
+void require_at_most(std::size_t n, std::size_t limit, const std::string& what) {
+  if (n > limit) throw input_error(what + ": more than " + std::to_string(limit) + " (" + std::to_string(n) + ")");
+}
+
 class builder {
  public:
   system_definition def;
+  std::size_t operations = 0;
 
+  shared_expression count(shared_expression e) {
+    operations += e->operations();
+    if (operations > system_limits::operations)
+      throw input_error(e->where() + ": the system's expressions and their derivatives exceed " +
+                        std::to_string(system_limits::operations) + " operations (when unfolded)");
+    return e;
+  }
   shared_expression parse(const std::string& text, const std::string& where) {
-    return std::make_shared<const expression>(expression::parse(text, def.names, where));
+    return count(std::make_shared<const expression>(expression::parse(text, def.names, where)));
   }
   bool depends_on_range(const expression& e, int first, int last) const {
     for (int v = first; v < last; ++v)
@@ -66,9 +85,9 @@ class builder {
   }
   bool depends_on_state(const expression& e) const { return depends_on_range(e, def.vars.parameters, def.vars.size()); }
   bool depends_on_speeds(const expression& e) const { return depends_on_range(e, def.vars.u(0), def.vars.t()); }
-  shared_expression derivative(const expression& e, int variable) const {
+  shared_expression derivative(const expression& e, int variable) {
     auto d = std::make_shared<const expression>(e.derivative(variable));
-    return d->is_zero() ? nullptr : d;
+    return d->is_zero() ? nullptr : count(d);
   }
   /// A function of (q, t) and its partial derivatives.
   differentiated_expression function_of_q_t(const std::string& text, const std::string& where) {
@@ -161,6 +180,8 @@ system_input system_model::read(object_reader& scene) {
     if (speeds.empty()) throw input_error(scene.path("speeds") + ": a system needs at least one speed");
     for (const auto& u : speeds) in.acceleration_names.push_back(u + "_dot");
   }
+  require_at_most(coordinates.size(), system_limits::names, scene.path("coordinates"));
+  require_at_most(speeds.size(), system_limits::names, scene.path("speeds"));
   def.vars = {static_cast<int>(parameter_texts.size()), static_cast<int>(coordinates.size()),
               static_cast<int>(speeds.size())};
   for (const auto& [name, text] : parameter_texts) def.names.push_back(name);
@@ -248,6 +269,7 @@ system_input system_model::read(object_reader& scene) {
   // Bodies.
   const json_value& bodies = object_value(scene, "bodies");
   if (bodies.members.empty()) throw input_error("bodies: a system needs at least one body");
+  require_at_most(bodies.members.size(), system_limits::names, "bodies");
   for (const auto& m : bodies.members) {
     object_reader r(m.value, "bodies." + m.key);
     system_body_definition body;
@@ -327,7 +349,9 @@ system_input system_model::read(object_reader& scene) {
       if (o.type != json_value::kind::string)
         throw input_error(where + ": expected a product of rotations such as \"rz(psi) rx(theta) rz(phi)\"");
       int n = 0;
-      for (const auto& [axis, text] : rotation_factors(o.text, where))
+      const auto factors = rotation_factors(o.text, where);
+      require_at_most(factors.size(), system_limits::rotations, where + ": rotations");
+      for (const auto& [axis, text] : factors)
         body.rotations.emplace_back(axis, b.function_of_q_t(text, where + "[" + std::to_string(n++) + "]"));
     }
     if (r.has("force")) body.force = list3("force", false);
@@ -339,6 +363,7 @@ system_input system_model::read(object_reader& scene) {
   // Constraints.
   if (scene.has("constraints")) {
     const json_value& cs = object_value(scene, "constraints");
+    require_at_most(cs.members.size(), system_limits::names, "constraints");
     for (const auto& m : cs.members) {
       object_reader r(m.value, "constraints." + m.key);
       system_constraint_definition k;
