@@ -84,6 +84,11 @@ struct system_constraint_definition {
   differentiated_expression f;                        ///< holonomic: f(q, t) = 0
   shared_expression g;                                ///< nonholonomic: g(q, u, t) = 0
   std::vector<std::pair<int, shared_expression>> du;  ///< nonholonomic: (j, dg/du_j) not 0
+  /// point_velocity (nonholonomic): n . v = 0 for the material point of body
+  /// number `body` at `point`, v = v_G + omega x (point - G), n = `direction`
+  /// (point and direction on the fixed axes, functions of q and t).
+  int body = -1;
+  std::array<shared_expression, 3> point, direction;
 };
 
 /// A whole system file's mechanics, independent of any scalar.
@@ -161,6 +166,10 @@ struct compiled_system {
     detail::compiled_differentiated<T> f;
     detail::compiled_term<T> g;
     std::vector<std::pair<int, detail::compiled_term<T>>> du;
+    int body = -1;  ///< point_velocity: the body, and its centre and angles on the constraint tape
+    std::array<detail::compiled_differentiated<T>, 3> center;
+    std::vector<std::pair<int, detail::compiled_differentiated<T>>> rotations;
+    std::array<detail::compiled_term<T>, 3> point, direction;
   };
   const system_definition* def = nullptr;
   std::vector<T> parameters;  ///< values in T
@@ -217,8 +226,19 @@ struct compiled_system {
       constraint c;
       c.holonomic = k.holonomic;
       if (k.holonomic) c.f = detail::compiled_differentiated<T>(constraint_tape, k.f);
-      else c.g = detail::compiled_term<T>(constraint_tape, k.g);
+      else if (k.body < 0) c.g = detail::compiled_term<T>(constraint_tape, k.g);
       for (const auto& [j, e] : k.du) c.du.emplace_back(j, detail::compiled_term<T>(constraint_tape, e));
+      c.body = k.body;
+      if (k.body >= 0) {
+        const system_body_definition& b = d.bodies[static_cast<std::size_t>(k.body)];
+        for (std::size_t i = 0; i < 3; ++i) {
+          c.center[i] = detail::compiled_differentiated<T>(constraint_tape, b.center[i]);
+          c.point[i] = detail::compiled_term<T>(constraint_tape, k.point[i]);
+          c.direction[i] = detail::compiled_term<T>(constraint_tape, k.direction[i]);
+        }
+        for (const auto& [axis, angle] : b.rotations)
+          c.rotations.emplace_back(axis, detail::compiled_differentiated<T>(constraint_tape, angle));
+      }
       constraints.push_back(std::move(c));
     }
   }
@@ -341,6 +361,9 @@ struct expression_system {
 template <Scalar T>
 struct expression_constraints {
   const compiled_system<T>* c;
+  template <class S>
+  void point_velocity_row(const typename compiled_system<T>::constraint& k, const S* v, int r, matrix_t<S>& A,
+                          vector_t<S>& a) const;
   int count() const { return static_cast<int>(c->constraints.size()); }
   template <class S>
   void eval(const vector_t<S>& q, const S& t, matrix_t<S>& A, vector_t<S>& a) const {
@@ -351,6 +374,10 @@ struct expression_constraints {
     A.setZero();
     for (int r = 0; r < count(); ++r) {
       const auto& k = c->constraints[static_cast<std::size_t>(r)];
+      if (k.body >= 0) {
+        point_velocity_row(k, v, r, A, a);
+        continue;
+      }
       if (!k.holonomic) {
         for (const auto& [j, e] : k.du) A(r, j) = e.at(v);
         a(r) = -k.g.at(v);
@@ -370,6 +397,66 @@ struct expression_constraints {
     }
   }
 };
+
+template <Scalar T>
+template <class S>
+void expression_constraints<T>::point_velocity_row(const typename compiled_system<T>::constraint& k, const S* v,
+                                                    int r, matrix_t<S>& A, vector_t<S>& a) const {
+  // v_P = sum_i c_i q'_i + c_t, linear in q' (the centre's and the angles' rates are):
+  //   c_i = dG/dq_i + sum_m da_m/dq_i e'_m x (P - G),   e'_m = R_1 ... R_(m-1) e_(axis m),
+  // and q' = W u + w; the row is n . c W, the right-hand side -n . (c w + c_t).
+  const int nq = c->def->vars.coordinates;
+  vec3<S> P, G, n;
+  for (int i = 0; i < 3; ++i) {
+    const auto x = static_cast<std::size_t>(i);
+    P(i) = k.point[x].at(v), G(i) = k.center[x].value.at(v), n(i) = k.direction[x].at(v);
+  }
+  const vec3<S> rel = P - G;
+  // the axes e'_m, from the products of the elementary rotations before each
+  std::vector<vec3<S>> axes;
+  mat3<S> R = mat3<S>::Identity();
+  for (const auto& [axis, angle] : k.rotations) {
+    axes.push_back(vec3<S>(R.col(axis)));
+    using std::sin, std::cos;
+    const S a0 = angle.value.at(v), ca = cos(a0), sa = sin(a0);
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    for (int row = 0; row < 3; ++row) {  // R <- R R_axis(a0)
+      const S ri = R(row, i), rj = R(row, j);
+      R(row, i) = ri * ca + rj * sa;
+      R(row, j) = rj * ca - ri * sa;
+    }
+  }
+  // n . c_i for each coordinate, and n . c_t
+  std::vector<S> nc(static_cast<std::size_t>(nq), S(0));
+  S nct = S(0);
+  auto add = [&](int i, const S& scale, const vec3<S>& w) {  // i < 0: the t column
+    const S d = scale * dot(n, w);
+    if (i < 0) nct += d;
+    else nc[static_cast<std::size_t>(i)] += d;
+  };
+  for (int x = 0; x < 3; ++x) {
+    vec3<S> e = vec3<S>::Zero();
+    e(x) = S(1);
+    for (const auto& [i, d] : k.center[static_cast<std::size_t>(x)].dq) add(i, d.at(v), e);
+    if (k.center[static_cast<std::size_t>(x)].dt) add(-1, k.center[static_cast<std::size_t>(x)].dt.at(v), e);
+  }
+  for (std::size_t m = 0; m < k.rotations.size(); ++m) {
+    const vec3<S> w = cross(axes[m], rel);
+    for (const auto& [i, d] : k.rotations[m].second.dq) add(i, d.at(v), w);
+    if (k.rotations[m].second.dt) add(-1, k.rotations[m].second.dt.at(v), w);
+  }
+  S rhs = nct;
+  for (int i = 0; i < nq; ++i) {
+    const S& ci = nc[static_cast<std::size_t>(i)];
+    if (c->def->rates_as_speeds) {
+      A(r, i) += ci;
+      continue;
+    }
+    for (const auto& [j, wij] : c->kinematics_du[static_cast<std::size_t>(i)]) A(r, j) += ci * wij.at(v);
+    rhs += ci * c->kinematics_on_constraint_tape[static_cast<std::size_t>(i)].at(v);
+  }
+  a(r) = -rhs;
+}
 
 template <Scalar T>
 struct system_motion_result {

@@ -370,9 +370,38 @@ system_input system_model::read(object_reader& scene) {
       k.name = m.key;
       if (!is_identifier(k.name))
         throw input_error("constraints: '" + printable(k.name) + "' is not a name (a letter or _, then letters, digits, _)");
-      const bool h = r.has("holonomic"), nh = r.has("nonholonomic");
-      if (h == nh) throw input_error("constraints." + k.name + ": expected one of \"holonomic\" or \"nonholonomic\"");
+      const bool h = r.has("holonomic"), nh = r.has("nonholonomic"), pv = r.has("point_velocity");
+      if (int(h) + int(nh) + int(pv) != 1)
+        throw input_error("constraints." + k.name +
+                          ": expected one of \"holonomic\", \"nonholonomic\" or \"point_velocity\"");
       k.holonomic = h;
+      if (pv) {
+        // n . (v_G + omega x (P - G)) = 0 for the material point of a body at P
+        object_reader p = r.object("point_velocity");
+        const std::string body = p.string("body");
+        const auto it = std::find_if(def.bodies.begin(), def.bodies.end(),
+                                     [&](const system_body_definition& x) { return x.name == body; });
+        if (it == def.bodies.end()) throw input_error(p.path("body") + ": no body named '" + printable(body) + "'");
+        if (it->body_axes || it->has_omega)
+          throw input_error(p.path("body") + ": a point velocity needs the body's centre and orientation on the "
+                                             "fixed axes (not omega)");
+        k.body = static_cast<int>(it - def.bodies.begin());
+        for (const char* key : {"point", "direction"}) {
+          const json_value& v = p.raw(key);
+          if (v.type != json_value::kind::array || v.items.size() != 3)
+            throw input_error(p.path(key) + ": expected a list of 3 expressions in q and t");
+          for (std::size_t i = 0; i < 3; ++i) {
+            const std::string where = p.path(key) + "[" + std::to_string(i) + "]";
+            auto e = b.parse(expression_text(v.items[i], where), where);
+            if (b.depends_on_speeds(*e)) throw input_error(where + ": depends on the speeds (a function of q and t)");
+            (std::string(key) == "point" ? k.point : k.direction)[i] = e;
+          }
+        }
+        p.finish();
+        r.finish();
+        def.constraints.push_back(std::move(k));
+        continue;
+      }
       const std::string where = r.path(h ? "holonomic" : "nonholonomic");
       const std::string text = expression_text(r.raw(h ? "holonomic" : "nonholonomic"), where);
       r.finish();
@@ -462,13 +491,20 @@ system_input system_model::read(object_reader& scene) {
           const mpfi f = sys.constraints[static_cast<std::size_t>(r)].f.value.at(cv.data());
           if (!possibly_zero(f))
             throw input_error(where + " does not hold: f(q, t) = " + to_string(f));
+        } else if (k.body >= 0) {
+          const auto& kc = sys.constraints[static_cast<std::size_t>(r)];
+          mpfi nn = 0;
+          for (const auto& e : kc.direction) nn += sqr(e.at(cv.data()));
+          if (!certainly_positive(nn))
+            throw input_error("constraints." + k.name + ".point_velocity.direction: 0 at the state");
+          for (const auto& e : kc.point) (void)e.at(cv.data());
         } else {
           (void)sys.constraints[static_cast<std::size_t>(r)].g.at(cv.data());
         }
         mpfi res = -a(r);
         for (int j = 0; j < n; ++j) res += A(r, j) * u(j);
         if (!possibly_zero(res))
-          throw input_error(where + ": the speeds violate it (" + std::string(k.holonomic ? "df/dt" : "g") + " = " +
+          throw input_error(where + ": the speeds violate it (" + std::string(k.holonomic ? "df/dt" : k.body >= 0 ? "n . v" : "g") + " = " +
                             to_string(res) + ")");
       }
       // Independence: elimination with a pivot that is certainly nonzero in each row.
