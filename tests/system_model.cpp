@@ -355,3 +355,101 @@ BOOST_AUTO_TEST_CASE(a_rolling_disk_encloses_newton_euler) {
   BOOST_TEST(values > 3000);
   BOOST_TEST(misses == 0);
 }
+
+// --- the Whipple bicycle against the benchmark's linearized equations -------------------
+// data/scenes/system_whipple_bicycle.json (written by data/generators/whipple_bicycle.py) is
+// the nonlinear bicycle.  About upright straight running the benchmark (Meijaard et al. 2007,
+// eq. 5.4) publishes  M q'' + v C1 q' + (g K0 + v^2 K2) q = f,  q = (lean, steer), to 14
+// digits.  The system file's accelerations at 256 bits give them back:
+//   M^-1 exactly, column by column, from a unit lean or steer torque at rest;
+//   K0, C1, K2 from states a distance eps = 1e-40 from upright (a lean or steer angle at
+//   rest; a lean or steer rate, or a steer angle, at v = 5 m/s, the other rates solved
+//   from rolling), where the accelerations are linear to within eps^2.
+// The differences are finite (not certified derivatives): the test holds them to the
+// published digits, and derives the weave and capsize speeds from the matrices.
+namespace {
+using M2 = Eigen::Matrix<ref_t, 2, 2>;
+std::string bicycle_text() {
+  std::ifstream f(APPELL_SOURCE_DIR "/data/scenes/system_whipple_bicycle.json");
+  return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+}
+std::string with_value(std::string s, const std::string& key, const std::string& value) {
+  const std::string pattern = "\"" + key + "\": \"";
+  const auto at = s.find(pattern);
+  BOOST_REQUIRE_MESSAGE(at != std::string::npos, "no " << key);
+  const auto end = s.find('"', at + pattern.size());
+  return s.replace(at + pattern.size(), end - at - pattern.size(), value);
+}
+/// (lean'', steer'') of the bicycle with the given values, at 256 bits (midpoints).
+Eigen::Matrix<ref_t, 2, 1> lean_steer(const std::vector<std::pair<std::string, std::string>>& values) {
+  std::string s = bicycle_text();
+  for (const auto& [key, value] : {std::pair<std::string, std::string>{"phi_dot", "0"}, {"delta_dot", "0"}, {"xP_dot", "0"}})
+    s = with_value(s, key, value);
+  for (const auto& [key, value] : values) s = with_value(s, key, value);
+  const mp_precision_scope bits(256);
+  const evaluation<mpfi> e = evaluate<mpfi>(read_scene(parse_json(s)));
+  Eigen::Matrix<ref_t, 2, 1> r;
+  for (int i = 0; i < 2; ++i) {
+    const auto [lo, hi] = bounds_of(e.result(i == 0 ? "phi_ddot" : "delta_ddot").values[0]);
+    BOOST_REQUIRE(hi - lo < ref_t("1e-70"));
+    r(i) = (lo + hi) / 2;
+  }
+  return r;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(the_whipple_bicycle_gives_the_benchmark_linearization) {
+  const ref_t eps("1e-40"), g("9.81"), v(5);
+  const char* const angle[2] = {"phi", "delta"};
+  const char* const rate[2] = {"phi_dot", "delta_dot"};
+  M2 Minv, M, K0, K2, C1;
+  Minv.col(0) = lean_steer({{"T_phi", "1"}});
+  Minv.col(1) = lean_steer({{"T_delta", "1"}});
+  M = Minv.inverse();
+  for (int j = 0; j < 2; ++j) {
+    K0.col(j) = -(M * lean_steer({{angle[j], "1e-40"}})) / (g * eps);
+    C1.col(j) = -(M * lean_steer({{"xP_dot", "5"}, {rate[j], "1e-40"}})) / (v * eps);
+    K2.col(j) = (-(M * lean_steer({{"xP_dot", "5"}, {angle[j], "1e-40"}})) / eps - g * K0.col(j)) / (v * v);
+  }
+  M2 pM, pC1, pK0, pK2;  // eq. (5.4) of the benchmark
+  pM << ref_t("80.81722"), ref_t("2.31941332208709"), ref_t("2.31941332208709"), ref_t("0.29784188199686");
+  pC1 << 0, ref_t("33.86641391492494"), ref_t("-0.85035641456978"), ref_t("1.68540397397560");
+  pK0 << ref_t("-80.95"), ref_t("-2.59951685249872"), ref_t("-2.59951685249872"), ref_t("-0.80329488458618");
+  pK2 << 0, ref_t("76.59734589573222"), 0, ref_t("2.65431523794604");
+  for (const auto& [name, got, want] : {std::tuple<const char*, const M2&, const M2&>{"M", M, pM}, {"C1", C1, pC1},
+                                        {"K0", K0, pK0}, {"K2", K2, pK2}})
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        // the published values have 14 decimals
+        BOOST_TEST(abs(got(i, j) - want(i, j)) <= ref_t("6e-15"),
+                   name << "(" << i << "," << j << ") = " << got(i, j).str(20) << ", published " << want(i, j).str(16));
+        BOOST_TEST_MESSAGE(name << "(" << i << "," << j << ") = " << got(i, j).str(25) << "   published "
+                                << want(i, j).str(16));
+      }
+  // The characteristic polynomial det(M s^2 + v C1 s + g K0 + v^2 K2) = a4 s^4 + ... + a0:
+  // capsize where a0 = 0, weave where the Hurwitz determinant a3 a2 a1 - a3^2 a0 - a4 a1^2 = 0.
+  auto coefficients = [&](const ref_t& speed) {
+    const M2 A1 = C1 * speed, A0 = K0 * g + K2 * speed * speed;
+    auto mixed = [](const M2& X, const M2& Y) { return X(0, 0) * Y(1, 1) + Y(0, 0) * X(1, 1) - X(0, 1) * Y(1, 0) - Y(0, 1) * X(1, 0); };
+    return std::array<ref_t, 5>{A0.determinant(), mixed(A1, A0), ref_t(mixed(M, A0) + A1.determinant()), mixed(M, A1),
+                                M.determinant()};
+  };
+  auto hurwitz = [&](const ref_t& speed) {
+    const auto a = coefficients(speed);
+    return ref_t(a[3] * a[2] * a[1] - a[3] * a[3] * a[0] - a[4] * a[1] * a[1]);
+  };
+  auto bisect = [](auto f, ref_t lo, ref_t hi) {
+    const bool rising = f(lo) < 0;
+    for (int k = 0; k < 200; ++k) {
+      const ref_t mid = (lo + hi) / 2;
+      ((f(mid) < 0) == rising ? lo : hi) = mid;
+    }
+    return ref_t((lo + hi) / 2);
+  };
+  const ref_t weave = bisect(hurwitz, ref_t(4), ref_t(5));
+  const ref_t capsize = bisect([&](const ref_t& s) { return coefficients(s)[0]; }, ref_t(5), ref_t(7));
+  BOOST_TEST_MESSAGE("weave speed " << weave.str(20) << " (published 4.29238253634111), capsize speed "
+                                    << capsize.str(20) << " (published 6.02426201538837)");
+  BOOST_TEST(abs(weave - ref_t("4.29238253634111")) <= ref_t("2e-14"));
+  BOOST_TEST(abs(capsize - ref_t("6.02426201538837")) <= ref_t("2e-14"));
+}

@@ -30,6 +30,7 @@
 // checks carry the difference).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <optional>
@@ -456,6 +457,27 @@ void expression_constraints<T>::point_velocity_row(const typename compiled_syste
     rhs += ci * c->kinematics_on_constraint_tape[static_cast<std::size_t>(i)].at(v);
   }
   a(r) = -rhs;
+}
+
+/// The speeds numbered in `solved` computed from the constraints at (q, t)
+/// (A_b u_b = a - A_f u_f, verified for interval types), the others as given in u.
+template <Scalar T>
+void solve_dependent_speeds(const compiled_system<T>& c, const vector_t<T>& q, vector_t<T>& u, const T& t,
+                            const std::vector<int>& solved) {
+  const int s = static_cast<int>(c.constraints.size()), n = c.def->vars.speeds;
+  matrix_t<T> A(s, n);
+  vector_t<T> a(s);
+  expression_constraints<T>{&c}.template eval<T>(q, t, A, a);
+  matrix_t<T> Ab(s, s);
+  vector_t<T> rhs = a;
+  for (int r = 0; r < s; ++r)
+    for (int j = 0; j < n; ++j) {
+      const auto at = std::find(solved.begin(), solved.end(), j);
+      if (at != solved.end()) Ab(r, static_cast<Eigen::Index>(at - solved.begin())) = A(r, j);
+      else rhs(r) -= A(r, j) * u(j);
+    }
+  const vector_t<T> ub = solve(Ab, rhs);
+  for (std::size_t k = 0; k < solved.size(); ++k) u(solved[k]) = ub(static_cast<Eigen::Index>(k));
 }
 
 template <Scalar T>

@@ -422,10 +422,28 @@ system_input system_model::read(object_reader& scene) {
                         std::to_string(speeds.size()) + " speeds leave nothing to move");
   }
 
+  // Speeds the constraints determine (given neither in the state nor by hand).
+  if (scene.has("solve_speeds")) {
+    for (const std::string& name : name_list(scene.raw("solve_speeds"), scene.path("solve_speeds"))) {
+      const auto it = std::find(speeds.begin(), speeds.end(), name);
+      if (it == speeds.end()) throw input_error(scene.path("solve_speeds") + ": '" + printable(name) + "' is not a speed");
+      const int j = static_cast<int>(it - speeds.begin());
+      if (std::find(in.solved.begin(), in.solved.end(), j) != in.solved.end())
+        throw input_error(scene.path("solve_speeds") + ": '" + name + "' twice");
+      in.solved.push_back(j);
+    }
+    if (in.solved.size() != def.constraints.size())
+      throw input_error(scene.path("solve_speeds") + ": " + std::to_string(in.solved.size()) +
+                        " speeds for " + std::to_string(def.constraints.size()) + " constraints (one per constraint)");
+  }
+
   // The state.
   object_reader state = scene.object("state");
   for (const auto& q : coordinates) in.q.push_back(state.number(q));
-  for (const auto& u : speeds) in.u.push_back(state.number(u));
+  for (std::size_t j = 0; j < speeds.size(); ++j)
+    in.u.push_back(std::find(in.solved.begin(), in.solved.end(), static_cast<int>(j)) != in.solved.end()
+                       ? decimal_field{"0", state.path(speeds[j])}
+                       : state.number(speeds[j]));
   in.t = state.has("t") ? state.number("t") : decimal_field{"0", state.path("t")};
   state.finish();
 
@@ -447,6 +465,13 @@ system_input system_model::read(object_reader& scene) {
     for (int i = 0; i < d.vars.coordinates; ++i) q(i) = value<mpfi>(in.q[static_cast<std::size_t>(i)]);
     for (int j = 0; j < d.vars.speeds; ++j) u(j) = value<mpfi>(in.u[static_cast<std::size_t>(j)]);
     const mpfi t = value<mpfi>(in.t);
+    if (!in.solved.empty()) {
+      try {
+        solve_dependent_speeds(sys, q, u, t, in.solved);
+      } catch (const certification_error&) {
+        throw input_error("solve_speeds: the constraints do not determine these speeds at the state (singular)");
+      }
+    }
     const std::vector<mpfi> x = sys.variables(q, u, t);
     (void)sys.evaluate(sys.kinematics_tape, x);
     const std::vector<mpfi> bv = sys.evaluate(sys.body_tape, x), cv = sys.evaluate(sys.constraint_tape, x);

@@ -20,6 +20,7 @@ struct system_input : model_input {
   std::shared_ptr<const system_definition> def;
   std::vector<decimal_field> q, u;  ///< the state: coordinates and speeds
   decimal_field t;                  ///< the time (default 0)
+  std::vector<int> solved;          ///< speeds computed from the constraints (solve_speeds)
   std::vector<std::string> acceleration_names;  ///< per speed: q_ddot (rates) or u_dot
 };
 
@@ -40,7 +41,9 @@ struct system_model {
     vector_t<T> q(static_cast<Eigen::Index>(in.q.size())), u(static_cast<Eigen::Index>(in.u.size()));
     for (std::size_t i = 0; i < in.q.size(); ++i) q(static_cast<Eigen::Index>(i)) = value<T>(in.q[i]);
     for (std::size_t j = 0; j < in.u.size(); ++j) u(static_cast<Eigen::Index>(j)) = value<T>(in.u[j]);
-    return {&in, compiled_system<T>(*in.def), q, u, value<T>(in.t)};
+    prepared<T> p{&in, compiled_system<T>(*in.def), q, u, value<T>(in.t)};
+    if (!in.solved.empty()) solve_dependent_speeds(p.sys, p.q, p.u, p.t, in.solved);
+    return p;
   }
   template <Scalar T>
   static evaluation<T> compute(const prepared<T>& m) {
