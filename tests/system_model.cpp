@@ -453,3 +453,47 @@ BOOST_AUTO_TEST_CASE(the_whipple_bicycle_gives_the_benchmark_linearization) {
   BOOST_TEST(abs(weave - ref_t("4.29238253634111")) <= ref_t("2e-14"));
   BOOST_TEST(abs(capsize - ref_t("6.02426201538837")) <= ref_t("2e-14"));
 }
+
+// Rolling written as point_velocity constraints, with the rolling rates solved from them
+// (solve_speeds), gives the disk of the hand-written rows and 90-digit rates.
+BOOST_AUTO_TEST_CASE(point_velocity_and_solve_speeds_give_the_hand_written_disk) {
+  std::ifstream f(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk.json");
+  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  const std::string contact = R"~(["x - a*sin(psi)*sin(theta)", "y + a*cos(psi)*sin(theta)", "z - a*cos(theta)"])~";
+  std::string pv = text;
+  const auto from = pv.find("\"roll_x\""), to = pv.find("\"state\"");
+  pv.replace(from, to - from,
+             R"~("roll_x": {"point_velocity": {"body": "disk", "direction": ["1", "0", "0"], "point": )~" + contact +
+                 R"~(}}, "roll_y": {"point_velocity": {"body": "disk", "direction": ["0", "1", "0"], "point": )~" +
+                 contact + R"~(}}}, "solve_speeds": ["z_dot", "x_dot", "y_dot"], )~");
+  for (const char* key : {"\"x_dot\"", "\"y_dot\"", "\"z_dot\""}) {  // drop the given rates
+    const auto at = pv.find(key, pv.find("\"state\""));
+    pv.erase(at, pv.find(',', at) + 1 - at);
+  }
+  BOOST_TEST_REQUIRE(refusal(pv) == "", refusal(pv));
+  for (const auto& [scalar, bits] : {std::pair<std::string, std::optional<unsigned>>{"interval", {}}, {"mpfi", 113u}})
+    with_scalar(scalar, bits, [&]<class T>(std::type_identity<T>) {
+      const evaluation<T> a = evaluate<T>(read_scene(parse_json(text))), b = evaluate<T>(read_scene(parse_json(pv)));
+      for (const auto& r : a.results) {
+        const auto [alo, ahi] = bounds_of(r.values[0]);
+        const auto [blo, bhi] = bounds_of(b.result(r.name).values[0]);
+        BOOST_TEST((alo <= bhi && blo <= ahi), scalar << " " << r.name << ": " << to_string(r.values[0]) << " against "
+                                                      << to_string(b.result(r.name).values[0]));
+        BOOST_TEST(bhi - blo <= 8 * (ahi - alo) + ref_t("1e-30"), scalar << " " << r.name << " much wider");
+      }
+      return 0;
+    });
+  // solve_speeds: one per constraint, speeds only, and determined by the constraints
+  expect_refused(replace(pv, R"~(["z_dot", "x_dot", "y_dot"])~", R"~(["x_dot", "y_dot"])~"), "2 speeds for 3 constraints");
+  expect_refused(replace(pv, R"~(["z_dot", "x_dot", "y_dot"])~", R"~(["z_dot", "x_dot", "x"])~"), "'x' is not a speed");
+  // psi_dot has a zero coefficient in roll_y at psi = 0, as z_dot and x_dot have: singular
+  const std::string by_psi = replace(replace(replace(pv, R"~(["z_dot", "x_dot", "y_dot"])~", R"~(["z_dot", "x_dot", "psi_dot"])~"),
+                                             R"~("psi_dot": "1", )~", ""),
+                                     R"~("psi": "0",)~", R"~("psi": "0", "y_dot": "0",)~");
+  expect_refused(by_psi, "solve_speeds: the constraints do not determine these speeds");
+  expect_refused(replace(pv, R"~("body": "disk", "direction": ["1", "0", "0"])~",
+                         R"~("body": "wheel", "direction": ["1", "0", "0"])~"),
+                 "no body named 'wheel'");
+  expect_refused(replace(pv, R"~("direction": ["1", "0", "0"])~", R"~("direction": ["0", "0", "x"])~"),
+                 "direction: 0 at the state");
+}

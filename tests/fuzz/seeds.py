@@ -106,6 +106,9 @@ systems = {
     "no-bodies": (["bodies"], {}),
     "too-many-constraints": (["constraints", "more"], {"nonholonomic": "psi_dot"}),
 }
+systems["point-velocity-no-body"] = (["constraints", "roll_x"], {"point_velocity": {"body": "wheel", "point": ["x", "y", "0"], "direction": ["1", "0", "0"]}})
+systems["point-velocity-zero-direction"] = (["constraints", "roll_x"], {"point_velocity": {"body": "disk", "point": ["x", "y", "0"], "direction": ["0", "0", "0"]}})
+systems["solve-speeds-singular"] = (["solve_speeds"], ["x_dot", "x_dot", "y_dot"])
 for name, (path, value) in systems.items():
     put(scene_dir, "system-" + name, with_field(disk, path, value))
 print("seeds written to", root)

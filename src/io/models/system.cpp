@@ -465,6 +465,15 @@ system_input system_model::read(object_reader& scene) {
     for (int i = 0; i < d.vars.coordinates; ++i) q(i) = value<mpfi>(in.q[static_cast<std::size_t>(i)]);
     for (int j = 0; j < d.vars.speeds; ++j) u(j) = value<mpfi>(in.u[static_cast<std::size_t>(j)]);
     const mpfi t = value<mpfi>(in.t);
+    for (std::size_t r = 0; r < d.constraints.size(); ++r) {  // point_velocity directions, before any solve
+      const auto& kc = sys.constraints[r];
+      if (kc.body < 0) continue;
+      const std::vector<mpfi> cv0 = sys.evaluate(sys.constraint_tape, sys.variables(q, u, t));
+      mpfi nn = 0;
+      for (const auto& e : kc.direction) nn += sqr(e.at(cv0.data()));
+      if (!certainly_positive(nn))
+        throw input_error("constraints." + d.constraints[r].name + ".point_velocity.direction: 0 at the state");
+    }
     if (!in.solved.empty()) {
       try {
         solve_dependent_speeds(sys, q, u, t, in.solved);
@@ -517,12 +526,7 @@ system_input system_model::read(object_reader& scene) {
           if (!possibly_zero(f))
             throw input_error(where + " does not hold: f(q, t) = " + to_string(f));
         } else if (k.body >= 0) {
-          const auto& kc = sys.constraints[static_cast<std::size_t>(r)];
-          mpfi nn = 0;
-          for (const auto& e : kc.direction) nn += sqr(e.at(cv.data()));
-          if (!certainly_positive(nn))
-            throw input_error("constraints." + k.name + ".point_velocity.direction: 0 at the state");
-          for (const auto& e : kc.point) (void)e.at(cv.data());
+          // the direction was checked before the speeds were solved
         } else {
           (void)sys.constraints[static_cast<std::size_t>(r)].g.at(cv.data());
         }
