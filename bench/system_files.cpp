@@ -2,6 +2,8 @@
 // compute<T>() of a paper scene written as a system file (data/scenes/system_*.json)
 // and of the same scene in its dedicated model, side by side in one run, in
 // double and in interval; prints system / dedicated with the goal (<= 3).
+// Also the Whipple bicycle's `appell linearize` report in mpfi at 113 bits (goal: under
+// a second) and in interval and double, from the scene read.
 // Run: build/bench/appell_bench_system
 //   (steadier: --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true: medians are used).
 #include <benchmark/benchmark.h>
@@ -9,6 +11,7 @@
 #include <iomanip>
 #include <iostream>
 
+#include "appell/io/models/system.hpp"
 #include "appell/io/scene.hpp"
 #include "median_reporter.hpp"
 
@@ -33,6 +36,18 @@ void bench(benchmark::State& state, std::string scalar, std::string file) {
   });
 }
 
+// linearize_scene<T> of the bicycle: the matrices, 11 spectra and the critical speeds.
+void bench_linearize(benchmark::State& state, std::string scalar, std::optional<unsigned> bits) {
+  const scene_input scene = read_scene_file(APPELL_SOURCE_DIR "/data/scenes/system_whipple_bicycle.json");
+  const system_input& in = scene.as<system_input>();
+  with_scalar(scalar, bits, [&]<class T>(std::type_identity<T>) {
+    for (auto _ : state) benchmark::DoNotOptimize(linearize_scene<T>(in));
+    return 0;
+  });
+}
+const std::pair<const char*, std::optional<unsigned>> linearize_scalars[] = {
+    {"double", std::nullopt}, {"interval", std::nullopt}, {"mpfi", 113u}};
+
 class ratio_reporter : public median_reporter {
  public:
   void Finalize() override {
@@ -48,6 +63,15 @@ class ratio_reporter : public median_reporter {
                   << std::setprecision(1) << std::setw(14) << d << std::setw(12) << s << std::setw(12) << s / d
                   << (s / d <= 3 ? " met" : " MISSED") << "\n";
       }
+    std::cout << "\nthe Whipple bicycle's linearization (appell linearize: matrices, 11 spectra, critical speeds)\n";
+    for (const auto& [scalar, bits] : linearize_scalars) {
+      const std::string name = std::string("linearize/") + scalar + (bits ? "-" + std::to_string(*bits) : "");
+      const double t = ns(name);
+      if (!(t > 0)) continue;
+      std::cout << "  " << std::left << std::setw(16) << name.substr(10) << std::right << std::fixed << std::setprecision(1)
+                << std::setw(10) << t / 1e6 << " ms"
+                << (bits ? (t < 1e9 ? "   (goal: under 1000 ms) met" : "   (goal: under 1000 ms) MISSED") : "") << "\n";
+    }
   }
 };
 
@@ -59,6 +83,9 @@ int main(int argc, char** argv) {
       for (const char* file : {model, sys})
         benchmark::RegisterBenchmark((std::string(scalar) + "/" + file).c_str(), bench, std::string(scalar),
                                      std::string(file));
+  for (const auto& [scalar, bits] : linearize_scalars)
+    benchmark::RegisterBenchmark((std::string("linearize/") + scalar + (bits ? "-" + std::to_string(*bits) : "")).c_str(),
+                                 bench_linearize, std::string(scalar), bits);
   benchmark::Initialize(&argc, argv);
   ratio_reporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

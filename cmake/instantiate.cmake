@@ -78,4 +78,5 @@ ${entries}  };
 ")
   list(APPEND sources ${file})
   set(${out_var} ${sources} PARENT_SCOPE)
+  set(APPELL_STANDARD_SCALAR_COUNT ${count} PARENT_SCOPE)
 endfunction()

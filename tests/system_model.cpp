@@ -15,6 +15,7 @@
 #include <iterator>
 #include <random>
 
+#include "appell/io/models/system.hpp"
 #include "appell/io/scene.hpp"
 #include "bounds_400.hpp"
 
@@ -360,13 +361,16 @@ BOOST_AUTO_TEST_CASE(a_rolling_disk_encloses_newton_euler) {
 // data/scenes/system_whipple_bicycle.json (written by data/generators/whipple_bicycle.py) is
 // the nonlinear bicycle.  About upright straight running the benchmark (Meijaard et al. 2007,
 // eq. 5.4) publishes  M q'' + v C1 q' + (g K0 + v^2 K2) q = f,  q = (lean, steer), to 14
-// digits.  The system file's accelerations at 256 bits give them back:
-//   M^-1 exactly, column by column, from a unit lean or steer torque at rest;
-//   K0, C1, K2 from states a distance eps = 1e-40 from upright (a lean or steer angle at
-//   rest; a lean or steer rate, or a steer angle, at v = 5 m/s, the other rates solved
-//   from rolling), where the accelerations are linear to within eps^2.
-// The differences are finite (not certified derivatives): the test holds them to the
-// published digits, and derives the weave and capsize speeds from the matrices.
+// decimals, the eigenvalues at 0 .. 10 m/s (its Table 2) and the weave and capsize speeds.
+// `appell linearize` (linearize_scene: the generic path on dual numbers) encloses them all;
+// the tests hold the enclosures against
+//   (a) the published numbers (they carry about 1e-14 of rounding: the enclosures, 1e-70
+//       wide, decide their last digit);
+//   (b) the same linearization by Lagrange's multipliers instead of Cotton's reactions;
+//   (c) finite differences of the file's accelerations from `eval` at 256 bits, states a
+//       distance eps = 1e-40 from upright (no duals: M^-1 from unit torques, the others from
+//       small angles and rates, linear to within eps^2);
+//   (d) every scalar: interval types hold the 256-bit enclosures, point types agree with them.
 namespace {
 using M2 = Eigen::Matrix<ref_t, 2, 2>;
 std::string bicycle_text() {
@@ -396,62 +400,297 @@ Eigen::Matrix<ref_t, 2, 1> lean_steer(const std::vector<std::pair<std::string, s
   }
   return r;
 }
+/// The benchmark's matrices (eq. 5.4, 14 decimals) and eigenvalues (Table 2, 15 digits):
+/// at v = 0, 1, ..., 10 m/s the weave pair's real and imaginary parts, and two real ones.
+struct published_bicycle {
+  M2 M, C1, K0, K2;
+  std::array<std::array<const char*, 4>, 11> eigenvalues{{
+      {"3.13164324790656", "0", "-3.13164324790656", "-5.53094371765393"},  // v = 0: four real (+-)
+      {"3.52696170990070", "0.807740275199300", "-3.13423125066578", "-7.11008014637442"},
+      {"2.68234517512745", "1.68066296590675", "-3.07158645641514", "-8.67387984831735"},
+      {"1.70675605663975", "2.31582447384325", "-2.63366137253667", "-10.3510146724592"},
+      {"0.413253315211250", "3.07910818603206", "-1.42944427361326", "-12.1586142657645"},
+      {"-0.775341882195850", "4.46486771378823", "-0.322866429004090", "-14.0783896927982"},
+      {"-1.52644486584142", "5.87673060598709", "-0.00406690076970000", "-16.0853712309803"},
+      {"-2.13875644258362", "7.19525913329805", "0.102681705747660", "-18.1578846612526"},
+      {"-2.69348683581097", "8.46037971396931", "0.143278797657130", "-20.2794089439457"},
+      {"-3.21675402252485", "9.69377351531791", "0.157901840309170", "-22.4378855904086"},
+      {"-3.72016840437287", "10.9068113947629", "0.161053386531720", "-24.6245963501740"}}};
+  published_bicycle() {
+    M << ref_t("80.81722"), ref_t("2.31941332208709"), ref_t("2.31941332208709"), ref_t("0.29784188199686");
+    C1 << 0, ref_t("33.86641391492494"), ref_t("-0.85035641456978"), ref_t("1.68540397397560");
+    K0 << ref_t("-80.95"), ref_t("-2.59951685249872"), ref_t("-2.59951685249872"), ref_t("-0.80329488458618");
+    K2 << 0, ref_t("76.59734589573222"), 0, ref_t("2.65431523794604");
+  }
+};
+/// The distance from v to the enclosure [lo, hi] (0 inside).
+ref_t distance(const ref_t& v, const std::pair<ref_t, ref_t>& b) {
+  return v < b.first ? ref_t(b.first - v) : v > b.second ? ref_t(v - b.second) : ref_t(0);
+}
+template <class T>
+const matrix_t<T>& matrix_named(const linearized_equations<T>& r, int k) {
+  return k == 0 ? r.M : k == 1 ? r.C1 : k == 2 ? r.K0 : r.K2;
+}
+const char* const matrix_names[4] = {"M", "C1", "K0", "K2"};
 }  // namespace
 
-BOOST_AUTO_TEST_CASE(the_whipple_bicycle_gives_the_benchmark_linearization) {
-  const ref_t eps("1e-40"), g("9.81"), v(5);
-  const char* const angle[2] = {"phi", "delta"};
-  const char* const rate[2] = {"phi_dot", "delta_dot"};
-  M2 Minv, M, K0, K2, C1;
-  Minv.col(0) = lean_steer({{"T_phi", "1"}});
-  Minv.col(1) = lean_steer({{"T_delta", "1"}});
-  M = Minv.inverse();
-  for (int j = 0; j < 2; ++j) {
-    K0.col(j) = -(M * lean_steer({{angle[j], "1e-40"}})) / (g * eps);
-    C1.col(j) = -(M * lean_steer({{"xP_dot", "5"}, {rate[j], "1e-40"}})) / (v * eps);
-    K2.col(j) = (-(M * lean_steer({{"xP_dot", "5"}, {angle[j], "1e-40"}})) / eps - g * K0.col(j)) / (v * v);
-  }
-  M2 pM, pC1, pK0, pK2;  // eq. (5.4) of the benchmark
-  pM << ref_t("80.81722"), ref_t("2.31941332208709"), ref_t("2.31941332208709"), ref_t("0.29784188199686");
-  pC1 << 0, ref_t("33.86641391492494"), ref_t("-0.85035641456978"), ref_t("1.68540397397560");
-  pK0 << ref_t("-80.95"), ref_t("-2.59951685249872"), ref_t("-2.59951685249872"), ref_t("-0.80329488458618");
-  pK2 << 0, ref_t("76.59734589573222"), 0, ref_t("2.65431523794604");
-  for (const auto& [name, got, want] : {std::tuple<const char*, const M2&, const M2&>{"M", M, pM}, {"C1", C1, pC1},
-                                        {"K0", K0, pK0}, {"K2", K2, pK2}})
+BOOST_AUTO_TEST_CASE(the_whipple_bicycle_linearization_is_certified) {
+  const scene_input scene = read_scene(parse_json(bicycle_text()));
+  const system_input& in = scene.as<system_input>();
+  const mp_precision_scope bits(256);
+  const linearization_report<mpfi> rep = linearize_scene<mpfi>(in);
+  const linearized_equations<mpfi>& r = rep.equations;
+  const published_bicycle pub;
+  const M2* published[4] = {&pub.M, &pub.C1, &pub.K0, &pub.K2};
+
+  // (a) the matrices
+  ref_t worst = 0;
+  for (int k = 0; k < 4; ++k)
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 2; ++j) {
-        // the published values have 14 decimals
-        BOOST_TEST(abs(got(i, j) - want(i, j)) <= ref_t("6e-15"),
-                   name << "(" << i << "," << j << ") = " << got(i, j).str(20) << ", published " << want(i, j).str(16));
-        BOOST_TEST_MESSAGE(name << "(" << i << "," << j << ") = " << got(i, j).str(25) << "   published "
-                                << want(i, j).str(16));
+        const auto b = bounds_of(matrix_named(r, k)(i, j));
+        BOOST_TEST(b.second - b.first < ref_t("1e-70"), matrix_names[k] << "(" << i << "," << j << ") too wide");
+        const ref_t d = distance((*published[k])(i, j), b);
+        worst = std::max(worst, d);
+        BOOST_TEST(d <= ref_t("6e-15"), matrix_names[k] << "(" << i << "," << j << ") = [" << b.first.str(20) << ", "
+                                                        << b.second.str(20) << "], published "
+                                                        << (*published[k])(i, j).str(16));
       }
-  // The characteristic polynomial det(M s^2 + v C1 s + g K0 + v^2 K2) = a4 s^4 + ... + a0:
-  // capsize where a0 = 0, weave where the Hurwitz determinant a3 a2 a1 - a3^2 a0 - a4 a1^2 = 0.
-  auto coefficients = [&](const ref_t& speed) {
-    const M2 A1 = C1 * speed, A0 = K0 * g + K2 * speed * speed;
-    auto mixed = [](const M2& X, const M2& Y) { return X(0, 0) * Y(1, 1) + Y(0, 0) * X(1, 1) - X(0, 1) * Y(1, 0) - Y(0, 1) * X(1, 0); };
-    return std::array<ref_t, 5>{A0.determinant(), mixed(A1, A0), ref_t(mixed(M, A0) + A1.determinant()), mixed(M, A1),
-                                M.determinant()};
-  };
-  auto hurwitz = [&](const ref_t& speed) {
-    const auto a = coefficients(speed);
-    return ref_t(a[3] * a[2] * a[1] - a[3] * a[3] * a[0] - a[4] * a[1] * a[1]);
-  };
-  auto bisect = [](auto f, ref_t lo, ref_t hi) {
-    const bool rising = f(lo) < 0;
-    for (int k = 0; k < 200; ++k) {
-      const ref_t mid = (lo + hi) / 2;
-      ((f(mid) < 0) == rising ? lo : hi) = mid;
+  BOOST_TEST_MESSAGE("bicycle: the published matrices lie within " << worst.str(3)
+                                                                   << " of appell's 256-bit enclosures (14 decimals printed)");
+
+  // (b) Lagrange's multipliers on the same duals; the form's checks hold 0
+  {
+    evaluation_scope<mpfi> scope;
+    const compiled_system<mpfi> c(*in.def);
+    const linearize_input& li = *in.linearize;
+    vector_t<mpfi> q(in.def->vars.coordinates), u(in.def->vars.speeds);
+    for (Eigen::Index i = 0; i < q.size(); ++i) q(i) = value<mpfi>(li.q[static_cast<std::size_t>(i)]);
+    for (Eigen::Index j = 0; j < u.size(); ++j) u(j) = value<mpfi>(li.u[static_cast<std::size_t>(j)]);
+    const linearized_equations<mpfi> l =
+        linearize<linearize_method::lagrange>(c, li.def, in.solved, q, u, value<mpfi>(in.t));
+    for (int k = 0; k < 4; ++k)
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) {
+          const auto a = bounds_of(matrix_named(r, k)(i, j)), b = bounds_of(matrix_named(l, k)(i, j));
+          BOOST_TEST((a.first <= b.second && b.first <= a.second),
+                     matrix_names[k] << "(" << i << "," << j << "): Cotton " << to_string(matrix_named(r, k)(i, j))
+                                     << ", Lagrange " << to_string(matrix_named(l, k)(i, j)));
+          BOOST_TEST(b.second - b.first < ref_t("1e-70"));
+        }
+    for (const matrix_t<mpfi>* X : {&r.stiffness_residual, &r.damping_residual, &r.damping_at_rest})
+      for (Eigen::Index i = 0; i < 2; ++i)
+        for (Eigen::Index j = 0; j < 2; ++j) BOOST_TEST(possibly_zero((*X)(i, j)));
+  }
+
+  // (c) finite differences of eval's accelerations
+  {
+    const ref_t eps("1e-40"), g("9.81"), v(5);
+    const char* const angle[2] = {"phi", "delta"};
+    const char* const rate[2] = {"phi_dot", "delta_dot"};
+    M2 Minv, M, K0, K2, C1;
+    Minv.col(0) = lean_steer({{"T_phi", "1"}});
+    Minv.col(1) = lean_steer({{"T_delta", "1"}});
+    M = Minv.inverse();
+    for (int j = 0; j < 2; ++j) {
+      K0.col(j) = -(M * lean_steer({{angle[j], "1e-40"}})) / (g * eps);
+      C1.col(j) = -(M * lean_steer({{"xP_dot", "5"}, {rate[j], "1e-40"}})) / (v * eps);
+      K2.col(j) = (-(M * lean_steer({{"xP_dot", "5"}, {angle[j], "1e-40"}})) / eps - g * K0.col(j)) / (v * v);
     }
-    return ref_t((lo + hi) / 2);
-  };
-  const ref_t weave = bisect(hurwitz, ref_t(4), ref_t(5));
-  const ref_t capsize = bisect([&](const ref_t& s) { return coefficients(s)[0]; }, ref_t(5), ref_t(7));
-  BOOST_TEST_MESSAGE("weave speed " << weave.str(20) << " (published 4.29238253634111), capsize speed "
-                                    << capsize.str(20) << " (published 6.02426201538837)");
-  BOOST_TEST(abs(weave - ref_t("4.29238253634111")) <= ref_t("2e-14"));
-  BOOST_TEST(abs(capsize - ref_t("6.02426201538837")) <= ref_t("2e-14"));
+    const M2* fd[4] = {&M, &C1, &K0, &K2};
+    for (int k = 0; k < 4; ++k)
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j)
+          BOOST_TEST(distance((*fd[k])(i, j), bounds_of(matrix_named(r, k)(i, j))) <= ref_t("1e-35"),
+                     matrix_names[k] << "(" << i << "," << j << "): finite differences " << (*fd[k])(i, j).str(40)
+                                     << ", enclosure " << to_string(matrix_named(r, k)(i, j)));
+  }
+
+  // (d) Table 2: the eigenvalues at 0 .. 10 m/s, each in an isolated disc
+  BOOST_TEST_REQUIRE(rep.spectra.size() == 11u);
+  ref_t worst_eig = 0;
+  for (std::size_t s = 0; s < 11; ++s) {
+    std::vector<std::pair<ref_t, ref_t>> want;  // (re, im), the pair's both signs of im
+    const auto& row = pub.eigenvalues[s];
+    if (s == 0) {
+      for (const char* x : {"3.13164324790656", "-3.13164324790656", "5.53094371765393", "-5.53094371765393"})
+        want.emplace_back(ref_t(x), ref_t(0));
+    } else {
+      want.emplace_back(ref_t(row[0]), ref_t(row[1]));
+      want.emplace_back(ref_t(row[0]), -ref_t(row[1]));
+      want.emplace_back(ref_t(row[2]), ref_t(0));
+      want.emplace_back(ref_t(row[3]), ref_t(0));
+    }
+    BOOST_TEST_REQUIRE(rep.spectra[s].size() == 4u);
+    for (const auto& [re, im] : want) {
+      ref_t best = 1;
+      for (const auto& e : rep.spectra[s]) {
+        BOOST_TEST(e.isolated);
+        const auto br = bounds_of(e.real_part), bi = bounds_of(e.imaginary_part);
+        BOOST_TEST(br.second - br.first < ref_t("1e-60"));
+        best = std::min(best, std::max(distance(re, br), distance(im, bi)));
+      }
+      // Table 2 prints 15 significant digits computed in double from matrices known to about
+      // 14 decimals (eq. 5.4 prints them so): its last two digits are not significant, and
+      // it is held to 13 significant digits.
+      const ref_t tolerance = ref_t("1e-13") * std::max(ref_t(1), ref_t(abs(re) + abs(im)));
+      worst_eig = std::max(worst_eig, ref_t(best / std::max(ref_t(1), ref_t(abs(re) + abs(im)))));
+      BOOST_TEST(best <= tolerance, "v = " << s << ": published " << re.str(16) << " + i " << im.str(16) << " is "
+                                           << best.str(3) << " from every enclosure (tolerance " << tolerance.str(3) << ")");
+    }
+  }
+  BOOST_TEST_MESSAGE("bicycle: Table 2's 44 eigenvalues lie within " << worst_eig.str(3)
+                                                                     << " (relative) of appell's enclosures");
+
+  // (e) the weave and capsize speeds: unique roots, where the unstable count changes
+  BOOST_TEST_REQUIRE(rep.critical.size() == 2u);
+  const auto& weave = rep.critical[0];
+  const auto& capsize = rep.critical[1];
+  BOOST_TEST(weave.kind == critical_speed<mpfi>::imaginary_pair);
+  BOOST_TEST(capsize.kind == critical_speed<mpfi>::zero_root);
+  for (const auto& [cs, published_speed, below, above] :
+       {std::tuple<const critical_speed<mpfi>&, const char*, int, int>{weave, "4.29238253634111", 2, 0},
+        {capsize, "6.02426201538837", 0, 1}}) {
+    const auto b = bounds_of(cs.speed);
+    BOOST_TEST(cs.unique);
+    BOOST_TEST(b.second - b.first < ref_t("1e-60"));
+    // 14 published decimals (5e-15) computed from matrices that carry their own 5e-15: 2e-14
+    BOOST_TEST(distance(ref_t(published_speed), b) <= ref_t("2e-14"),
+               "speed " << to_string(cs.speed) << ", published " << published_speed);
+    BOOST_TEST(cs.unstable_below == below);
+    BOOST_TEST(cs.unstable_above == above);
+    BOOST_TEST_MESSAGE("bicycle: critical speed " << to_string(cs.speed) << " (published " << published_speed << ")");
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_bicycle_linearization_in_every_scalar) {
+  const scene_input scene = read_scene(parse_json(bicycle_text()));
+  const system_input& in = scene.as<system_input>();
+  std::vector<std::pair<ref_t, ref_t>> ref;  // the matrices' entries, then the two critical speeds, at 256 bits
+  {
+    const mp_precision_scope bits(256);
+    const linearization_report<mpfi> rep = linearize_scene<mpfi>(in);
+    for (int k = 0; k < 4; ++k)
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) ref.push_back(bounds_of(matrix_named(rep.equations, k)(i, j)));
+    for (const auto& cs : rep.critical) ref.push_back(bounds_of(cs.speed));
+  }
+  const ref_t scale = 81;  // the largest entry: |K0(1,1)| = 80.95
+  for (const auto& [name, bits] : {std::pair<std::string, std::optional<unsigned>>{"double", {}}, {"long-double", {}},
+                                   {"dd", {}}, {"float128", {}}, {"mpfr", 113u}, {"interval", {}}, {"mpfi", 113u}})
+    with_scalar(name, bits, [&]<class T>(std::type_identity<T>) {
+      const linearization_report<T> rep = linearize_scene<T>(in);
+      std::vector<T> got;
+      for (int k = 0; k < 4; ++k)
+        for (int i = 0; i < 2; ++i)
+          for (int j = 0; j < 2; ++j) got.push_back(matrix_named(rep.equations, k)(i, j));
+      BOOST_TEST_REQUIRE(rep.critical.size() == 2u, name);
+      for (const auto& cs : rep.critical) got.push_back(cs.speed);
+      const ref_t ulp = pow(ref_t(2), 1 - static_cast<int>(scalar_traits<T>::precision_bits()));
+      ref_t worst = 0;
+      for (std::size_t x = 0; x < got.size(); ++x) {
+        const auto b = bounds_of(got[x]);
+        if constexpr (scalar_traits<T>::is_interval) {
+          BOOST_TEST((b.first <= ref[x].first && ref[x].second <= b.second), name << " entry " << x << " misses");
+          worst = std::max(worst, ref_t((b.second - b.first) / (ulp * scale)));
+        } else {
+          worst = std::max(worst, ref_t(distance(b.first, ref[x]) / (ulp * scale)));
+        }
+      }
+      BOOST_TEST_MESSAGE("bicycle linearization in " << name << ": " << (scalar_traits<T>::is_interval ? "widest" : "worst error")
+                                                     << " " << worst.str(3) << " x 2^(1-p) x 81");
+      // point types: within 64 units of the scale (measured: 2.4 at most, the figure above);
+      // intervals: they hold the 256-bit enclosures, and their widths are reported
+      if constexpr (!scalar_traits<T>::is_interval) BOOST_TEST(worst <= 64, name);
+      return 0;
+    });
+}
+
+// A second system with a closed form: a symmetric top on a pivot (centre at l along its
+// axis), tilted by a about x and b about y, spinning at psi' = w: about the sleeping top,
+//   (A + m l^2) a'' + C w b' - m g l a = 0,   (A + m l^2) b'' - C w a' - m g l b = 0
+// (angular momentum (A + m l^2)(a', b', 0) + C w (b, -a, 1) about the pivot, gravity's moment
+// m g l (a, b, 0)): M = (A + m l^2) I, C1 = C [0 1; -1 0], K0 = -m l I, K2 = 0.  Below the
+// speed where C^2 w^2 = 4 (A + m l^2) m g l the top falls (a root with a positive real part).
+BOOST_AUTO_TEST_CASE(a_sleeping_top_linearizes_to_its_closed_form) {
+  const std::string top = R"~({"model": "system",
+ "parameters": {"m": "2", "l": "0.3", "g": "9.81", "A": "0.05", "C": "0.08"},
+ "coordinates": ["a", "b", "psi"],
+ "gravity": ["0", "0", "-g"],
+ "bodies": {"top": {"mass": "m", "inertia": ["A", "A", "C"],
+                    "center": ["l*sin(b)", "-l*sin(a)*cos(b)", "l*cos(a)*cos(b)"], "orientation": "rx(a) ry(b) rz(psi)"}},
+ "state": {"a": "0", "b": "0", "psi": "0", "a_dot": "0", "b_dot": "0", "psi_dot": "40"},
+ "linearize": {"coordinates": ["a", "b"], "speed": "psi_dot", "gravity": "g", "eigenvalues_at": ["20", "60"]}})~";
+  const scene_input scene = read_scene(parse_json(top));
+  const system_input& in = scene.as<system_input>();
+  const mp_precision_scope bits(256);
+  const linearization_report<mpfi> rep = linearize_scene<mpfi>(in);
+  const ref_t m(2), l("0.3"), A("0.05"), C("0.08"), g("9.81");
+  M2 M, C1, K0, K2;
+  M << A + m * l * l, 0, 0, A + m * l * l;
+  C1 << 0, C, -C, 0;
+  K0 << -m * l, 0, 0, -m * l;
+  K2 << 0, 0, 0, 0;
+  const M2* want[4] = {&M, &C1, &K0, &K2};
+  for (int k = 0; k < 4; ++k)
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        const auto b = bounds_of(matrix_named(rep.equations, k)(i, j));
+        BOOST_TEST((b.first <= (*want[k])(i, j) && (*want[k])(i, j) <= b.second && b.second - b.first < ref_t("1e-70")),
+                   matrix_names[k] << "(" << i << "," << j << ") = " << to_string(matrix_named(rep.equations, k)(i, j))
+                                   << ", closed form " << (*want[k])(i, j).str(30));
+      }
+  // (A' s^2 - m g l)^2 + (C w s)^2 = 0: at w = 20 (below the critical 2 sqrt(A' m g l) / C = 27.4)
+  // a root with a positive real part; at w = 60 four imaginary roots, real parts enclosing 0.
+  BOOST_TEST_REQUIRE(rep.spectra.size() == 2u);
+  BOOST_TEST(stability_of(rep.spectra[0]).first == 2);
+  for (const auto& e : rep.spectra[1]) {
+    BOOST_TEST(possibly_zero(e.real_part));
+    const ref_t Ap = A + m * l * l, w(60);
+    // s = i y with A' y^2 + m g l = +- C w y
+    const ref_t disc = sqrt(C * C * w * w - 4 * Ap * m * g * l);
+    bool found = false;
+    for (const ref_t y : {ref_t((C * w + disc) / (2 * Ap)), ref_t((C * w - disc) / (2 * Ap))})
+      for (const ref_t sign : {ref_t(1), ref_t(-1)}) {
+        const auto bi = bounds_of(e.imaginary_part);
+        found = found || (bi.first <= sign * y && sign * y <= bi.second);
+      }
+    BOOST_TEST(found, "imaginary part " << to_string(e.imaginary_part));
+  }
+}
+
+// The linearize section: bad input refused naming the field.
+BOOST_AUTO_TEST_CASE(a_bad_linearize_section_is_refused) {
+  const std::string bike = bicycle_text();
+  BOOST_TEST_REQUIRE(bike.find(R"~("coordinates": [
+   "phi",
+   "delta"
+  ],
+  "speed": "xP_dot",
+  "gravity": "g")~") != std::string::npos);
+  auto with = [&](const std::string& from, const std::string& to) { return replace(bike, from, to); };
+  expect_refused(with(R"~("phi",
+   "delta"
+  ],
+  "speed")~", R"~("phi", "nope"], "speed")~"), "linearize.coordinates: 'nope' is not a coordinate");
+  expect_refused(with(R"~("phi",
+   "delta"
+  ],
+  "speed")~", R"~("phi", "theta"], "speed")~"), "theta_dot is in solve_speeds");
+  expect_refused(with(R"~("speed": "xP_dot")~", R"~("speed": "v")~"), "linearize.speed: 'v' is not a speed");
+  expect_refused(with(R"~("speed": "xP_dot")~", R"~("speed": "thR_dot")~"), "'thR_dot' is in solve_speeds");
+  expect_refused(with(R"~("speed": "xP_dot")~", R"~("speed": "phi_dot")~"), "is the rate of a linearized coordinate");
+  expect_refused(with(R"~("gravity": "g",)~", R"~("gravity": "gg",)~"), "linearize.gravity: 'gg' is not a parameter");
+  expect_refused(with(R"~("about": {)~", R"~("about": {"zz": "1",)~"), "linearize.about.zz: not a coordinate or a given speed");
+  expect_refused(with(R"~("about": {)~", R"~("about": {"theta": "0.1",)~"),
+                 "linearize.about: constraint front_contact does not hold");
+  expect_refused(with(R"~("xP_dot": "5",
+   "phi_dot": "0",)~", R"~("xP_dot": "0",
+   "phi_dot": "0",)~"), "the reference speed must not be 0");
+  expect_refused(with(R"~("from": "0",
+   "to": "10")~", R"~("from": "5",
+   "to": "1")~"), "from must be less than to");
+  expect_refused(with(R"~("steps": 200)~", R"~("steps": 0)~"), "steps: expected an integer from 1 to 10000");
 }
 
 // Rolling written as point_velocity constraints, with the rolling rates solved from them

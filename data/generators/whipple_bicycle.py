@@ -100,6 +100,12 @@ scene = {
     "solve_speeds": ["yP_dot", "psi_dot", "theta_dot", "thR_dot", "thF_dot"],
     "state": {"xP": "0", "yP": "0", "psi": "0", "phi": "0", "theta": "0", "delta": "0", "thR": "0", "thF": "0",
               "xP_dot": "5", "phi_dot": "0.1", "delta_dot": "-0.2"},
+    # appell linearize: lean and steer about upright straight running at 5 m/s (the
+    # benchmark's eq. 5.4 and its Table 2 of eigenvalues; weave and capsize speeds)
+    "linearize": {"coordinates": ["phi", "delta"], "speed": "xP_dot", "gravity": "g",
+                  "about": {"xP_dot": "5", "phi_dot": "0", "delta_dot": "0"},
+                  "eigenvalues_at": ["0", "1", "2", "3", "4", "5", "6", "7", "8", "9", "10"],
+                  "critical_speeds": {"from": "0", "to": "10", "steps": 200}},
 }
 path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scenes", "system_whipple_bicycle.json")
 with open(path, "w") as f:

@@ -12,6 +12,7 @@
 #include "appell/io/scene.hpp"
 #include "appell/linalg/solve.hpp"
 #include "extremes.hpp"
+#include "linearize.hpp"
 #include "tradeoff.hpp"
 
 namespace {
@@ -20,10 +21,13 @@ constexpr const char* usage_text =
     "usage: appell eval SCENE [--scalar NAME] [--bits N] [--format json|text]\n"
     "       appell tradeoff SCENE [--out DIR] [--reps N]\n"
     "       appell extremes [--out DIR]\n"
+    "       appell linearize SCENE [--scalar NAME] [--bits N] [--format json|text]\n"
     "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
     "  --bits N: precision of mpfr and mpfi (default 256): mpfi gets exactly N bits; mpfr the\n"
     "            smallest count >= N that Boost's decimal-digit precision can set (reported)\n"
-    "  tradeoff: speed and accuracy of every scalar; writes DIR/tradeoff.csv and DIR/tradeoff.png\n";
+    "  tradeoff: speed and accuracy of every scalar; writes DIR/tradeoff.csv and DIR/tradeoff.png\n"
+    "  linearize: the linearized equations of a system file about its \"linearize\" section's motion,\n"
+    "             their eigenvalues and the speeds where a real part crosses 0 (enclosed in interval, mpfi)\n";
 
 struct options {
   std::string scene;
@@ -134,7 +138,7 @@ int main(int argc, char** argv) {
       return exit_status_of_current_exception();
     }
   }
-  if (command != "eval") return usage("unknown command '" + command + "'");
+  if (command != "eval" && command != "linearize") return usage("unknown command '" + command + "'");
   options o;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
@@ -168,8 +172,12 @@ int main(int argc, char** argv) {
       // std::cerr and returns NaN; appell answers for it (exit 3 naming the
       // result that is not finite), so stderr keeps to one line.
       const cerr_silenced quiet;
-      const appell::scene_input scene = appell::read_scene_file(o.scene);
-      out = dispatch(scene, o);
+      if (command == "linearize") {
+        out = appell::cli::linearize({o.scene, o.scalar, o.bits, o.format});
+      } else {
+        const appell::scene_input scene = appell::read_scene_file(o.scene);
+        out = dispatch(scene, o);
+      }
     }
     std::cout << out;
     std::cout.flush();

@@ -21,6 +21,10 @@
 namespace appell {
 
 template <class S> bool structurally_zero(const S& x);
+// Declared before dual's rules, which call appell::pown on their values: a dual
+// of a multi_dual (a multi_dual's derivative pass inside a linearization) finds them.
+template <class T, int N> struct multi_dual;
+template <class T, int N> multi_dual<T, N> pown(const multi_dual<T, N>& x, int n);
 
 template <class T>
 struct dual {
@@ -208,6 +212,28 @@ template <class T, int N> multi_dual<T, N> sqr(const multi_dual<T, N>& x) {
   return multi_dual<T, N>::chain(sqr(x.v), T(2) * x.v, x);
 }
 
+/// multi_dual<T, N> over a scalar T is itself a scalar of the generic path: the
+/// whole pipeline (Appell's equations, Cotton's reactions, the solves) runs on it
+/// and carries N derivatives of every result along, each enclosed as rigorously
+/// as the value (linearize.hpp differentiates the motion so).  It is not itself a
+/// set: its bounds and predicates are those of its value, and the linear solves
+/// go to the overloads in linalg/dual_solve.hpp.
+template <class T, int N>
+  requires Scalar<T>
+struct scalar_traits<multi_dual<T, N>> {
+  static constexpr const char* name = "dual";
+  static constexpr bool is_interval = false;
+  static constexpr bool is_rigorous = scalar_traits<T>::is_rigorous;
+  static constexpr bool runtime_precision = scalar_traits<T>::runtime_precision;
+  static constexpr bool needs_upward_rounding = scalar_traits<T>::needs_upward_rounding;
+  using bound_type = bound_t<T>;
+  static unsigned precision_bits() { return scalar_traits<T>::precision_bits(); }
+  static bound_type lower(const multi_dual<T, N>& x) { return scalar_traits<T>::lower(x.v); }
+  static bound_type upper(const multi_dual<T, N>& x) { return scalar_traits<T>::upper(x.v); }
+  static bound_type mid(const multi_dual<T, N>& x) { return scalar_traits<T>::mid(x.v); }
+  static bound_type width(const multi_dual<T, N>& x) { return scalar_traits<T>::width(x.v); }
+};
+
 template <class T> struct is_dual : std::false_type {};
 template <class T> struct is_dual<dual<T>> : std::true_type {};
 template <class T, int N> struct is_dual<multi_dual<T, N>> : std::true_type {};
@@ -219,6 +245,15 @@ template <class T> struct base_scalar { using type = T; };
 template <class T> struct base_scalar<dual<T>> { using type = typename base_scalar<T>::type; };
 template <class T, int N> struct base_scalar<multi_dual<T, N>> { using type = typename base_scalar<T>::type; };
 template <class T> using base_scalar_t = typename base_scalar<T>::type;
+
+namespace detail {
+/// The value of a scalar, or of a (nested) dual's base scalar.
+template <class S>
+const base_scalar_t<S>& value_of(const S& x) {
+  if constexpr (is_dual<S>::value) return value_of(x.v);
+  else return x;
+}
+}  // namespace detail
 
 /// Exactly 0 / exactly 1 (value and every derivative part) for scalars and duals alike.
 template <class S> bool structurally_zero(const S& x) {

@@ -127,9 +127,13 @@ adapted_change<Constraint> adapt_speeds_keeping(const Constraint& con, int n, st
   return {con, std::move(free_columns), std::move(bound)};
 }
 
-/// Chooses the bound columns by pivoting on mid(A) at (q, t), largest pivot first.
+/// Chooses the bound columns by pivoting on mid(A) at (q, t), largest pivot
+/// first; with `free_columns` given, among the other columns only (they are
+/// then the free speeds, in that order; the elimination of adapted_change needs
+/// the bound columns in pivot order).
 template <Scalar T, class Constraint>
-adapted_change<Constraint> adapt_speeds(const Constraint& con, const vector_t<T>& q, const T& t, int n) {
+adapted_change<Constraint> adapt_speeds(const Constraint& con, const vector_t<T>& q, const T& t, int n,
+                                        const std::vector<int>* free_columns = nullptr) {
   const int s = con.count();
   matrix_t<T> A(s, n);
   vector_t<T> a(s);
@@ -140,6 +144,8 @@ adapted_change<Constraint> adapt_speeds(const Constraint& con, const vector_t<T>
   std::vector<int> bound, order(static_cast<std::size_t>(n));
   std::iota(order.begin(), order.end(), 0);
   std::vector<bool> used(static_cast<std::size_t>(n), false);
+  if (free_columns)
+    for (int j : *free_columns) used[static_cast<std::size_t>(j)] = true;
   for (int r = 0; r < s; ++r) {  // Gaussian elimination with full column choice, on doubles
     int best = -1;
     double best_abs = 0;
@@ -156,6 +162,7 @@ adapted_change<Constraint> adapt_speeds(const Constraint& con, const vector_t<T>
       Am.row(r2) -= f * Am.row(r);
     }
   }
+  if (free_columns) return {con, *free_columns, bound};
   std::vector<int> free;
   for (int j = 0; j < n; ++j)
     if (!used[static_cast<std::size_t>(j)]) free.push_back(j);

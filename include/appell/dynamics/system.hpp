@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "appell/dynamics/dual.hpp"
+#include "appell/linalg/dual_solve.hpp"
 #include "appell/linalg/solve.hpp"
 
 namespace appell {

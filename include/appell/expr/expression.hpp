@@ -132,11 +132,6 @@ class expression {
 };
 
 namespace detail {
-template <class S>
-const base_scalar_t<S>& value_of(const S& x) {
-  if constexpr (is_dual<S>::value) return value_of(x.v);
-  else return x;
-}
 template <class T>
 std::string describe(const T& x) { return to_string(x); }
 }  // namespace detail

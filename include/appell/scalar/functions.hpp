@@ -39,6 +39,7 @@ void sin_cos(const T& x, T& s, T& c) {
 /// x^n for an integer n.
 template <Scalar T>
 T pown(const T& x, int n) {
+  if (n == 0) return T(1);  // x^0 = 1, 0^0 included (QD's npwr refuses 0^0: a dual's x^1 asks for it)
   if constexpr (std::is_same_v<T, interval>) return appell::pown(x, n);
   else if constexpr (std::is_same_v<T, mpfi>) return pown_mpfi(x, n);
   else if constexpr (std::is_same_v<T, dd>) return ::npwr(x, n);

@@ -264,6 +264,7 @@ template <Scalar T> bool is_finite(const T& x) {
 /// A double near x (its midpoint for intervals): for choices and messages, never for results.
 template <Scalar T> double approx_double(const T& x) {
   if constexpr (std::is_same_v<T, dd>) return x.x[0];
+  else if constexpr (std::is_same_v<bound_t<T>, dd>) return mid(x).x[0];  // a dual of dd
   else return static_cast<double>(mid(x));
 }
 

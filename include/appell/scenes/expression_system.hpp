@@ -461,22 +461,23 @@ void expression_constraints<T>::point_velocity_row(const typename compiled_syste
 
 /// The speeds numbered in `solved` computed from the constraints at (q, t)
 /// (A_b u_b = a - A_f u_f, verified for interval types), the others as given in u.
-template <Scalar T>
-void solve_dependent_speeds(const compiled_system<T>& c, const vector_t<T>& q, vector_t<T>& u, const T& t,
+/// S: T, or multi_dual numbers of T (then the solved speeds carry their derivatives).
+template <Scalar T, class S>
+void solve_dependent_speeds(const compiled_system<T>& c, const vector_t<S>& q, vector_t<S>& u, const S& t,
                             const std::vector<int>& solved) {
   const int s = static_cast<int>(c.constraints.size()), n = c.def->vars.speeds;
-  matrix_t<T> A(s, n);
-  vector_t<T> a(s);
-  expression_constraints<T>{&c}.template eval<T>(q, t, A, a);
-  matrix_t<T> Ab(s, s);
-  vector_t<T> rhs = a;
+  matrix_t<S> A(s, n);
+  vector_t<S> a(s);
+  expression_constraints<T>{&c}.template eval<S>(q, t, A, a);
+  matrix_t<S> Ab(s, s);
+  vector_t<S> rhs = a;
   for (int r = 0; r < s; ++r)
     for (int j = 0; j < n; ++j) {
       const auto at = std::find(solved.begin(), solved.end(), j);
       if (at != solved.end()) Ab(r, static_cast<Eigen::Index>(at - solved.begin())) = A(r, j);
       else rhs(r) -= A(r, j) * u(j);
     }
-  const vector_t<T> ub = solve(Ab, rhs);
+  const vector_t<S> ub = solve(Ab, rhs);
   for (std::size_t k = 0; k < solved.size(); ++k) u(solved[k]) = ub(static_cast<Eigen::Index>(k));
 }
 

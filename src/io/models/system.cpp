@@ -447,6 +447,115 @@ system_input system_model::read(object_reader& scene) {
   in.t = state.has("t") ? state.number("t") : decimal_field{"0", state.path("t")};
   state.finish();
 
+  // The linearization (optional): about the state with "about" applied.
+  if (scene.has("linearize")) {
+    object_reader lr = scene.object("linearize");
+    linearize_input li;
+    linearize_definition& L = li.def;
+    auto coordinate_index = [&](const std::string& name, const std::string& where) {
+      const auto it = std::find(coordinates.begin(), coordinates.end(), name);
+      if (it == coordinates.end()) throw input_error(where + ": '" + printable(name) + "' is not a coordinate");
+      return static_cast<int>(it - coordinates.begin());
+    };
+    auto is_solved = [&](int j) { return std::find(in.solved.begin(), in.solved.end(), j) != in.solved.end(); };
+    if (!def.rates_as_speeds)
+      throw input_error(scene.path("linearize") + ": needs the coordinates' rates as the speeds (no \"speeds\")");
+    if (!def.constraints.empty() && in.solved.empty())
+      throw input_error(scene.path("linearize") + ": a constrained system needs solve_speeds (the speeds that follow "
+                                                  "the linearized ones)");
+    for (const std::string& name : name_list(lr.raw("coordinates"), lr.path("coordinates"))) {
+      const int i = coordinate_index(name, lr.path("coordinates"));
+      if (std::find(L.coordinates.begin(), L.coordinates.end(), i) != L.coordinates.end())
+        throw input_error(lr.path("coordinates") + ": '" + name + "' twice");
+      if (is_solved(i))
+        throw input_error(lr.path("coordinates") + ": " + speeds[static_cast<std::size_t>(i)] +
+                          " is in solve_speeds (a linearized coordinate's rate is given)");
+      L.coordinates.push_back(i);
+    }
+    if (L.coordinates.empty()) throw input_error(lr.path("coordinates") + ": name at least one coordinate");
+    require_at_most(L.coordinates.size(), 16, lr.path("coordinates"));
+    {
+      const std::string name = lr.string("speed");
+      const auto it = std::find(speeds.begin(), speeds.end(), name);
+      if (it == speeds.end()) throw input_error(lr.path("speed") + ": '" + printable(name) + "' is not a speed");
+      L.speed = static_cast<int>(it - speeds.begin());
+      if (is_solved(L.speed)) throw input_error(lr.path("speed") + ": '" + name + "' is in solve_speeds (give it)");
+      if (std::find(L.coordinates.begin(), L.coordinates.end(), L.speed) != L.coordinates.end())
+        throw input_error(lr.path("speed") + ": '" + name + "' is the rate of a linearized coordinate");
+    }
+    if (lr.has("gravity")) {
+      const std::string name = lr.string("gravity");
+      const auto it = std::find(def.names.begin(), def.names.begin() + def.vars.parameters, name);
+      if (it == def.names.begin() + def.vars.parameters)
+        throw input_error(lr.path("gravity") + ": '" + printable(name) + "' is not a parameter");
+      L.gravity = static_cast<int>(it - def.names.begin());
+    }
+    for (int j = 0; j < def.vars.speeds; ++j)
+      if (!is_solved(j)) L.free_speeds.push_back(j);
+    // The coordinates the holonomic constraints determine: named, or those they involve
+    // besides the linearized ones.
+    std::set<int> involved;
+    for (std::size_t r = 0; r < def.constraints.size(); ++r) {
+      const auto& k = def.constraints[r];
+      if (!k.holonomic) continue;
+      L.holonomic_rows.push_back(static_cast<int>(r));
+      for (const auto& [i, e] : k.f.dq)
+        if (std::find(L.coordinates.begin(), L.coordinates.end(), i) == L.coordinates.end()) involved.insert(i);
+    }
+    if (lr.has("solve_coordinates")) {
+      for (const std::string& name : name_list(lr.raw("solve_coordinates"), lr.path("solve_coordinates"))) {
+        const int i = coordinate_index(name, lr.path("solve_coordinates"));
+        if (std::find(L.coordinates.begin(), L.coordinates.end(), i) != L.coordinates.end() ||
+            std::find(L.dependent_coordinates.begin(), L.dependent_coordinates.end(), i) != L.dependent_coordinates.end())
+          throw input_error(lr.path("solve_coordinates") + ": '" + name + "' is linearized or named twice");
+        L.dependent_coordinates.push_back(i);
+      }
+    } else {
+      L.dependent_coordinates.assign(involved.begin(), involved.end());
+    }
+    if (L.dependent_coordinates.size() != L.holonomic_rows.size())
+      throw input_error(scene.path("linearize") + ": " + std::to_string(L.holonomic_rows.size()) +
+                        " holonomic constraints involve " + std::to_string(L.dependent_coordinates.size()) +
+                        " other coordinates: name the ones they determine in solve_coordinates");
+    li.q = in.q;
+    li.u = in.u;
+    if (lr.has("about")) {
+      object_reader about = lr.object("about");
+      for (const auto& m : object_value(lr, "about").members) {
+        const auto q = std::find(coordinates.begin(), coordinates.end(), m.key);
+        const auto u = std::find(speeds.begin(), speeds.end(), m.key);
+        if (q != coordinates.end()) li.q[static_cast<std::size_t>(q - coordinates.begin())] = about.number(m.key);
+        else if (u != speeds.end() && !is_solved(static_cast<int>(u - speeds.begin())))
+          li.u[static_cast<std::size_t>(u - speeds.begin())] = about.number(m.key);
+        else
+          throw input_error(about.path(m.key) + ": not a coordinate or a given speed");
+      }
+      about.finish();
+    }
+    if (lr.has("eigenvalues_at")) {
+      const json_value& v = lr.raw("eigenvalues_at");
+      if (v.type != json_value::kind::array) throw input_error(lr.path("eigenvalues_at") + ": expected a list of speeds");
+      require_at_most(v.items.size(), 1000, lr.path("eigenvalues_at"));
+      for (std::size_t i = 0; i < v.items.size(); ++i)
+        li.eigenvalue_speeds.push_back(decimal_text(v.items[i], lr.path("eigenvalues_at") + "[" + std::to_string(i) + "]"));
+    }
+    if (lr.has("critical_speeds")) {
+      object_reader cs = lr.object("critical_speeds");
+      li.from = cs.number("from");
+      li.to = cs.number("to");
+      if (cs.has("steps")) {
+        const decimal_field st = cs.number("steps");
+        if (st.text.empty() || st.text.find_first_not_of("0123456789") != std::string::npos || st.text.size() > 5 ||
+            std::stoi(st.text) < 1 || std::stoi(st.text) > 10000)
+          throw input_error(cs.path("steps") + ": expected an integer from 1 to 10000");
+        li.steps = std::stoi(st.text);
+      }
+      cs.finish();
+    }
+    lr.finish();
+    in.linearize = std::move(li);
+  }
+
   {  // the result names must be distinct
     std::set<std::string> results(in.acceleration_names.begin(), in.acceleration_names.end());
     for (const auto& k : def.constraints)
@@ -555,6 +664,25 @@ system_input system_model::read(object_reader& scene) {
           for (int j = 0; j < n; ++j) A(r2, j) -= f * A(r, j);
         }
       }
+    }
+    if (in.linearize) {  // the reference motion on the holonomic constraints; a nonzero speed; a range
+      const linearize_input& li = *in.linearize;
+      vector_t<mpfi> ql(d.vars.coordinates);
+      for (int i = 0; i < d.vars.coordinates; ++i) ql(i) = value<mpfi>(li.q[static_cast<std::size_t>(i)]);
+      const std::vector<mpfi> lv = sys.evaluate(sys.constraint_tape, sys.variables(ql, vector_t<mpfi>(vector_t<mpfi>::Zero(d.vars.speeds)), t));
+      for (int r : li.def.holonomic_rows) {
+        const mpfi f = sys.constraints[static_cast<std::size_t>(r)].f.value.at(lv.data());
+        if (!possibly_zero(f))
+          throw input_error("linearize.about: constraint " + d.constraints[static_cast<std::size_t>(r)].name +
+                            " does not hold: f(q, t) = " + to_string(f));
+      }
+      const decimal_field& v = li.u[static_cast<std::size_t>(li.def.speed)];
+      if (possibly_zero(value<mpfi>(v)))
+        throw input_error(v.path + ": the reference speed must not be 0 (K2 and C1 come from the motion at that speed)");
+      if (li.from && !certainly_less(value<mpfi>(*li.from), value<mpfi>(*li.to)))
+        throw input_error("linearize.critical_speeds: from must be less than to");
+      if (li.def.gravity >= 0 && possibly_zero(sys.parameters[static_cast<std::size_t>(li.def.gravity)]))
+        throw input_error("linearize.gravity: the parameter is 0 (K0 is the stiffness per unit g)");
     }
   } catch (const certification_error& e) {
     throw input_error(std::string(e.what()) + " (within 2^-256 of it: taken as exact)");

@@ -8,13 +8,24 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "appell/io/model.hpp"
 #include "appell/scenes/expression_system.hpp"
+#include "appell/scenes/linearize.hpp"
 
 namespace appell {
+
+/// The file's "linearize" section (`appell linearize`).
+struct linearize_input {
+  linearize_definition def;
+  std::vector<decimal_field> q, u;               ///< the reference motion: the state with "about" applied
+  std::vector<decimal_field> eigenvalue_speeds;  ///< where to enclose the eigenvalues (default: the reference speed)
+  std::optional<decimal_field> from, to;         ///< where to look for critical speeds (default 0 to twice the reference speed)
+  int steps = 200;                               ///< grid intervals of that search
+};
 
 struct system_input : model_input {
   std::shared_ptr<const system_definition> def;
@@ -22,6 +33,7 @@ struct system_input : model_input {
   decimal_field t;                  ///< the time (default 0)
   std::vector<int> solved;          ///< speeds computed from the constraints (solve_speeds)
   std::vector<std::string> acceleration_names;  ///< per speed: q_ddot (rates) or u_dot
+  std::optional<linearize_input> linearize;     ///< the "linearize" section, if any
 };
 
 struct system_model {
@@ -65,5 +77,30 @@ struct system_model {
 };
 
 APPELL_EXTERN_MODEL(system_model)
+
+/// `appell linearize`: a system file's linearized equations about the motion
+/// its "linearize" section names, their eigenvalues at the speeds it lists, and
+/// the speeds where a real part crosses 0 (scenes/linearize.hpp), in T.
+template <Scalar T>
+struct linearization_report {
+  linearized_equations<T> equations;
+  std::vector<std::string> speed_texts;  ///< where the eigenvalues are enclosed
+  std::vector<std::vector<root_enclosure<T>>> spectra;
+  bound_t<T> from{}, to{};  ///< the critical speeds' search range and grid
+  int steps = 0;
+  std::vector<critical_speed<T>> critical;
+};
+
+/// The report in T (under T's evaluation policy; results rounded outward as
+/// `eval`'s).  input_error without a "linearize" section; certification_error
+/// when the equations are not of the benchmark form (interval types decide it).
+template <Scalar T>
+linearization_report<T> linearize_scene(const system_input& in);
+
+// Instantiated once per standard scalar, each in a unit of its own (CMakeLists.txt).
+#define APPELL_DETAIL_EXTERN_LINEARIZE(ctx, T, name) \
+  extern template linearization_report<T> linearize_scene<T>(const system_input&);
+APPELL_STANDARD_SCALARS(APPELL_DETAIL_EXTERN_LINEARIZE, )
+#undef APPELL_DETAIL_EXTERN_LINEARIZE
 
 }  // namespace appell

@@ -1,0 +1,28 @@
+// appell linearize SCENE [--scalar NAME] [--bits N] [--format json|text]:
+// the linearized equations of a system file about the steady motion its
+// "linearize" section names (SCENES.md), with the eigenvalues and the speeds
+// where an eigenvalue's real part crosses 0 (scenes/linearize.hpp).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "appell/io/models/system.hpp"
+
+namespace appell::cli {
+
+struct linearize_options {
+  std::string scene;
+  std::string scalar = "double";
+  std::optional<unsigned> bits;
+  std::string format = "json";
+};
+
+/// The report in scalar T, formatted (linearize_report.hpp).
+template <Scalar T>
+std::string linearize_report(const system_input& in, const std::string& format);
+
+/// Reads the scene and prints the report; the exit status of the one-line contract.
+std::string linearize(const linearize_options& o);
+
+}  // namespace appell::cli
