@@ -736,3 +736,208 @@ BOOST_AUTO_TEST_CASE(point_velocity_and_solve_speeds_give_the_hand_written_disk)
   expect_refused(replace(pv, R"~("direction": ["1", "0", "0"])~", R"~("direction": ["0", "0", "x"])~"),
                  "direction: 0 at the state");
 }
+
+// --- constraint wrenches -------------------------------------------------------
+namespace {
+/// The rolling disk with the wrench of its three constraints at the contact point.
+std::string disk_with_wrench() {
+  std::ifstream f(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk_contact.json");
+  return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+}
+}  // namespace
+
+// The wrench that the ground exerts on the rolling disk (its three constraints
+// gathered at the contact point P, from their virtual work: Cotton sec. 5) is
+// Newton-Euler's: F = m a_G - m g, and about P, M_P = dH_G/dt + (G - P) x F with
+// dH_G/dt = R (I alpha + omega x I omega) (body axes; R = rz(psi) rx(theta) ry(phi)).
+// At 256 bits the two enclosures meet and are narrow; every scalar then holds or
+// approaches the 256-bit values.
+BOOST_AUTO_TEST_CASE(a_contact_wrench_is_newtons_second_law_for_the_rolling_disk) {
+  const scene_input scene = read_scene(parse_json(disk_with_wrench()));
+  const system_input& in = scene.as<system_input>();
+  std::vector<std::pair<ref_t, ref_t>> ref;  // force, then moment
+  ref_t scale = 0;
+  {
+    const mp_precision_scope bits(256);
+    using T = mpfi;
+    const evaluation<T> e = evaluate<T>(scene);
+    const auto p = system_model::prepare<T>(in);
+    const std::vector<body_kinematics<T>> kin = differentiate_kinematics(expression_system<T>{&p.sys}, p.q, p.u, p.t);
+    BOOST_TEST_REQUIRE(kin.size() == 1u);
+    vector_t<T> ud(6);
+    for (int j = 0; j < 6; ++j) ud(j) = e.results[static_cast<std::size_t>(j)].values[0];  // x .. phi, _ddot
+    const T m = from_decimal<T>("2"), a = from_decimal<T>("0.3"), g = from_decimal<T>("9.81");
+    const vec3<T> F(m * ud(0), m * ud(1), m * (ud(2) + g));
+    const body_kinematics<T>& B = kin[0];
+    vec3<T> alpha = B.cw;
+    for (int c = 0; c < 6; ++c)
+      for (int i = 0; i < 3; ++i) alpha(i) += B.Jw(i, c) * ud(c);
+    const vec3<T> Mb = vec3<T>(mat_vec(B.state.inertia, alpha) + cross(B.state.omega, mat_vec(B.state.inertia, B.state.omega)));
+    const T psi = p.q(3), theta = p.q(4), phi = p.q(5);
+    auto rot = [](int axis, const T& x) {
+      mat3<T> r = mat3<T>::Identity();
+      const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+      r(i, i) = cos(x), r(j, j) = cos(x), r(i, j) = -sin(x), r(j, i) = sin(x);
+      return r;
+    };
+    const mat3<T> Rzx = rot(2, psi) * rot(0, theta), R = Rzx * rot(1, phi);
+    const vec3<T> Mg = mat_vec(R, Mb);
+    const vec3<T> GP(a * sin(psi) * sin(theta), -a * cos(psi) * sin(theta), a * cos(theta));
+    const vec3<T> MP = vec3<T>(Mg + cross(GP, F));
+    const named_result<T>& force = e.result("contact_force");
+    const named_result<T>& moment = e.result("contact_moment");
+    BOOST_TEST_REQUIRE(force.values.size() == 3u);
+    for (int i = 0; i < 6; ++i) {
+      const T& got = (i < 3 ? force : moment).values[static_cast<std::size_t>(i % 3)];
+      const T want = i < 3 ? F(i) : MP(i - 3);
+      const auto [glo, ghi] = bounds_of(got);
+      const auto [wlo, whi] = bounds_of(want);
+      BOOST_TEST((glo <= whi && wlo <= ghi), "component " << i << ": " << to_string(got) << " against Newton-Euler "
+                                                          << to_string(want));
+      BOOST_TEST(ghi - glo <= ref_t("1e-60"), "component " << i << " wide: " << to_string(got));
+      ref.push_back({glo, ghi});
+      scale = std::max(scale, std::max(abs(glo), abs(ghi)));
+    }
+    BOOST_TEST_MESSAGE("disk contact force " << to_string(force.values[0]) << " " << to_string(force.values[1]) << " "
+                                             << to_string(force.values[2]));
+    const auto [rlo, rhi] = bounds_of(e.check("contact_virtual_work").values[0]);
+    BOOST_TEST((rlo <= 0 && rhi >= 0 && rhi <= ref_t("1e-60")), "residual " << rhi);
+  }
+  for (const auto& [name, bits] : {std::pair<std::string, std::optional<unsigned>>{"double", {}}, {"long-double", {}},
+                                   {"dd", {}}, {"float128", {}}, {"mpfr", 113u}, {"interval", {}}, {"mpfi", 113u}})
+    with_scalar(name, bits, [&]<class T>(std::type_identity<T>) {
+      const evaluation<T> e = evaluate<T>(scene);
+      const ref_t ulp = pow(ref_t(2), 1 - static_cast<int>(scalar_traits<T>::precision_bits()));
+      ref_t worst = 0;
+      for (int i = 0; i < 6; ++i) {
+        const auto b = bounds_of(e.result(i < 3 ? "contact_force" : "contact_moment").values[static_cast<std::size_t>(i % 3)]);
+        const auto& r = ref[static_cast<std::size_t>(i)];
+        if constexpr (scalar_traits<T>::is_interval) {
+          BOOST_TEST((b.first <= r.first && r.second <= b.second), name << " component " << i << " misses");
+          worst = std::max(worst, ref_t((b.second - b.first) / (ulp * scale)));
+        } else {
+          worst = std::max(worst, ref_t(distance(b.first, r) / (ulp * scale)));
+        }
+      }
+      if constexpr (scalar_traits<T>::is_interval) {
+        const auto [lo, hi] = bounds_of(e.check("contact_virtual_work").values[0]);
+        BOOST_TEST((lo <= 0 && hi >= 0), name << ": the wrench's virtual work check excludes 0");
+      } else {
+        const double amplification = approx_double(e.check("error_amplification").values[0]);
+        BOOST_TEST(worst <= 16 * amplification, name << ": " << worst << " x 2^(1-p) x scale, amplification " << amplification);
+      }
+      BOOST_TEST_MESSAGE("disk contact wrench in " << name << ": " << (scalar_traits<T>::is_interval ? "widest" : "worst error")
+                                                   << " " << worst.str(3) << " x 2^(1-p) x " << scale.str(3));
+      return 0;
+    });
+  // Bad input: names, points, and wrenches their virtual work does not fix.
+  const std::string w = disk_with_wrench();
+  expect_refused(replace(w, R"~("body": "disk", "constraints")~", R"~("body": "wheel", "constraints")~"),
+                 "wrenches.contact.body: no body named 'wheel'");
+  expect_refused(replace(w, R"~("ground", "roll_x", "roll_y"])~", R"~("ground", "slide"])~"),
+                 "wrenches.contact.constraints: no constraint named 'slide'");
+  expect_refused(replace(w, R"~("ground", "roll_x", "roll_y"])~", R"~("ground", "ground"])~"), "'ground' twice");
+  expect_refused(replace(w, R"~(["ground", "roll_x", "roll_y"])~", "[]"), "name at least one constraint");
+  expect_refused(replace(w, R"~("x - a*sin(psi)*sin(theta)")~", R"~("x_dot")~"), "point[0]: depends on the speeds");
+  expect_refused(replace(w, R"~("wrenches": {"contact")~", R"~("wrenches": {"rim": {"body": "disk", "constraints": ["ground"]}, "contact")~"),
+                 "wrenches.rim.point: missing");
+  // a bead with a constraint of its own: the constraint does no work on the disk
+  std::string bead = replace(replace(replace(w, R"~("coordinates": ["x",)~", R"~("coordinates": ["s", "x",)~"),
+                                     R"~("bodies": {)~", R"~("bodies": {"bead": {"mass": "1", "center": ["s", "0", "0"]}, )~"),
+                             R"~("constraints": {)~", R"~("constraints": {"hold": {"nonholonomic": "s_dot"}, )~");
+  bead = replace(replace(bead, R"~("state": {)~", R"~("state": {"s": "0", "s_dot": "0", )~"),
+                 R"~(["ground", "roll_x", "roll_y"])~", R"~(["ground", "hold"])~");
+  expect_refused(bead, "wrenches.contact.constraints: hold is not a constraint on disk alone");
+  BOOST_TEST(refusal(replace(bead, R"~(["ground", "hold"])~", R"~(["ground"])~")) == "");
+  expect_refused(replace(bead, R"~("body": "disk", "constraints")~", R"~("body": "bead", "constraints")~"),
+                 "a wrench needs a body with an orientation");
+  // the top on its cone turns about a fixed point: 3 speeds cannot fix a force and a couple
+  std::ifstream f(APPELL_SOURCE_DIR "/data/scenes/system_top_on_cone.json");
+  const std::string top((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  expect_refused(replace(top, R"~( "state":)~",
+                         R"~( "wrenches": {"pin": {"body": "top", "constraints": ["cone"], "point": ["0", "0", "0"]}}, "state":)~"),
+                 "wrenches.pin.body: the speeds move top in fewer than 6 independent ways");
+}
+
+// --- orientation as a matrix ---------------------------------------------------
+namespace {
+std::string scene_text(const std::string& file) {
+  std::ifstream f(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
+  return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+}
+// rz(psi) rx(theta) rz(phi) multiplied out, row by row
+const std::string top_matrix =
+    R"~([["cos(psi)*cos(phi) - sin(psi)*cos(theta)*sin(phi)", "-cos(psi)*sin(phi) - sin(psi)*cos(theta)*cos(phi)", "sin(psi)*sin(theta)"],
+        ["sin(psi)*cos(phi) + cos(psi)*cos(theta)*sin(phi)", "-sin(psi)*sin(phi) + cos(psi)*cos(theta)*cos(phi)", "-cos(psi)*sin(theta)"],
+        ["sin(theta)*sin(phi)", "sin(theta)*cos(phi)", "cos(theta)"]])~";
+}  // namespace
+
+// The top on its cone with its orientation written as the matrix of
+// rz(psi) rx(theta) rz(phi): the same results as with the rotations (every
+// result; intervals meet, point types agree to within their precision), and
+// matrices that are not rotations are refused.
+BOOST_AUTO_TEST_CASE(an_orientation_matrix_gives_the_rotations_results) {
+  const std::string rotations = scene_text("system_top_on_cone.json");
+  const std::string matrix = replace(rotations, R"~("rz(psi) rx(theta) rz(phi)")~", top_matrix);
+  BOOST_TEST_REQUIRE(refusal(matrix) == "", refusal(matrix));
+  for (const auto& [name, bits] : {std::pair<std::string, std::optional<unsigned>>{"double", {}}, {"long-double", {}},
+                                   {"dd", {}}, {"float128", {}}, {"mpfr", 113u}, {"interval", {}}, {"mpfi", 113u}, {"mpfi", 256u}})
+    with_scalar(name, bits, [&]<class T>(std::type_identity<T>) {
+      const evaluation<T> a = evaluate<T>(read_scene(parse_json(rotations))), b = evaluate<T>(read_scene(parse_json(matrix)));
+      const ref_t ulp = pow(ref_t(2), 1 - static_cast<int>(scalar_traits<T>::precision_bits()));
+      ref_t worst = 0;
+      BOOST_TEST_REQUIRE(a.results.size() == b.results.size());
+      for (std::size_t k = 0; k < a.results.size(); ++k) {
+        const auto [alo, ahi] = bounds_of(a.results[k].values[0]);
+        const auto [blo, bhi] = bounds_of(b.result(a.results[k].name).values[0]);
+        const ref_t scale = std::max(ref_t(1), std::max(abs(alo), abs(ahi)));
+        if constexpr (scalar_traits<T>::is_interval) {
+          BOOST_TEST((alo <= bhi && blo <= ahi), name << " " << a.results[k].name << ": " << to_string(a.results[k].values[0])
+                                                      << " against " << to_string(b.result(a.results[k].name).values[0]));
+          worst = std::max(worst, ref_t((bhi - blo) / std::max(ahi - alo, ulp * scale)));
+        } else {
+          worst = std::max(worst, ref_t(abs(alo - blo) / (ulp * scale)));
+        }
+      }
+      if constexpr (!scalar_traits<T>::is_interval) {
+        const double amplification = std::max(approx_double(a.check("error_amplification").values[0]),
+                                              approx_double(b.check("error_amplification").values[0]));
+        BOOST_TEST(worst <= 16 * amplification, name << ": " << worst << " x 2^(1-p), amplification " << amplification);
+      }
+      BOOST_TEST_MESSAGE("top on its cone, orientation as a matrix, in " << name << ": "
+                         << (scalar_traits<T>::is_interval ? "widest ratio of widths " : "largest difference ")
+                         << worst.str(3) << (scalar_traits<T>::is_interval ? "" : " x 2^(1-p) x scale"));
+      return 0;
+    });
+  // not a rotation: scaled, a reflection, orthogonal at the state only; malformed
+  expect_refused(replace(matrix, R"~("cos(theta)"]])~", R"~("2*cos(theta)"]])~"), "orientation: not orthogonal at the state");
+  expect_refused(replace(replace(replace(matrix, R"~("sin(psi)*sin(theta)"],)~", R"~("-sin(psi)*sin(theta)"],)~"),
+                                 R"~("-cos(psi)*sin(theta)"],)~", R"~("cos(psi)*sin(theta)"],)~"),
+                         R"~("cos(theta)"]])~", R"~("-cos(theta)"]])~"),
+                 "its determinant is");
+  // an entry that moves with psi - psi0: orthogonal at the state, not a rotation nearby
+  const std::string frozen = replace(matrix, R"~(["sin(theta)*sin(phi)",)~",
+      R"~(["sin(theta)*sin(phi) + (psi - 0.44854497299884601806594745788060975173562616723473656319402189456008415289583389081854999506409)",)~");
+  expect_refused(frozen, "not a rotation near the state (R^T dR/dpsi is not skew-symmetric)");
+  expect_refused(replace(matrix, R"~(["sin(theta)*sin(phi)", "sin(theta)*cos(phi)", "cos(theta)"])~", R"~(["0", "1"])~"),
+                 "orientation[2]: expected a row of 3 expressions");
+  expect_refused(replace(matrix, R"~(["sin(theta)*sin(phi)", "sin(theta)*cos(phi)", "cos(theta)"])~",
+                         R"~(["sin(theta)*sin(phi)", "theta_dot", "cos(theta)"])~"),
+                 "orientation[2][1]: depends on the speeds");
+  // point velocities and wrenches need the rotations
+  const std::string disk = replace(disk_with_wrench(), R"~("rz(psi) rx(theta) ry(phi)")~",
+      R"~([["cos(psi)*cos(phi) - sin(psi)*sin(theta)*sin(phi)", "-sin(psi)*cos(theta)", "cos(psi)*sin(phi) + sin(psi)*sin(theta)*cos(phi)"],
+          ["sin(psi)*cos(phi) + cos(psi)*sin(theta)*sin(phi)", "cos(psi)*cos(theta)", "sin(psi)*sin(phi) - cos(psi)*sin(theta)*cos(phi)"],
+          ["-cos(theta)*sin(phi)", "sin(theta)", "cos(theta)*cos(phi)"]])~");
+  expect_refused(disk, "wrenches.contact.body: a wrench needs the body's orientation as a product of rotations");
+  // without the wrench the disk as a matrix is the disk
+  const std::string plain = replace(disk, disk.substr(disk.find(" \"wrenches\""), disk.find(" \"state\"") - disk.find(" \"wrenches\"")), "");
+  BOOST_TEST_REQUIRE(refusal(plain) == "", refusal(plain));
+  const mp_precision_scope bits(256);
+  const evaluation<mpfi> a = evaluate<mpfi>(load("system_rolling_disk.json")), b = evaluate<mpfi>(read_scene(parse_json(plain)));
+  for (const auto& r : a.results) {
+    const auto [alo, ahi] = bounds_of(r.values[0]);
+    const auto [blo, bhi] = bounds_of(b.result(r.name).values[0]);
+    BOOST_TEST((alo <= bhi && blo <= ahi && bhi - blo <= ref_t("1e-60")), "disk as a matrix: " << r.name);
+  }
+}

@@ -109,6 +109,10 @@ systems = {
 systems["point-velocity-no-body"] = (["constraints", "roll_x"], {"point_velocity": {"body": "wheel", "point": ["x", "y", "0"], "direction": ["1", "0", "0"]}})
 systems["point-velocity-zero-direction"] = (["constraints", "roll_x"], {"point_velocity": {"body": "disk", "point": ["x", "y", "0"], "direction": ["0", "0", "0"]}})
 systems["solve-speeds-singular"] = (["solve_speeds"], ["x_dot", "x_dot", "y_dot"])
+systems["wrench-no-body"] = (["wrenches"], {"w": {"body": "wheel", "point": ["x", "y", "0"], "constraints": ["ground"]}})
+systems["wrench-other-constraint"] = (["wrenches"], {"w": {"body": "disk", "point": ["x", "y", "0"], "constraints": ["slide"]}})
+systems["orientation-matrix-scaled"] = (["bodies", "disk", "orientation"], [["2", "0", "0"], ["0", "1", "0"], ["0", "0", "1"]])
+systems["orientation-matrix-rows"] = (["bodies", "disk", "orientation"], [["1", "0", "0"], ["0", "1"]])
 for name, (path, value) in systems.items():
     put(scene_dir, "system-" + name, with_field(disk, path, value))
 print("seeds written to", root)

@@ -13,6 +13,8 @@
 //     omega = sum_m a_m' R_1 ... R_(m-1) e_(axis m)  for the orientation
 //             R = R_1(a_1) R_2(a_2) ... (elementary rotations about x, y, z
 //             by angles a_m(q, t), composed left to right, body axes to fixed),
+//             or, for an orientation given as a matrix R(q, t), the vector of the
+//             skew matrix R' R^T (on the body's axes: of R^T R'),
 //     force = mass g + F,  couple Gamma;
 //   a body that turns is given to the generic path on its own axes (a frame
 //   turning with omega; components R^T x, each R_m^T applied in turn, so the
@@ -28,6 +30,8 @@
 // Their reactions are Cotton's Q'_c in speeds adapted with v_c = A u - a, equal
 // to the Lagrange multipliers of those rows (both are computed; the scene's
 // checks carry the difference).
+// A wrench (system_wrench_definition) gathers some constraints' reactions into a
+// force at a point of one body and a couple, from their virtual work.
 #pragma once
 
 #include <algorithm>
@@ -70,6 +74,9 @@ struct system_body_definition {
   std::array<shared_expression, 6> inertia;  ///< central, on body axes: xx yy zz xy yz zx (null: 0)
   std::array<differentiated_expression, 3> center;  ///< G on the fixed axes
   std::vector<std::pair<int, differentiated_expression>> rotations;  ///< (axis 0/1/2, angle), left to right
+  /// Or the orientation as a matrix R (body axes to fixed), row by row: R(q, t) orthogonal, det 1.
+  std::array<differentiated_expression, 9> matrix;
+  bool has_matrix = false;
   std::array<shared_expression, 3> force, couple;  ///< force through G and couple (null: 0), on the body's axes
   /// Given instead of an orientation: the angular velocity (affine in u), on
   /// the fixed axes (an isotropic inertia: its orientation plays no part), or
@@ -92,6 +99,21 @@ struct system_constraint_definition {
   std::array<shared_expression, 3> point, direction;
 };
 
+/// The wrench that some constraints exert on one body, reduced to a point of
+/// it: a force F at P and a couple M (the moment about P), on the fixed axes,
+/// fixed by the constraints' virtual work (Cotton sec. 5, end):
+///   J_P^T F + J_w^T M = sum_c A_c^T Q'_c   for every virtual displacement,
+/// J_P, J_w the velocity of the body's material point at P and its angular
+/// velocity per unit of each speed.  Unique when the body moves in 6
+/// independent ways (J of rank 6); a wrench when each constraint's row A_c is
+/// a virtual power of that body alone (checked when the file is read).
+struct system_wrench_definition {
+  std::string name;
+  int body = -1;
+  std::array<shared_expression, 3> point;  ///< P on the fixed axes, a function of q and t
+  std::vector<int> constraints;            ///< the constraints whose reactions it gathers
+};
+
 /// A whole system file's mechanics, independent of any scalar.
 struct system_definition {
   system_variables vars;
@@ -104,6 +126,7 @@ struct system_definition {
   std::array<shared_expression, 3> gravity;    ///< null: none
   std::vector<system_body_definition> bodies;
   std::vector<system_constraint_definition> constraints;
+  std::vector<system_wrench_definition> wrenches;
 };
 
 namespace detail {
@@ -150,8 +173,9 @@ struct compiled_system {
     std::array<detail::compiled_term<T>, 6> inertia;
     std::array<detail::compiled_differentiated<T>, 3> center;
     std::vector<std::pair<int, detail::compiled_differentiated<T>>> rotations;
+    std::array<detail::compiled_differentiated<T>, 9> matrix;
     std::array<detail::compiled_term<T>, 3> force, couple, omega, velocity;
-    bool has_omega = false, body_axes = false;
+    bool has_omega = false, body_axes = false, has_matrix = false;
     bool has_inertia = false;
     bool isotropic = false;  ///< inertia a multiple of the identity, as written (then R I R^T = I)
     template <class S>
@@ -172,6 +196,12 @@ struct compiled_system {
     std::vector<std::pair<int, detail::compiled_differentiated<T>>> rotations;
     std::array<detail::compiled_term<T>, 3> point, direction;
   };
+  struct wrench {  ///< on the constraint tape
+    int body = -1;
+    std::array<detail::compiled_differentiated<T>, 3> center;
+    std::vector<std::pair<int, detail::compiled_differentiated<T>>> rotations;
+    std::array<detail::compiled_term<T>, 3> point;
+  };
   const system_definition* def = nullptr;
   std::vector<T> parameters;  ///< values in T
   /// Three tapes, each evaluated in one pass: what bodies() needs, what qdot()
@@ -182,6 +212,7 @@ struct compiled_system {
   std::array<detail::compiled_term<T>, 3> gravity;
   std::vector<body> bodies;
   std::vector<constraint> constraints;
+  std::vector<wrench> wrenches;
 
   explicit compiled_system(const system_definition& d) : def(&d) {
     parameters.assign(d.parameters.size(), T(0));
@@ -215,6 +246,9 @@ struct compiled_system {
       }
       for (const auto& [axis, angle] : b.rotations)
         c.rotations.emplace_back(axis, detail::compiled_differentiated<T>(tape, angle));
+      c.has_matrix = b.has_matrix;
+      if (b.has_matrix)
+        for (std::size_t k = 0; k < 9; ++k) c.matrix[k] = detail::compiled_differentiated<T>(tape, b.matrix[k]);
       c.has_omega = b.has_omega;
       c.body_axes = b.body_axes;
       for (const auto& e : b.inertia) c.has_inertia = c.has_inertia || bool(e);
@@ -241,6 +275,18 @@ struct compiled_system {
           c.rotations.emplace_back(axis, detail::compiled_differentiated<T>(constraint_tape, angle));
       }
       constraints.push_back(std::move(c));
+    }
+    for (const auto& w : d.wrenches) {
+      wrench c;
+      c.body = w.body;
+      const system_body_definition& b = d.bodies[static_cast<std::size_t>(w.body)];
+      for (std::size_t i = 0; i < 3; ++i) {
+        c.center[i] = detail::compiled_differentiated<T>(constraint_tape, b.center[i]);
+        c.point[i] = detail::compiled_term<T>(constraint_tape, w.point[i]);
+      }
+      for (const auto& [axis, angle] : b.rotations)
+        c.rotations.emplace_back(axis, detail::compiled_differentiated<T>(constraint_tape, angle));
+      wrenches.push_back(std::move(c));
     }
   }
 
@@ -305,6 +351,37 @@ struct expression_system {
         if (b.has_omega) s.omega(i) = b.omega[k].at(v);
       }
       if (b.body_axes) s.frame_rate = s.omega;  // the body's own axes turn with it
+      if (b.has_matrix) {
+        // R and R' = sum_i dR/dq_i q'_i + dR/dt; omega from the skew matrices R' R^T (fixed
+        // axes, for an isotropic inertia) or R^T R' (the body's axes, turning with omega).
+        mat3<S> R, Rd;
+        for (int k = 0; k < 9; ++k) {
+          const auto& e = b.matrix[static_cast<std::size_t>(k)];
+          R(k / 3, k % 3) = e.value.at(v);
+          Rd(k / 3, k % 3) = e.rate(v, qd);
+        }
+        auto contract = [](const mat3<S>& X, const mat3<S>& Y, bool rows, int i, int j) {  // (X Y^T)(i,j) or (X^T Y)(i,j)
+          S r = S(0);
+          for (int k = 0; k < 3; ++k) r += rows ? X(i, k) * Y(j, k) : X(k, i) * Y(k, j);
+          return r;
+        };
+        if (b.isotropic) {
+          s.omega = vec3<S>(contract(Rd, R, true, 2, 1), contract(Rd, R, true, 0, 2), contract(Rd, R, true, 1, 0));
+        } else {
+          s.omega = vec3<S>(contract(R, Rd, false, 2, 1), contract(R, Rd, false, 0, 2), contract(R, Rd, false, 1, 0));
+          vec3<S> vb, fb, cb;
+          for (int i = 0; i < 3; ++i) {
+            vb(i) = R(0, i) * s.velocity(0) + R(1, i) * s.velocity(1) + R(2, i) * s.velocity(2);
+            fb(i) = R(0, i) * s.force(0) + R(1, i) * s.force(1) + R(2, i) * s.force(2);
+            cb(i) = R(0, i) * s.couple(0) + R(1, i) * s.couple(1) + R(2, i) * s.couple(2);
+          }
+          s.velocity = vb, s.force = fb, s.couple = cb;
+          s.frame_rate = s.omega;
+        }
+        if (b.has_inertia) s.inertia = b.inertia_on_body_axes(v);
+        out.push_back(s);
+        continue;
+      }
       if (b.rotations.empty()) {  // a particle, a body that does not turn, or one given by omega
         if (b.has_inertia) s.inertia = b.inertia_on_body_axes(v);
         out.push_back(s);
@@ -399,6 +476,29 @@ struct expression_constraints {
   }
 };
 
+namespace detail {
+/// The axes e'_m = R_1 ... R_(m-1) e_(axis m) of an orientation's elementary
+/// rotations, on the fixed axes (the angular velocity is sum_m a_m' e'_m).
+template <Scalar T, class S>
+std::vector<vec3<S>> rotation_axes(const std::vector<std::pair<int, compiled_differentiated<T>>>& rotations,
+                                   const S* v) {
+  std::vector<vec3<S>> axes;
+  mat3<S> R = mat3<S>::Identity();
+  for (const auto& [axis, angle] : rotations) {
+    axes.push_back(vec3<S>(R.col(axis)));
+    using std::sin, std::cos;
+    const S a0 = angle.value.at(v), ca = cos(a0), sa = sin(a0);
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    for (int row = 0; row < 3; ++row) {  // R <- R R_axis(a0)
+      const S ri = R(row, i), rj = R(row, j);
+      R(row, i) = ri * ca + rj * sa;
+      R(row, j) = rj * ca - ri * sa;
+    }
+  }
+  return axes;
+}
+}  // namespace detail
+
 template <Scalar T>
 template <class S>
 void expression_constraints<T>::point_velocity_row(const typename compiled_system<T>::constraint& k, const S* v,
@@ -413,20 +513,7 @@ void expression_constraints<T>::point_velocity_row(const typename compiled_syste
     P(i) = k.point[x].at(v), G(i) = k.center[x].value.at(v), n(i) = k.direction[x].at(v);
   }
   const vec3<S> rel = P - G;
-  // the axes e'_m, from the products of the elementary rotations before each
-  std::vector<vec3<S>> axes;
-  mat3<S> R = mat3<S>::Identity();
-  for (const auto& [axis, angle] : k.rotations) {
-    axes.push_back(vec3<S>(R.col(axis)));
-    using std::sin, std::cos;
-    const S a0 = angle.value.at(v), ca = cos(a0), sa = sin(a0);
-    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
-    for (int row = 0; row < 3; ++row) {  // R <- R R_axis(a0)
-      const S ri = R(row, i), rj = R(row, j);
-      R(row, i) = ri * ca + rj * sa;
-      R(row, j) = rj * ca - ri * sa;
-    }
-  }
+  const std::vector<vec3<S>> axes = detail::rotation_axes<T, S>(k.rotations, v);
   // n . c_i for each coordinate, and n . c_t
   std::vector<S> nc(static_cast<std::size_t>(nq), S(0));
   S nct = S(0);
@@ -479,6 +566,104 @@ void solve_dependent_speeds(const compiled_system<T>& c, const vector_t<S>& q, v
     }
   const vector_t<S> ub = solve(Ab, rhs);
   for (std::size_t k = 0; k < solved.size(); ++k) u(solved[k]) = ub(static_cast<Eigen::Index>(k));
+}
+
+/// The twist of a body at its material point P, per unit of each speed, on the
+/// fixed axes (6 x n): rows 0-2 the point's velocity, rows 3-5 the angular
+/// velocity, both linear in q' = W u + w (the w part, and d/dt, left out):
+///   dv_P/dq'_i = dG/dq_i + sum_m da_m/dq_i e'_m x (P - G),   domega/dq'_i = sum_m da_m/dq_i e'_m.
+template <Scalar T, class S>
+matrix_t<S> point_twist_jacobian(const compiled_system<T>& c, const typename compiled_system<T>::wrench& w,
+                                 const S* v) {
+  const int nq = c.def->vars.coordinates, n = c.def->vars.speeds;
+  vec3<S> P, G;
+  for (int i = 0; i < 3; ++i) {
+    const auto x = static_cast<std::size_t>(i);
+    P(i) = w.point[x].at(v), G(i) = w.center[x].value.at(v);
+  }
+  const vec3<S> rel = P - G;
+  const std::vector<vec3<S>> axes = detail::rotation_axes<T, S>(w.rotations, v);
+  matrix_t<S> C = matrix_t<S>::Zero(6, nq);  // per coordinate rate
+  for (int x = 0; x < 3; ++x)
+    for (const auto& [i, d] : w.center[static_cast<std::size_t>(x)].dq) C(x, i) += d.at(v);
+  for (std::size_t m = 0; m < w.rotations.size(); ++m) {
+    const vec3<S> moved = cross(axes[m], rel);
+    for (const auto& [i, d] : w.rotations[m].second.dq) {
+      const S rate = d.at(v);
+      for (int r = 0; r < 3; ++r) {
+        C(r, i) += rate * moved(r);
+        C(3 + r, i) += rate * axes[m](r);
+      }
+    }
+  }
+  if (c.def->rates_as_speeds) return C;
+  matrix_t<S> J = matrix_t<S>::Zero(6, n);
+  for (int i = 0; i < nq; ++i)
+    for (const auto& [j, wij] : c.kinematics_du[static_cast<std::size_t>(i)]) {
+      const S f = wij.at(v);
+      for (int r = 0; r < 6; ++r) J(r, j) += C(r, i) * f;
+    }
+  return J;
+}
+
+/// The normal equations of a wrench's virtual work: N = J J^T (6 x 6) and J g.
+template <class S>
+std::pair<matrix_t<S>, vector_t<S>> wrench_normal_equations(const matrix_t<S>& J, const vector_t<S>& g) {
+  matrix_t<S> N(6, 6);
+  vector_t<S> rhs(6);
+  for (int r = 0; r < 6; ++r) {
+    for (int k = r; k < 6; ++k) {
+      S x = S(0);
+      for (Eigen::Index j = 0; j < J.cols(); ++j) x += J(r, j) * J(k, j);
+      N(r, k) = x;
+      N(k, r) = x;
+    }
+    S y = S(0);
+    for (Eigen::Index j = 0; j < J.cols(); ++j) y += J(r, j) * g(j);
+    rhs(r) = y;
+  }
+  return {N, rhs};
+}
+
+template <Scalar T>
+struct constraint_wrench_result {
+  vec3<T> force;   ///< on the fixed axes, applied at the wrench's point
+  vec3<T> moment;  ///< about that point, on the fixed axes
+  T residual;      ///< |J^T (F; M) - sum_c A_c^T Q'_c|: 0 when the wrench does the constraints' virtual work
+};
+
+/// Each wrench of the system at (q, t), from the constraints' reactions
+/// (Cotton's Q'_c, one per constraint): the unique (F, M) whose virtual power
+/// J_P^T F + J_w^T M is the constraints' generalized force sum_c A_c^T Q'_c
+/// (the normal equations J J^T (F; M) = J g, verified for interval types).
+template <Scalar T>
+std::vector<constraint_wrench_result<T>> constraint_wrenches(const compiled_system<T>& c, const vector_t<T>& q,
+                                                             const T& t, const vector_t<T>& reactions) {
+  std::vector<constraint_wrench_result<T>> out;
+  if (c.wrenches.empty()) return out;
+  const int n = c.def->vars.speeds, s = static_cast<int>(c.constraints.size());
+  const vector_t<T> u0 = vector_t<T>::Zero(n);
+  const std::vector<T> values = c.evaluate(c.constraint_tape, c.template variables<T>(q, u0, t));
+  matrix_t<T> A(s, n);
+  vector_t<T> a(s);
+  expression_constraints<T>{&c}.template eval<T>(q, t, A, a);
+  for (std::size_t k = 0; k < c.wrenches.size(); ++k) {
+    const matrix_t<T> J = point_twist_jacobian(c, c.wrenches[k], values.data());
+    vector_t<T> g = vector_t<T>::Zero(n);
+    for (int r : c.def->wrenches[k].constraints)
+      for (int j = 0; j < n; ++j) g(j) += A(r, j) * reactions(r);
+    const auto [N, rhs] = wrench_normal_equations(J, g);
+    const vector_t<T> w = solve_spd(N, rhs);
+    T sq = T(0);
+    for (int j = 0; j < n; ++j) {
+      T e = -g(j);
+      for (int r = 0; r < 6; ++r) e += J(r, j) * w(r);
+      sq += sqr(e);
+    }
+    using std::sqrt;
+    out.push_back({vec3<T>(w(0), w(1), w(2)), vec3<T>(w(3), w(4), w(5)), T(sqrt(sq))});
+  }
+  return out;
 }
 
 template <Scalar T>

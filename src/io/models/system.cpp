@@ -346,10 +346,24 @@ system_input system_model::read(object_reader& scene) {
     if (has_orientation) {
       const std::string where = r.path("orientation");
       const json_value& o = r.raw("orientation");
-      if (o.type != json_value::kind::string)
-        throw input_error(where + ": expected a product of rotations such as \"rz(psi) rx(theta) rz(phi)\"");
+      if (o.type == json_value::kind::array) {  // a matrix, row by row
+        if (o.items.size() != 3)
+          throw input_error(where + ": expected a product of rotations or a 3 x 3 matrix (3 rows of 3 expressions)");
+        for (std::size_t i = 0; i < 3; ++i) {
+          const json_value& row = o.items[i];
+          if (row.type != json_value::kind::array || row.items.size() != 3)
+            throw input_error(where + "[" + std::to_string(i) + "]: expected a row of 3 expressions in q and t");
+          for (std::size_t j = 0; j < 3; ++j) {
+            const std::string at = where + "[" + std::to_string(i) + "][" + std::to_string(j) + "]";
+            body.matrix[3 * i + j] = b.function_of_q_t(expression_text(row.items[j], at), at);
+          }
+        }
+        body.has_matrix = true;
+      } else if (o.type != json_value::kind::string) {
+        throw input_error(where + ": expected a product of rotations such as \"rz(psi) rx(theta) rz(phi)\", or a 3 x 3 matrix");
+      }
       int n = 0;
-      const auto factors = rotation_factors(o.text, where);
+      const auto factors = body.has_matrix ? std::vector<std::pair<int, std::string>>{} : rotation_factors(o.text, where);
       require_at_most(factors.size(), system_limits::rotations, where + ": rotations");
       for (const auto& [axis, text] : factors)
         body.rotations.emplace_back(axis, b.function_of_q_t(text, where + "[" + std::to_string(n++) + "]"));
@@ -359,6 +373,31 @@ system_input system_model::read(object_reader& scene) {
     r.finish();
     def.bodies.push_back(std::move(body));
   }
+
+  // A body with its centre and orientation on the fixed axes, by name; three functions of q and t.
+  auto body_on_fixed_axes = [&](object_reader& r, const std::string& what) {
+    const std::string body = r.string("body");
+    const auto it = std::find_if(def.bodies.begin(), def.bodies.end(),
+                                 [&](const system_body_definition& x) { return x.name == body; });
+    if (it == def.bodies.end()) throw input_error(r.path("body") + ": no body named '" + printable(body) + "'");
+    if (it->body_axes || it->has_omega)
+      throw input_error(r.path("body") + ": " + what + " needs the body's centre and orientation on the fixed axes (not omega)");
+    if (it->has_matrix)
+      throw input_error(r.path("body") + ": " + what + " needs the body's orientation as a product of rotations (not a matrix)");
+    return static_cast<int>(it - def.bodies.begin());
+  };
+  auto point_of_q_t = [&](object_reader& r, const std::string& key) {
+    std::array<shared_expression, 3> out;
+    const json_value& v = r.raw(key);
+    if (v.type != json_value::kind::array || v.items.size() != 3)
+      throw input_error(r.path(key) + ": expected a list of 3 expressions in q and t");
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::string where = r.path(key) + "[" + std::to_string(i) + "]";
+      out[i] = b.parse(expression_text(v.items[i], where), where);
+      if (b.depends_on_speeds(*out[i])) throw input_error(where + ": depends on the speeds (a function of q and t)");
+    }
+    return out;
+  };
 
   // Constraints.
   if (scene.has("constraints")) {
@@ -378,25 +417,9 @@ system_input system_model::read(object_reader& scene) {
       if (pv) {
         // n . (v_G + omega x (P - G)) = 0 for the material point of a body at P
         object_reader p = r.object("point_velocity");
-        const std::string body = p.string("body");
-        const auto it = std::find_if(def.bodies.begin(), def.bodies.end(),
-                                     [&](const system_body_definition& x) { return x.name == body; });
-        if (it == def.bodies.end()) throw input_error(p.path("body") + ": no body named '" + printable(body) + "'");
-        if (it->body_axes || it->has_omega)
-          throw input_error(p.path("body") + ": a point velocity needs the body's centre and orientation on the "
-                                             "fixed axes (not omega)");
-        k.body = static_cast<int>(it - def.bodies.begin());
-        for (const char* key : {"point", "direction"}) {
-          const json_value& v = p.raw(key);
-          if (v.type != json_value::kind::array || v.items.size() != 3)
-            throw input_error(p.path(key) + ": expected a list of 3 expressions in q and t");
-          for (std::size_t i = 0; i < 3; ++i) {
-            const std::string where = p.path(key) + "[" + std::to_string(i) + "]";
-            auto e = b.parse(expression_text(v.items[i], where), where);
-            if (b.depends_on_speeds(*e)) throw input_error(where + ": depends on the speeds (a function of q and t)");
-            (std::string(key) == "point" ? k.point : k.direction)[i] = e;
-          }
-        }
+        k.body = body_on_fixed_axes(p, "a point velocity");
+        k.point = point_of_q_t(p, "point");
+        k.direction = point_of_q_t(p, "direction");
         p.finish();
         r.finish();
         def.constraints.push_back(std::move(k));
@@ -420,6 +443,37 @@ system_input system_model::read(object_reader& scene) {
     if (def.constraints.size() >= speeds.size())
       throw input_error(scene.path("constraints") + ": " + std::to_string(def.constraints.size()) + " constraints on " +
                         std::to_string(speeds.size()) + " speeds leave nothing to move");
+  }
+
+  // Constraint wrenches: on a named body, reduced to a named point.
+  if (scene.has("wrenches")) {
+    const json_value& ws = object_value(scene, "wrenches");
+    require_at_most(ws.members.size(), system_limits::names, "wrenches");
+    for (const auto& m : ws.members) {
+      object_reader r(m.value, "wrenches." + m.key);
+      system_wrench_definition w;
+      w.name = m.key;
+      if (!is_identifier(w.name))
+        throw input_error("wrenches: '" + printable(w.name) + "' is not a name (a letter or _, then letters, digits, _)");
+      w.body = body_on_fixed_axes(r, "a wrench");
+      if (def.bodies[static_cast<std::size_t>(w.body)].rotations.empty())
+        throw input_error(r.path("body") + ": a wrench needs a body with an orientation (a couple on a body that "
+                                           "does not turn does no work)");
+      w.point = point_of_q_t(r, "point");
+      for (const std::string& name : name_list(r.raw("constraints"), r.path("constraints"))) {
+        const auto it = std::find_if(def.constraints.begin(), def.constraints.end(),
+                                     [&](const system_constraint_definition& x) { return x.name == name; });
+        if (it == def.constraints.end())
+          throw input_error(r.path("constraints") + ": no constraint named '" + printable(name) + "'");
+        const int c = static_cast<int>(it - def.constraints.begin());
+        if (std::find(w.constraints.begin(), w.constraints.end(), c) != w.constraints.end())
+          throw input_error(r.path("constraints") + ": '" + name + "' twice");
+        w.constraints.push_back(c);
+      }
+      if (w.constraints.empty()) throw input_error(r.path("constraints") + ": name at least one constraint");
+      r.finish();
+      def.wrenches.push_back(std::move(w));
+    }
   }
 
   // Speeds the constraints determine (given neither in the state nor by hand).
@@ -561,6 +615,10 @@ system_input system_model::read(object_reader& scene) {
     for (const auto& k : def.constraints)
       if (!results.insert(k.name + "_reaction").second)
         throw input_error("constraints." + k.name + ": its result " + k.name + "_reaction has the name of another result");
+    for (const auto& w : def.wrenches)
+      for (const char* suffix : {"_force", "_moment"})
+        if (!results.insert(w.name + suffix).second)
+          throw input_error("wrenches." + w.name + ": its result " + w.name + suffix + " has the name of another result");
   }
   auto shared = std::make_shared<system_definition>(std::move(b.def));
   in.def = shared;
@@ -601,6 +659,43 @@ system_input system_model::read(object_reader& scene) {
       const std::string where = "bodies." + bd.name;
       for (const auto& c : bc.center) (void)c.value.at(bv.data());
       for (const auto& [axis, angle] : bc.rotations) (void)angle.value.at(bv.data());
+      if (bd.has_matrix) {  // orthogonal with det 1, and R^T dR skew in every coordinate and t (to first order a rotation)
+        mat3<mpfi> R;
+        for (int k = 0; k < 9; ++k) R(k / 3, k % 3) = bc.matrix[static_cast<std::size_t>(k)].value.at(bv.data());
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) {
+            mpfi e = i == j ? mpfi(-1) : mpfi(0);
+            for (int k = 0; k < 3; ++k) e += R(i, k) * R(j, k);
+            if (!possibly_zero(e))
+              throw input_error(where + ".orientation: not orthogonal at the state ((R R^T)(" + std::to_string(i) + ", " +
+                                std::to_string(j) + ") - " + (i == j ? "1" : "0") + " = " + to_string(e) + ")");
+          }
+        const mpfi det = R(0, 0) * (R(1, 1) * R(2, 2) - R(1, 2) * R(2, 1)) - R(0, 1) * (R(1, 0) * R(2, 2) - R(1, 2) * R(2, 0)) +
+                         R(0, 2) * (R(1, 0) * R(2, 1) - R(1, 1) * R(2, 0));
+        if (!possibly_zero(mpfi(det - 1)))
+          throw input_error(where + ".orientation: its determinant is " + to_string(det) + ", not 1 (a reflection)");
+        for (int var = 0; var <= d.vars.coordinates; ++var) {  // the coordinates, then t
+          mat3<mpfi> D = mat3<mpfi>::Zero();
+          for (int k = 0; k < 9; ++k) {
+            const auto& e = bc.matrix[static_cast<std::size_t>(k)];
+            if (var == d.vars.coordinates) {
+              if (e.dt) D(k / 3, k % 3) = e.dt.at(bv.data());
+            } else {
+              for (const auto& [i, de] : e.dq)
+                if (i == var) D(k / 3, k % 3) = de.at(bv.data());
+            }
+          }
+          for (int i = 0; i < 3; ++i)
+            for (int j = i; j < 3; ++j) {
+              mpfi e = 0;
+              for (int k = 0; k < 3; ++k) e += R(k, i) * D(k, j) + D(k, i) * R(k, j);
+              if (!possibly_zero(e))
+                throw input_error(where + ".orientation: not a rotation near the state (R^T dR/d" +
+                                  (var == d.vars.coordinates ? std::string("t") : d.names[static_cast<std::size_t>(d.vars.q(var))]) +
+                                  " is not skew-symmetric)");
+            }
+        }
+      }
       const mpfi mass = bc.mass.at(bv.data());
       require_in_256_bits(certainly_positive(mass), certainly_nonpositive(mass),
                           where + ".mass: must be positive (" + to_string(mass) + ")");
@@ -662,6 +757,46 @@ system_input system_model::read(object_reader& scene) {
         for (int r2 = r + 1; r2 < s; ++r2) {
           const mpfi f = A(r2, best) / A(r, best);
           for (int j = 0; j < n; ++j) A(r2, j) -= f * A(r, j);
+        }
+      }
+    }
+    // Each wrench fixed by its virtual work: the body moves in 6 independent ways
+    // (J J^T nonsingular), and each of its constraints' rows is a virtual power of
+    // that body alone (A_c^T in the range of J^T).
+    if (!d.wrenches.empty()) {
+      const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
+      const std::vector<mpfi> w0 = sys.evaluate(sys.constraint_tape, sys.variables(q, vector_t<mpfi>(vector_t<mpfi>::Zero(n)), t));
+      matrix_t<mpfi> A(s, n);
+      vector_t<mpfi> a(s);
+      expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
+      for (std::size_t k = 0; k < d.wrenches.size(); ++k) {
+        const system_wrench_definition& wd = d.wrenches[k];
+        const std::string where = "wrenches." + wd.name;
+        const matrix_t<mpfi> J = point_twist_jacobian(sys, sys.wrenches[k], w0.data());
+        matrix_t<mpfi> N = wrench_normal_equations(J, vector_t<mpfi>(vector_t<mpfi>::Zero(n))).first;
+        for (int p = 0; p < 6; ++p) {  // Gaussian elimination: every pivot certainly positive
+          if (!certainly_positive(N(p, p)))
+            throw input_error(where + ".body: the speeds move " + d.bodies[static_cast<std::size_t>(wd.body)].name +
+                              " in fewer than 6 independent ways at the state, so the constraints' virtual work does "
+                              "not fix a wrench (describe the body free: 6 speeds, the constraints as rows)");
+          for (int r = p + 1; r < 6; ++r) {
+            const mpfi f = N(r, p) / N(p, p);
+            for (int c = p; c < 6; ++c) N(r, c) -= f * N(p, c);
+          }
+        }
+        for (int c : wd.constraints) {
+          const vector_t<mpfi> g = A.row(c).transpose();
+          const auto [Nc, rhs] = wrench_normal_equations(J, g);
+          const vector_t<mpfi> y = solve_spd(Nc, rhs);
+          for (int j = 0; j < n; ++j) {
+            mpfi e = -g(j);
+            for (int r = 0; r < 6; ++r) e += J(r, j) * y(r);
+            if (!possibly_zero(e))
+              throw input_error(where + ".constraints: " + d.constraints[static_cast<std::size_t>(c)].name +
+                                " is not a constraint on " + d.bodies[static_cast<std::size_t>(wd.body)].name +
+                                " alone (its virtual work involves " + d.names[static_cast<std::size_t>(d.vars.u(j))] +
+                                " beyond the body's motion)");
+          }
         }
       }
     }

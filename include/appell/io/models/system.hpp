@@ -66,12 +66,24 @@ struct system_model {
     const auto& constraints = m.in->def->constraints;
     for (std::size_t c = 0; c < constraints.size(); ++c)
       e.results.push_back(detail::scalar_result(constraints[c].name + "_reaction", T(r.reactions(static_cast<Eigen::Index>(c)))));
+    const auto& wrenches = m.in->def->wrenches;
+    std::vector<named_result<T>> wrench_checks;
+    if (!wrenches.empty()) {
+      const std::vector<constraint_wrench_result<T>> w = constraint_wrenches(m.sys, m.q, m.t, r.reactions);
+      for (std::size_t k = 0; k < wrenches.size(); ++k) {
+        e.results.push_back(detail::vector_result(wrenches[k].name + "_force", w[k].force));
+        e.results.push_back(detail::vector_result(wrenches[k].name + "_moment", w[k].moment));
+      }
+      for (std::size_t k = 0; k < wrenches.size(); ++k)
+        wrench_checks.push_back(detail::scalar_result(wrenches[k].name + "_virtual_work", w[k].residual));
+    }
     e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
     for (std::size_t c = 0; c < constraints.size(); ++c) {
       const auto i = static_cast<Eigen::Index>(c);
       e.checks.push_back(detail::scalar_result(constraints[c].name + "_cotton_minus_lagrange",
                                                T(r.reactions(i) - r.multipliers(i))));
     }
+    e.checks.insert(e.checks.end(), wrench_checks.begin(), wrench_checks.end());
     return e;
   }
 };
