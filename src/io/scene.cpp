@@ -16,6 +16,34 @@ void require_positive(const object_reader& r, const std::string& key, const deci
     throw input_error(r.path(key) + ": " + (what.empty() ? "" : what + " ") + "must be positive, got " + d.text);
 }
 
+symmetric_top_fields read_symmetric_top(object_reader& scene) {
+  symmetric_top_fields in;
+  object_reader top = scene.object("top");
+  in.A = top.number("A");
+  in.C = top.number("C");
+  in.mass = top.number("mass");
+  in.l = top.number("l");
+  top.finish();
+  require_positive(top, "A", in.A);
+  require_positive(top, "C", in.C);
+  require_positive(top, "mass", in.mass);
+  // A >= m l^2 and C <= 2 (A - m l^2), exactly.
+  if (decimal_sign_of_polynomial({{1, {in.A.text}}, {-1, {in.mass.text, in.l.text, in.l.text}}}) < 0)
+    throw input_error(top.path("A") + ": a body of revolution has A >= m l^2 (A = " + in.A.text + ", m l^2 = " +
+                      in.mass.text + " * " + in.l.text + "^2)");
+  if (decimal_sign_of_polynomial({{2, {in.A.text}}, {-2, {in.mass.text, in.l.text, in.l.text}}, {-1, {in.C.text}}}) < 0)
+    throw input_error(top.path("C") + ": a body of revolution has C <= 2 (A - m l^2) (C = " + in.C.text + ")");
+  return in;
+}
+
+void require_angle_in_range(const object_reader& r, const std::string& key, const decimal_field& d) {
+  // Angles beyond 2^40 rad are no physical state, and their sines cost time in
+  // the exponent (MPFR, MPFI) or lose every digit (QD): refused, exactly.
+  if (decimal_sign_of_sum({{1, d.text}, {-1, "1099511627776"}}) > 0 ||
+      decimal_sign_of_sum({{1, d.text}, {1, "1099511627776"}}) < 0)
+    throw input_error(r.path(key) + ": an angle beyond 2^40 rad, got " + printable(d.text));
+}
+
 const model_entry& find_model(const std::string& name) {
   std::string known;
   for (const model_entry* m : registered_models()) {

@@ -83,6 +83,12 @@ cones = {"pow-1e9": "theta^1e9", "pow-big-int": "theta^999999", "zero-over-zero"
 for name, cone in cones.items():
     put(scene_dir, "cone-" + name, with_field(top, ["cone"], cone))
     put(expr_dir, name, cone)
+heavy = {"model": "heavy_top", "top": {"A": "0.08", "C": "0.02", "mass": "1.5", "l": "0.2"}, "gravity": "9.81",
+         "state": {"psi": "0", "theta": "0.7", "phi": "0.3", "psi_dot": "1.5", "theta_dot": "1.2", "phi_dot": "40"}}
+put(scene_dir, "heavy-top-vertical", with_field(heavy, ["state", "theta"], "0"))
+put(scene_dir, "heavy-top-near-vertical", with_field(heavy, ["state", "theta"], "1e-300"))
+put(scene_dir, "heavy-top-not-revolution", with_field(heavy, ["top", "C"], "0.05"))
+put(scene_dir, "heavy-top-huge-spin", with_field(heavy, ["state", "phi_dot"], "1e200"))
 for name, text in {"shipped": "0.5*theta + 0.1*sin(2*theta)", "constant": "1.25", "pi": "pi/2 - theta",
                    "all-functions": "sin(theta)*cos(theta)/tan(theta)+exp(theta)-log(theta)+sqrt(theta)^3",
                    "real-power": "theta^0.5 + 2^theta + theta^theta", "numbers": "1e-3*theta + .5 - 2.E+1",
