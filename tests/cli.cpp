@@ -5,9 +5,13 @@
 
 #include <sys/wait.h>
 
+#include <array>
 #include <cstdio>
 #include <filesystem>
+#include <random>
+#include <vector>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <string>
 
@@ -315,4 +319,227 @@ BOOST_AUTO_TEST_CASE(tradeoff_reports_bad_scenes_as_eval_does) {
   BOOST_TEST(t.status == e.status, "tradeoff exit " << t.status << ", eval exit " << e.status);
   BOOST_TEST(t.err == e.err, "tradeoff: " << t.err << "eval: " << e.err);
   expect_bad_input("tradeoff " + good_scene + " --reps x", "--reps");
+}
+
+// ---------------------------------------------------------------------------
+// appell reference and appell score (issue "Reference values for other implementations").
+
+namespace {
+
+using appell::json_value;
+using appell::mpfr_value;
+using appell::parse_json;
+
+std::string text_file(const std::string& name, const std::string& text) {
+  std::filesystem::create_directories(work);
+  const auto path = work / name;
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+std::vector<std::vector<std::string>> csv_rows(const std::string& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(slurp(path));
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> fields;
+    std::string field;
+    bool quoted = false;
+    for (char c : line) {
+      if (c == '"') quoted = !quoted;
+      else if (c == ',' && !quoted) {
+        fields.push_back(field);
+        field.clear();
+      } else field += c;
+    }
+    fields.push_back(field);
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+// Euler's equations written out, in MPFR at 320 bits from the exact decimals:
+// A w1' = (B - C) w2 w3, ... (torque 0): the independent truth for the dataset.
+void euler_truth(const std::string (&w)[3], mpfr_value (&out)[3]) {
+  const char* I[3] = {"2", "3", "4"};
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    mpfr_value a(320), b(320), c(320), wj(320), wk(320), t(320);
+    mpfr_set_str(a, I[i], 10, MPFR_RNDN);
+    mpfr_set_str(b, I[j], 10, MPFR_RNDN);
+    mpfr_set_str(c, I[k], 10, MPFR_RNDN);
+    mpfr_set_str(wj, w[j].c_str(), 10, MPFR_RNDN);  // 6-digit decimals: the error is far below any enclosure
+    mpfr_set_str(wk, w[k].c_str(), 10, MPFR_RNDN);
+    mpfr_sub(t, b, c, MPFR_RNDN);
+    mpfr_mul(t, t, wj, MPFR_RNDN);
+    mpfr_mul(t, t, wk, MPFR_RNDN);
+    out[i] = mpfr_value(320);
+    mpfr_div(out[i], t, a, MPFR_RNDN);
+  }
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(reference_certifies_many_states_against_eulers_equations) {
+  // 200 random states of Euler's body in one process, in interval and in mpfi at 113 bits:
+  // every enclosure holds Euler's equations evaluated at 320 bits, and every double marked
+  // "decided" is the correctly rounded value of the truth.
+  std::mt19937_64 rng(7);
+  std::ostringstream states;
+  states << "state,omega[0],omega[1],omega[2]\n";
+  std::vector<std::array<std::string, 3>> omegas;
+  for (int i = 0; i < 200; ++i) {
+    std::array<std::string, 3> w;
+    for (auto& x : w) {
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, "%.6f", std::uniform_real_distribution<double>(-20, 20)(rng));
+      x = buffer;
+    }
+    omegas.push_back(w);
+    states << "s" << i << "," << w[0] << "," << w[1] << "," << w[2] << "\n";
+  }
+  const std::string states_file = text_file("euler_states.csv", states.str());
+  for (const std::string scalar : {"interval", "mpfi --bits 113"}) {
+    const std::string out = (work / "ref_euler").string();
+    std::filesystem::remove_all(out);
+    const outcome o = run("reference " + good_scene + " --states " + states_file + " --scalar " + scalar + " --out " + out);
+    BOOST_TEST_REQUIRE(o.status == 0, o.err);
+    const auto rows = csv_rows(out + "/reference.csv");
+    BOOST_TEST_REQUIRE(rows.size() == 1u + 200u * 3u);
+    long decided = 0;
+    for (std::size_t r = 1; r < rows.size(); ++r) {
+      const auto& row = rows[r];
+      const int state = std::stoi(row[0].substr(1)), component = row[1][10] - '0';
+      BOOST_TEST_REQUIRE(row[1].substr(0, 9) == "omega_dot");
+      BOOST_TEST_REQUIRE(row[2] == "certified");
+      const std::string w[3] = {omegas[state][0], omegas[state][1], omegas[state][2]};
+      mpfr_value truth[3];
+      euler_truth(w, truth);
+      mpfr_value lo(320), hi(320);
+      mpfr_set_str(lo, row[3].c_str(), 10, MPFR_RNDD);
+      mpfr_set_str(hi, row[4].c_str(), 10, MPFR_RNDU);
+      BOOST_TEST_REQUIRE((mpfr_cmp(lo, truth[component]) <= 0 && mpfr_cmp(truth[component], hi) <= 0),
+                         scalar << " " << row[0] << " " << row[1] << ": [" << row[3] << ", " << row[4] << "] misses the truth");
+      if (row[6] == "1") {
+        ++decided;
+        const double correct = mpfr_get_d(truth[component], MPFR_RNDN);
+        BOOST_TEST_REQUIRE(std::strtod(row[5].c_str(), nullptr) == correct, row[0] << " " << row[1] << ": " << row[5]);
+      }
+    }
+    BOOST_TEST_MESSAGE("reference " << scalar << ": 600 enclosures hold the truth; " << decided
+                                    << " doubles decided, each the correctly rounded one");
+    if (scalar != "interval") BOOST_TEST(decided == 600);  // 113 bits decide every double here
+    // the manifest and the JSON Lines
+    const json_value manifest = parse_json(slurp(out + "/manifest.json"));
+    BOOST_TEST(manifest.find("states")->text == "200");
+    BOOST_TEST(manifest.find("refused")->text == "0");
+    BOOST_TEST(manifest.find("states_sha256")->text.size() == 64u);
+    std::istringstream lines(slurp(out + "/reference.jsonl"));
+    std::string line;
+    int n = 0;
+    while (std::getline(lines, line)) {
+      const json_value j = parse_json(line);
+      BOOST_TEST(j.find("status")->text == "certified");
+      ++n;
+    }
+    BOOST_TEST(n == 200);
+    // a second run writes the same dataset, byte for byte
+    const std::string first_csv = slurp(out + "/reference.csv"), first_jsonl = slurp(out + "/reference.jsonl");
+    BOOST_TEST_REQUIRE(run("reference " + good_scene + " --states " + states_file + " --scalar " + scalar + " --out " + out).status == 0);
+    BOOST_TEST(slurp(out + "/reference.csv") == first_csv);
+    BOOST_TEST(slurp(out + "/reference.jsonl") == first_jsonl);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_manifest_hashes_the_inputs_with_sha256) {
+  const std::string valid = text_file("one_state.csv", "omega[0],omega[1],omega[2]\n1,2,3\n");
+  const std::string out = (work / "ref_hash").string();
+  BOOST_TEST_REQUIRE(run("reference " + good_scene + " --states " + valid + " --out " + out).status == 0);
+  const json_value manifest = parse_json(slurp(out + "/manifest.json"));
+  // the same hashes computed independently (coreutils sha256sum)
+  for (const auto& [key, file] : {std::pair<const char*, std::string>{"states_sha256", valid}, {"scene_sha256", good_scene}}) {
+    const std::string cmd = "sha256sum " + file + " > " + (work / "sum").string();
+    BOOST_TEST_REQUIRE(std::system(cmd.c_str()) == 0);
+    BOOST_TEST(manifest.find(key)->text == slurp((work / "sum").string()).substr(0, 64), key);
+  }
+  BOOST_TEST(manifest.find("model")->text == "euler_body");
+  BOOST_TEST(!manifest.find("git_revision")->text.empty());
+}
+
+BOOST_AUTO_TEST_CASE(reference_takes_engine_inputs_as_binary64_and_marks_refused_states) {
+  const std::string states = text_file("top_states.csv",
+                                       "state,psi,theta,phi,psi_dot,theta_dot,phi_dot\n"
+                                       "ok,0,0.7,0.3,1.5,1.2,40\n"
+                                       "vertical,0,0,0,1,1,1\n"
+                                       "ok2,0.1,1.2,0,-2,0.5,20\n");
+  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/heavy_top.json";
+  const std::string out = (work / "ref_top").string();
+  const outcome o = run("reference " + scene + " --states " + states + " --scalar mpfi --out " + out + " --inputs binary64");
+  BOOST_TEST(o.status == 3, o.err);  // one state refused: the run goes on, the status says so
+  BOOST_TEST(o.err.find("1 of 3 states") != std::string::npos, o.err);
+  const auto rows = csv_rows(out + "/reference.csv");
+  BOOST_TEST_REQUIRE(rows.size() == 1u + 6u + 1u + 6u);
+  BOOST_TEST(rows[7][0] == "vertical");
+  BOOST_TEST(rows[7][2] == "refused");
+  BOOST_TEST(rows[7][9].find("state.theta") != std::string::npos, rows[7][9]);
+  // binary64: 0.7 is taken as the double nearest to it, echoed exactly
+  const std::string jsonl = slurp(out + "/reference.jsonl");
+  BOOST_TEST(jsonl.find("\"theta\":\"6.999999999999999555910790149937383830547332763671875e-01\"") != std::string::npos,
+             jsonl.substr(0, 300));
+  const json_value manifest = parse_json(slurp(out + "/manifest.json"));
+  BOOST_TEST(manifest.find("inputs")->text == "binary64");
+  BOOST_TEST(manifest.find("refused")->text == "1");
+}
+
+BOOST_AUTO_TEST_CASE(reference_and_score_refuse_bad_files_naming_line_and_column) {
+  const std::string out = (work / "ref_bad").string();
+  std::filesystem::remove_all(out);
+  auto bad_states = [&](const std::string& name, const std::string& text, const std::string& mention) {
+    const std::string f = text_file(name, text);
+    expect_bad_input("reference " + good_scene + " --states " + f + " --out " + out, mention);
+    BOOST_TEST(!std::filesystem::exists(out), name << ": something was written");
+  };
+  bad_states("wrong_count.csv", "omega[0],omega[1],omega[2]\n1,2,3\n1,2\n", "line 3: 2 fields, the header has 3");
+  bad_states("nan.csv", "omega[0],omega[1],omega[2]\n1,2,3\n1,NaN,3\n", "line 3, column 2 (omega[1]): NaN is not a finite number");
+  bad_states("inf.csv", "omega[0],omega[1],omega[2]\n-inf,2,3\n", "line 2, column 1 (omega[0]): -inf is not a finite number");
+  bad_states("not_decimal.csv", "omega[0],omega[1],omega[2]\n1,2,0x3\n", "line 2, column 3 (omega[2])");
+  bad_states("unknown.csv", "omega[0],omega[9],omega[2]\n1,2,3\n", "column 2 (omega[9]): not a number of the scene");
+  bad_states("twice.csv", "omega[0],omega[0],omega[2]\n1,2,3\n", "a column named twice");
+  bad_states("empty.csv", "", "empty");
+  bad_states("no_rows.csv", "omega[0],omega[1],omega[2]\n", "no states");
+  bad_states("quote.csv", "omega[0],omega[1],omega[2]\n\"1,2,3\n", "not closed");
+  const std::string ok = text_file("ok.csv", "omega[0],omega[1],omega[2]\n1,2,3\n");
+  expect_bad_input("reference " + good_scene + " --states " + ok + " --scalar double --out " + out, "--scalar");
+  expect_bad_input("reference " + good_scene + " --states " + ok, "--out DIR is required");
+  expect_bad_input("reference " + good_scene + " --out " + out, "--states FILE is required");
+  expect_bad_input("reference " + good_scene + " --states " + ok + " --out " + out + " --inputs float", "--inputs");
+
+  // score
+  const std::string ref = (work / "ref_for_score").string();
+  BOOST_TEST_REQUIRE(run("reference " + good_scene + " --states " + text_file("three.csv", "state,omega[0],omega[1],omega[2]\na,0.1,0.2,0.3\nb,0.5,-1,2.3\nc,0.7,0.11,-0.9\n") +
+                         " --scalar mpfi --out " + ref).status == 0);
+  const auto rows = csv_rows(ref + "/reference.csv");
+  std::ostringstream good, off;
+  off << std::setprecision(17);
+  good << "state,omega_dot[0],omega_dot[1],omega_dot[2]\n";
+  off << "state,omega_dot[0],omega_dot[1],omega_dot[2]\n";
+  for (std::size_t r = 1; r < rows.size(); r += 3) {
+    good << rows[r][0] << "," << rows[r][5] << "," << rows[r + 1][5] << "," << rows[r + 2][5] << "\n";
+    off << rows[r][0] << "," << rows[r][5] << "," << std::stod(rows[r + 1][5]) * (1 + 1e-8) << "," << rows[r + 2][5] << "\n";
+  }
+  const outcome g = run("score " + ref + " " + text_file("good.csv", good.str()) + " --min-digits 15");
+  BOOST_TEST(g.status == 0, g.out << g.err);
+  BOOST_TEST(g.out.find("every value within the suggested tolerance") != std::string::npos, g.out);
+  const outcome f = run("score " + ref + " " + text_file("off.csv", off.str()));
+  BOOST_TEST(f.status == 1, f.out << f.err);
+  BOOST_TEST(f.out.find("omega_dot[1]" + std::string(19, ' ') + "3        0            0") != std::string::npos, f.out);
+  const outcome few = run("score " + ref + " " + text_file("good2.csv", good.str()) + " --min-digits 17");
+  BOOST_TEST(few.status == 1, few.out);  // doubles cannot have 17 correct digits
+  expect_bad_input("score " + ref + " " + text_file("q.csv", "state,omega_dot[7]\na,1\n"),
+                   "line 1, column 2 (omega_dot[7]): not a quantity of the reference");
+  expect_bad_input("score " + ref + " " + text_file("s.csv", "state,omega_dot[0]\nzz,1\n"), "line 2, column 1 (state): no state 'zz'");
+  expect_bad_input("score " + ref + " " + text_file("n.csv", "state,omega_dot[0]\na,nan\n"), "line 2, column 2 (omega_dot[0]): nan");
+  expect_bad_input("score " + ref + " " + text_file("c.csv", "state,omega_dot[0]\na,1,2\n"), "line 2: 3 fields");
+  expect_bad_input("score " + (work / "nowhere").string() + " " + text_file("c2.csv", "state\n"), "reference.csv");
+  expect_bad_input("score " + ref + " " + text_file("c3.csv", "state,omega_dot[0]\na,1\n") + " --min-digits x", "--min-digits");
 }

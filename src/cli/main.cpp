@@ -8,11 +8,13 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "appell/io/scene.hpp"
 #include "appell/linalg/solve.hpp"
 #include "extremes.hpp"
 #include "linearize.hpp"
+#include "reference.hpp"
 #include "tradeoff.hpp"
 
 namespace {
@@ -22,12 +24,18 @@ constexpr const char* usage_text =
     "       appell tradeoff SCENE [--out DIR] [--reps N]\n"
     "       appell extremes [--out DIR]\n"
     "       appell linearize SCENE [--scalar NAME] [--bits N] [--format json|text]\n"
+    "       appell reference SCENE --states FILE [--scalar interval|mpfi] [--bits N] [--inputs decimal|binary64] --out DIR\n"
+    "       appell score REFERENCE_DIR OTHER.csv [--min-digits D] [--plot FILE.png]\n"
     "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
     "  --bits N: precision of mpfr and mpfi (default 256): mpfi gets exactly N bits; mpfr the\n"
     "            smallest count >= N that Boost's decimal-digit precision can set (reported)\n"
     "  tradeoff: speed and accuracy of every scalar; writes DIR/tradeoff.csv and DIR/tradeoff.png\n"
     "  linearize: the linearized equations of a system file about its \"linearize\" section's motion,\n"
-    "             their eigenvalues and the speeds where a real part crosses 0 (enclosed in interval, mpfi)\n";
+    "             their eigenvalues and the speeds where a real part crosses 0 (enclosed in interval, mpfi)\n"
+    "  reference: certified values of a scene's results at many states (FILE: CSV, a header naming the\n"
+    "             state's fields); DIR/reference.csv, reference.jsonl, manifest.json; exit 3 if any refused\n"
+    "  score: another implementation's values (CSV: state, then columns named as appell's results)\n"
+    "         against a reference: inside, correct digits, within tolerance; exit 0 iff all within\n";
 
 struct options {
   std::string scene;
@@ -134,6 +142,58 @@ int main(int argc, char** argv) {
     if (t.scene.empty()) return usage("no scene given");
     try {
       return appell::cli::tradeoff(t);
+    } catch (...) {
+      return exit_status_of_current_exception();
+    }
+  }
+  if (command == "reference" || command == "score") {
+    appell::cli::reference_options r;
+    appell::cli::score_options sc;
+    std::vector<std::string> positional;
+    for (int i = 2; i < argc; ++i) {
+      const std::string a = argv[i];
+      const bool takes_value = a == "--states" || a == "--scalar" || a == "--bits" || a == "--inputs" || a == "--out" ||
+                               a == "--plot" || a == "--min-digits";
+      if (takes_value && i + 1 >= argc) return usage(a + ": missing value");
+      if (command == "reference" && a == "--states") r.states = argv[++i];
+      else if (command == "reference" && a == "--scalar") r.scalar = argv[++i];
+      else if (command == "reference" && a == "--out") r.out_dir = argv[++i];
+      else if (command == "reference" && a == "--inputs") {
+        const std::string v = argv[++i];
+        if (v != "decimal" && v != "binary64") return usage("--inputs: expected decimal or binary64, got '" + v + "'");
+        r.binary64_inputs = v == "binary64";
+      } else if (command == "reference" && a == "--bits") {
+        const std::string b = argv[++i];
+        if (b.empty() || b.find_first_not_of("0123456789") != std::string::npos || b.size() > 6 ||
+            std::stoul(b) < 2 || std::stoul(b) > 100000)
+          return usage("--bits: expected an integer from 2 to 100000, got '" + b + "'");
+        r.bits = static_cast<unsigned>(std::stoul(b));
+      } else if (command == "score" && a == "--plot") sc.plot = argv[++i];
+      else if (command == "score" && a == "--min-digits") {
+        const std::string d = argv[++i];
+        const auto dot = d.find('.');
+        const bool shaped = !d.empty() && d.size() <= 5 && d.find_first_not_of("0123456789.") == std::string::npos &&
+                            d.find_first_of("0123456789") != std::string::npos &&
+                            (dot == std::string::npos || d.find('.', dot + 1) == std::string::npos);
+        if (!shaped || std::stod(d) > 100)
+          return usage("--min-digits: expected a number of digits from 0 to 100, got '" + d + "'");
+        sc.min_digits = std::stod(d);
+      }
+      else if (!a.empty() && a[0] == '-') return usage(command + ": unknown option '" + a + "'");
+      else positional.push_back(a);
+    }
+    try {
+      if (command == "reference") {
+        if (positional.size() != 1) return usage("reference: expected one scene");
+        if (r.states.empty()) return usage("reference: --states FILE is required");
+        if (r.out_dir.empty()) return usage("reference: --out DIR is required");
+        r.scene = positional[0];
+        return appell::cli::reference(r);
+      }
+      if (positional.size() != 2) return usage("score: expected REFERENCE_DIR and OTHER.csv");
+      sc.reference_dir = positional[0];
+      sc.other = positional[1];
+      return appell::cli::score(sc);
     } catch (...) {
       return exit_status_of_current_exception();
     }
