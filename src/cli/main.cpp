@@ -12,12 +12,16 @@
 
 #include "appell/io/scene.hpp"
 #include "appell/linalg/solve.hpp"
+#include "exit_status.hpp"
 #include "extremes.hpp"
 #include "linearize.hpp"
 #include "reference.hpp"
 #include "tradeoff.hpp"
 
 namespace {
+
+using appell::cli::exit_status_of_current_exception;
+using appell::cli::one_line;
 
 constexpr const char* usage_text =
     "usage: appell eval SCENE [--scalar NAME] [--bits N] [--format json|text]\n"
@@ -44,10 +48,6 @@ struct options {
   std::string format = "json";
 };
 
-// A message fit for the one-line contract (user text such as an unknown key or
-// option is echoed in messages): appell::printable, at most 400 characters.
-std::string one_line(std::string_view why) { return appell::printable(why, 400); }
-
 // Swallows what libraries write to std::cerr while it lives (restored before
 // any of appell's own messages: it is destroyed when its scope unwinds).
 class cerr_silenced {
@@ -67,30 +67,6 @@ class cerr_silenced {
 int usage(const std::string& why) {
   std::cerr << "appell: " << one_line(why) << " (appell --help lists the commands and options)\n";
   return 2;
-}
-
-// One mapping from exceptions to exit statuses for every command (SCENES.md):
-// 2 bad input (one line naming the field), 3 no certificate, 4 internal error.
-// Call from a catch block only.
-int exit_status_of_current_exception() {
-  try {
-    throw;
-  } catch (const appell::input_error& e) {
-    std::cerr << "appell: " << one_line(e.what()) << "\n";
-    return 2;
-  } catch (const appell::parse_error& e) {
-    std::cerr << "appell: " << one_line(e.what()) << "\n";
-    return 2;
-  } catch (const appell::certification_error& e) {
-    std::cerr << "appell: cannot certify: " << one_line(e.what()) << "\n";
-    return 3;
-  } catch (const appell::domain_error& e) {
-    std::cerr << "appell: cannot certify: " << one_line(e.what()) << "\n";
-    return 3;
-  } catch (const std::exception& e) {
-    std::cerr << "appell: internal error: " << one_line(e.what()) << "\n";
-    return 4;
-  }
 }
 
 std::string dispatch(const appell::scene_input& scene, const options& o) {
@@ -146,30 +122,24 @@ int main(int argc, char** argv) {
       return exit_status_of_current_exception();
     }
   }
-  if (command == "reference" || command == "score") {
+  if (command == "reference") {
     appell::cli::reference_options r;
+    const std::string error = appell::cli::parse_reference_arguments(argc, argv, 2, r);
+    if (!error.empty()) return usage(error);
+    try {
+      return appell::cli::reference(r);
+    } catch (...) {
+      return exit_status_of_current_exception();
+    }
+  }
+  if (command == "score") {
     appell::cli::score_options sc;
     std::vector<std::string> positional;
     for (int i = 2; i < argc; ++i) {
       const std::string a = argv[i];
-      const bool takes_value = a == "--states" || a == "--scalar" || a == "--bits" || a == "--inputs" || a == "--out" ||
-                               a == "--plot" || a == "--min-digits";
-      if (takes_value && i + 1 >= argc) return usage(a + ": missing value");
-      if (command == "reference" && a == "--states") r.states = argv[++i];
-      else if (command == "reference" && a == "--scalar") r.scalar = argv[++i];
-      else if (command == "reference" && a == "--out") r.out_dir = argv[++i];
-      else if (command == "reference" && a == "--inputs") {
-        const std::string v = argv[++i];
-        if (v != "decimal" && v != "binary64") return usage("--inputs: expected decimal or binary64, got '" + v + "'");
-        r.binary64_inputs = v == "binary64";
-      } else if (command == "reference" && a == "--bits") {
-        const std::string b = argv[++i];
-        if (b.empty() || b.find_first_not_of("0123456789") != std::string::npos || b.size() > 6 ||
-            std::stoul(b) < 2 || std::stoul(b) > 100000)
-          return usage("--bits: expected an integer from 2 to 100000, got '" + b + "'");
-        r.bits = static_cast<unsigned>(std::stoul(b));
-      } else if (command == "score" && a == "--plot") sc.plot = argv[++i];
-      else if (command == "score" && a == "--min-digits") {
+      if ((a == "--plot" || a == "--min-digits") && i + 1 >= argc) return usage(a + ": missing value");
+      if (a == "--plot") sc.plot = argv[++i];
+      else if (a == "--min-digits") {
         const std::string d = argv[++i];
         const auto dot = d.find('.');
         const bool shaped = !d.empty() && d.size() <= 5 && d.find_first_not_of("0123456789.") == std::string::npos &&
@@ -178,21 +148,13 @@ int main(int argc, char** argv) {
         if (!shaped || std::stod(d) > 100)
           return usage("--min-digits: expected a number of digits from 0 to 100, got '" + d + "'");
         sc.min_digits = std::stod(d);
-      }
-      else if (!a.empty() && a[0] == '-') return usage(command + ": unknown option '" + a + "'");
+      } else if (!a.empty() && a[0] == '-') return usage("score: unknown option '" + a + "'");
       else positional.push_back(a);
     }
+    if (positional.size() != 2) return usage("score: expected REFERENCE_DIR and OTHER.csv");
+    sc.reference_dir = positional[0];
+    sc.other = positional[1];
     try {
-      if (command == "reference") {
-        if (positional.size() != 1) return usage("reference: expected one scene");
-        if (r.states.empty()) return usage("reference: --states FILE is required");
-        if (r.out_dir.empty()) return usage("reference: --out DIR is required");
-        r.scene = positional[0];
-        return appell::cli::reference(r);
-      }
-      if (positional.size() != 2) return usage("score: expected REFERENCE_DIR and OTHER.csv");
-      sc.reference_dir = positional[0];
-      sc.other = positional[1];
       return appell::cli::score(sc);
     } catch (...) {
       return exit_status_of_current_exception();

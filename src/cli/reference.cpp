@@ -400,21 +400,33 @@ std::string csv_field(const std::string& s) {
 
 }  // namespace
 
-int reference(const reference_options& o) {
+struct reference_run::impl {
+  reference_options o;
+  std::string scene_text, states_text;
+  json_value root;
+  csv_table states;
+  std::size_t first = 0;                        ///< 1 when the first column names the states
+  std::vector<field_path> paths;                ///< per value column
+  std::vector<std::vector<std::string>> values;  ///< per state, per value column (checked)
+};
+
+reference_run::reference_run(const reference_options& o) {
+  const auto built = std::make_shared<impl>();
+  impl& r = *built;
+  r.o = o;
   if (o.scalar != "interval" && o.scalar != "mpfi")
     throw input_error("--scalar: reference values are certified: interval or mpfi, got '" + printable(o.scalar) + "'");
-  const std::string scene_text = read_whole(o.scene, "the scene file");
-  json_value root = parse_json(scene_text);
-  (void)read_scene(root);  // the scene itself must be valid
-  const csv_table states = read_csv(o.states, "the states file");
-  if (states.rows.empty()) throw input_error(o.states + ": no states (a header line and no rows)");
-  const std::string states_text = read_whole(o.states, "the states file");
-  if (o.binary64_inputs) to_binary64(root, "");
+  r.scene_text = read_whole(o.scene, "the scene file");
+  r.root = parse_json(r.scene_text);
+  (void)read_scene(r.root);  // the scene itself must be valid
+  r.states = read_csv(o.states, "the states file");
+  if (r.states.rows.empty()) throw input_error(o.states + ": no states (a header line and no rows)");
+  r.states_text = read_whole(o.states, "the states file");
+  if (o.binary64_inputs) to_binary64(r.root, "");
+  const csv_table& states = r.states;
   // Columns: `state` (names) and fields of the scene.
-  std::size_t first = 0;
-  if (states.header[0] == "state") first = 1;
-  std::vector<field_path> paths;
-  for (std::size_t c = first; c < states.header.size(); ++c) {
+  if (states.header[0] == "state") r.first = 1;
+  for (std::size_t c = r.first; c < states.header.size(); ++c) {
     const std::string& name = states.header[c];
     field_path p;
     try {
@@ -422,100 +434,134 @@ int reference(const reference_options& o) {
     } catch (const input_error& e) {
       throw input_error(where(states, 1, c) + ": " + e.what());
     }
-    if (!locate(root, p))
+    if (!locate(r.root, p))
       throw input_error(where(states, 1, c) + ": not a number of the scene " + o.scene +
                         " (a plain name is a key of its \"state\"; a dotted path starts at its root)");
-    for (std::size_t d = first; d < c; ++d)
+    for (std::size_t d = r.first; d < c; ++d)
       if (states.header[d] == name) throw input_error(where(states, 1, c) + ": a column named twice");
-    paths.push_back(p);
+    r.paths.push_back(p);
   }
   // Every value checked before any is computed: a malformed file writes nothing.
-  std::vector<std::vector<std::string>> values(states.rows.size());
-  for (std::size_t r = 0; r < states.rows.size(); ++r)
-    for (std::size_t c = first; c < states.header.size(); ++c) {
-      std::string v = checked_decimal(states, states.line_of_row[r], c, states.rows[r][c]);
-      if (o.binary64_inputs) v = nearest_binary64(v, where(states, states.line_of_row[r], c));
-      values[r].push_back(v);
+  r.values.resize(states.rows.size());
+  for (std::size_t i = 0; i < states.rows.size(); ++i)
+    for (std::size_t c = r.first; c < states.header.size(); ++c) {
+      std::string v = checked_decimal(states, states.line_of_row[i], c, states.rows[i][c]);
+      if (o.binary64_inputs) v = nearest_binary64(v, where(states, states.line_of_row[i], c));
+      r.values[i].push_back(v);
     }
+  p_ = built;
+}
 
-  std::vector<state_result> results(states.rows.size());
-  const auto start = std::chrono::steady_clock::now();
-  auto last_report = start;
-  std::size_t refused = 0;
-  std::string scalar_bits;
-  for (std::size_t r = 0; r < states.rows.size(); ++r) {
-    state_result& s = results[r];
-    s.name = first ? trim(states.rows[r][0]) : std::to_string(r + 1);
-    json_value scene_json = root;
-    for (std::size_t c = 0; c < paths.size(); ++c) {
-      json_value* v = locate(scene_json, paths[c]);
-      v->type = json_value::kind::string;
-      v->text = values[r][c];
-      s.inputs.emplace_back(states.header[c + first], values[r][c]);
-    }
-    try {
-      const scene_input scene = read_scene(scene_json);
-      if (o.scalar == "interval") {
-        certify<interval>(scene, s);
-        scalar_bits = "interval 53";
-      } else {
-        const mp_precision_scope scope(o.bits.value_or(256));
-        certify<mpfi>(scene, s);
-        scalar_bits = "mpfi " + std::to_string(scalar_traits<mpfi>::precision_bits());
-      }
-      s.certified = true;
-    } catch (const input_error& e) {
-      s.reason = std::string("refused: ") + e.what();
-    } catch (const certification_error& e) {
-      s.reason = std::string("cannot certify: ") + e.what();
-    } catch (const domain_error& e) {
-      s.reason = std::string("cannot certify: ") + e.what();
-    }
-    if (!s.certified) {
-      ++refused;
-      s.quantities.clear();
-    }
-    const auto now = std::chrono::steady_clock::now();
-    if (now - last_report > std::chrono::seconds(1)) {
-      last_report = now;
-      std::cerr << "\rappell reference: " << r + 1 << "/" << states.rows.size() << " states" << std::flush;
-    }
+std::string parse_reference_arguments(int argc, char** argv, int first, reference_options& r) {
+  std::vector<std::string> positional;
+  for (int i = first; i < argc; ++i) {
+    const std::string a = argv[i];
+    const bool takes_value = a == "--states" || a == "--scalar" || a == "--bits" || a == "--inputs" || a == "--out";
+    if (takes_value && i + 1 >= argc) return a + ": missing value";
+    if (a == "--states") r.states = argv[++i];
+    else if (a == "--scalar") r.scalar = argv[++i];
+    else if (a == "--out") r.out_dir = argv[++i];
+    else if (a == "--inputs") {
+      const std::string v = argv[++i];
+      if (v != "decimal" && v != "binary64") return "--inputs: expected decimal or binary64, got '" + v + "'";
+      r.binary64_inputs = v == "binary64";
+    } else if (a == "--bits") {
+      const std::string b = argv[++i];
+      if (b.empty() || b.find_first_not_of("0123456789") != std::string::npos || b.size() > 6 || std::stoul(b) < 2 ||
+          std::stoul(b) > 100000)
+        return "--bits: expected an integer from 2 to 100000, got '" + b + "'";
+      r.bits = static_cast<unsigned>(std::stoul(b));
+    } else if (!a.empty() && a[0] == '-') return "reference: unknown option '" + a + "'";
+    else positional.push_back(a);
   }
-  if (last_report != start) std::cerr << "\r" << std::string(50, ' ') << "\r";
+  if (positional.size() != 1) return "reference: expected one scene";
+  if (r.states.empty()) return "reference: --states FILE is required";
+  if (r.out_dir.empty()) return "reference: --out DIR is required";
+  r.scene = positional[0];
+  return "";
+}
 
-  // Outputs, assembled in full, then written whole.
-  std::ostringstream csv, jsonl;
-  csv << "state,quantity,status,lower,upper,double,decided,rel_error_bound,tolerance,reason\n";
-  for (const state_result& s : results) {
-    nlohmann::ordered_json line;
-    line["state"] = s.name;
-    line["status"] = s.certified ? "certified" : "refused";
-    nlohmann::ordered_json inputs = nlohmann::ordered_json::object();
-    for (const auto& [k, v] : s.inputs) inputs[k] = v;
-    line["inputs"] = inputs;
-    if (!s.certified) {
-      line["reason"] = s.reason;
-      csv << csv_field(s.name) << ",,refused,,,,,,," << csv_field(s.reason) << "\n";
+std::size_t reference_run::states() const { return p_->states.rows.size(); }
+
+reference_state_output reference_run::compute(std::size_t i) const {
+  const impl& r = *p_;
+  state_result s;
+  s.name = r.first ? trim(r.states.rows[i][0]) : std::to_string(i + 1);
+  json_value scene_json = r.root;
+  for (std::size_t c = 0; c < r.paths.size(); ++c) {
+    json_value* v = locate(scene_json, r.paths[c]);
+    v->type = json_value::kind::string;
+    v->text = r.values[i][c];
+    s.inputs.emplace_back(r.states.header[c + r.first], r.values[i][c]);
+  }
+  try {
+    const scene_input scene = read_scene(scene_json);
+    if (r.o.scalar == "interval") {
+      certify<interval>(scene, s);
     } else {
-      line["error_amplification"] = s.amplification;
-      nlohmann::ordered_json qs = nlohmann::ordered_json::object();
-      for (const quantity& q : s.quantities) {
-        csv << csv_field(s.name) << "," << q.name << ",certified," << q.lower << "," << q.upper << "," << q.nearest_double
-            << "," << (q.decided ? 1 : 0) << "," << q.rel_error_bound << "," << q.tolerance << ",\n";
-        nlohmann::ordered_json j;
-        j["lower"] = q.lower;
-        j["upper"] = q.upper;
-        j["double"] = q.nearest_double;
-        j["decided"] = q.decided;
-        if (!q.rel_error_bound.empty()) j["rel_error_bound"] = q.rel_error_bound;
-        j["tolerance"] = q.tolerance;
-        qs[q.name] = j;
-      }
-      line["quantities"] = qs;
+      const mp_precision_scope scope(r.o.bits.value_or(256));
+      certify<mpfi>(scene, s);
     }
-    jsonl << line.dump() << "\n";
+    s.certified = true;
+  } catch (const input_error& e) {
+    s.reason = std::string("refused: ") + e.what();
+  } catch (const certification_error& e) {
+    s.reason = std::string("cannot certify: ") + e.what();
+  } catch (const domain_error& e) {
+    s.reason = std::string("cannot certify: ") + e.what();
   }
-  const scene_input base = read_scene(root);
+  // The dataset's lines for this state: the same text whichever process computes them.
+  reference_state_output out;
+  out.certified = s.certified;
+  std::ostringstream csv;
+  nlohmann::ordered_json line;
+  line["state"] = s.name;
+  line["status"] = s.certified ? "certified" : "refused";
+  nlohmann::ordered_json inputs = nlohmann::ordered_json::object();
+  for (const auto& [k, v] : s.inputs) inputs[k] = v;
+  line["inputs"] = inputs;
+  if (!s.certified) {
+    line["reason"] = s.reason;
+    csv << csv_field(s.name) << ",,refused,,,,,,," << csv_field(s.reason) << "\n";
+  } else {
+    line["error_amplification"] = s.amplification;
+    nlohmann::ordered_json qs = nlohmann::ordered_json::object();
+    for (const quantity& q : s.quantities) {
+      csv << csv_field(s.name) << "," << q.name << ",certified," << q.lower << "," << q.upper << "," << q.nearest_double
+          << "," << (q.decided ? 1 : 0) << "," << q.rel_error_bound << "," << q.tolerance << ",\n";
+      nlohmann::ordered_json j;
+      j["lower"] = q.lower;
+      j["upper"] = q.upper;
+      j["double"] = q.nearest_double;
+      j["decided"] = q.decided;
+      if (!q.rel_error_bound.empty()) j["rel_error_bound"] = q.rel_error_bound;
+      j["tolerance"] = q.tolerance;
+      qs[q.name] = j;
+    }
+    line["quantities"] = qs;
+  }
+  out.csv = csv.str();
+  out.jsonl = line.dump() + "\n";
+  return out;
+}
+
+int reference_run::write(const std::vector<reference_state_output>& outputs, int processes) const {
+  const impl& r = *p_;
+  const reference_options& o = r.o;
+  if (outputs.size() != states()) throw std::logic_error("reference_run::write: one output per state expected");
+  std::string csv = "state,quantity,status,lower,upper,double,decided,rel_error_bound,tolerance,reason\n", jsonl;
+  std::size_t refused = 0;
+  for (const reference_state_output& s : outputs) {
+    csv += s.csv;
+    jsonl += s.jsonl;
+    if (!s.certified) ++refused;
+  }
+  const scene_input base = read_scene(r.root);
+  unsigned bits = 53;
+  if (o.scalar == "mpfi") {
+    const mp_precision_scope scope(o.bits.value_or(256));
+    bits = scalar_traits<mpfi>::precision_bits();
+  }
   nlohmann::ordered_json manifest;
   manifest["appell_version"] = APPELL_VERSION_STRING;
   manifest["git_revision"] = APPELL_GIT_REVISION;
@@ -523,14 +569,15 @@ int reference(const reference_options& o) {
   manifest["scene"] = o.scene;
   manifest["model"] = base.model;
   manifest["scalar"] = o.scalar;
-  manifest["bits"] = scalar_bits.empty() ? 0 : std::stoi(scalar_bits.substr(scalar_bits.find(' ') + 1));
+  manifest["bits"] = bits;
   manifest["inputs"] = o.binary64_inputs ? "binary64" : "decimal";
-  manifest["scene_sha256"] = sha256(scene_text);
+  manifest["scene_sha256"] = sha256(r.scene_text);
   manifest["states_file"] = o.states;
-  manifest["states_sha256"] = sha256(states_text);
+  manifest["states_sha256"] = sha256(r.states_text);
   manifest["date"] = iso_date_utc();
-  manifest["states"] = results.size();
-  manifest["certified"] = results.size() - refused;
+  manifest["processes"] = processes;
+  manifest["states"] = outputs.size();
+  manifest["certified"] = outputs.size() - refused;
   manifest["refused"] = refused;
   manifest["tolerance_rule"] =
       "16 x max(error_amplification x 2^-53 x the largest |component| of the same result, width of appell's "
@@ -539,18 +586,49 @@ int reference(const reference_options& o) {
 
   const std::filesystem::path dir(o.out_dir);
   std::filesystem::create_directories(dir);
-  write_whole(dir, "reference.csv", csv.str());
-  write_whole(dir, "reference.jsonl", jsonl.str());
+  write_whole(dir, "reference.csv", csv);
+  write_whole(dir, "reference.jsonl", jsonl);
   write_whole(dir, "manifest.json", manifest.dump(2) + "\n");
-  std::cout << "appell reference: " << results.size() - refused << " of " << results.size() << " states certified ("
-            << o.scalar << (scalar_bits.empty() ? "" : ", " + scalar_bits.substr(scalar_bits.find(' ') + 1) + " bits")
+  std::cout << "appell reference: " << outputs.size() - refused << " of " << outputs.size() << " states certified ("
+            << o.scalar << ", " << bits << " bits" << (processes > 1 ? ", " + std::to_string(processes) + " processes" : "")
             << "); wrote " << (dir / "reference.csv").string() << ", reference.jsonl, manifest.json\n";
   if (refused) {
-    std::cerr << "appell: " << refused << " of " << results.size()
+    std::cerr << "appell: " << refused << " of " << outputs.size()
               << " states refused or not certified (their reasons are in reference.csv)\n";
     return 3;
   }
   return 0;
+}
+
+progress_line::progress_line(std::string what, std::size_t total)
+    : what_(std::move(what)), total_(total), start_(std::chrono::steady_clock::now()), last_(start_) {}
+
+void progress_line::update(std::size_t done) {
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_ < std::chrono::seconds(1)) return;
+  last_ = now;
+  shown_ = true;
+  const double seconds = std::chrono::duration<double>(now - start_).count();
+  std::cerr << "\r" << what_ << ": " << done << "/" << total_ << " states, " << std::fixed << std::setprecision(0)
+            << (seconds > 0 ? done / seconds : 0.0) << " per second" << std::defaultfloat << "   " << std::flush;
+}
+
+progress_line::~progress_line() {
+  if (shown_) std::cerr << "\r" << std::string(70, ' ') << "\r" << std::flush;
+}
+
+int reference(const reference_options& o) {
+  const reference_run run(o);
+  std::vector<reference_state_output> outputs;
+  outputs.reserve(run.states());
+  {
+    progress_line progress("appell reference", run.states());
+    for (std::size_t i = 0; i < run.states(); ++i) {
+      outputs.push_back(run.compute(i));
+      progress.update(i + 1);
+    }
+  }
+  return run.write(outputs, 1);
 }
 
 // ---------------------------------------------------------------------------

@@ -17,8 +17,11 @@
 //   --min-digits D, every quantity has at least D correct digits), 1 otherwise.
 #pragma once
 
+#include <chrono>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace appell::cli {
 
@@ -31,6 +34,48 @@ struct reference_options {
 
 /// Returns the process exit status (0: every state certified; 3: some refused, counted on stderr).
 int reference(const reference_options& o);
+
+/// One state's lines of the dataset (the same text whichever process computes them).
+struct reference_state_output {
+  std::string csv, jsonl;
+  bool certified = false;
+};
+
+/// `appell reference` in three steps, so that a distributed run (appell-mpi) can
+/// share the states out: the constructor reads and checks every input (input_error
+/// for bad input: nothing is computed or written); compute(i) certifies state i;
+/// write() assembles the outputs in the states' order and writes them whole.
+class reference_run {
+ public:
+  explicit reference_run(const reference_options& o);
+  std::size_t states() const;
+  reference_state_output compute(std::size_t i) const;
+  /// Returns the exit status (0, or 3 when some states were refused).
+  int write(const std::vector<reference_state_output>& outputs, int processes) const;
+
+ private:
+  struct impl;
+  std::shared_ptr<const impl> p_;
+};
+
+/// "WHAT: k/N states, R per second" on stderr, at most once a second, erased at the end.
+class progress_line {
+ public:
+  progress_line(std::string what, std::size_t total);
+  ~progress_line();
+  progress_line(const progress_line&) = delete;
+  progress_line& operator=(const progress_line&) = delete;
+  void update(std::size_t done);
+
+ private:
+  std::string what_;
+  std::size_t total_;
+  std::chrono::steady_clock::time_point start_, last_;
+  bool shown_ = false;
+};
+
+/// Parses the arguments of `reference` (argv[first..]); returns "" or the usage error.
+std::string parse_reference_arguments(int argc, char** argv, int first, reference_options& o);
 
 struct score_options {
   std::string reference_dir, other, plot;
