@@ -543,3 +543,43 @@ BOOST_AUTO_TEST_CASE(reference_and_score_refuse_bad_files_naming_line_and_column
   expect_bad_input("score " + (work / "nowhere").string() + " " + text_file("c2.csv", "state\n"), "reference.csv");
   expect_bad_input("score " + ref + " " + text_file("c3.csv", "state,omega_dot[0]\na,1\n") + " --min-digits x", "--min-digits");
 }
+
+BOOST_AUTO_TEST_CASE(reference_draws_states_in_a_box_reproducibly) {
+  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/heavy_top.json";
+  const std::string box = "\"theta=0.2:2.9,phi_dot=-60:60,psi_dot=-5:5\"";
+  const std::string a = (work / "box_a").string(), b = (work / "box_b").string(), c = (work / "box_c").string();
+  BOOST_TEST_REQUIRE(run("reference " + scene + " --box " + box + " --n 300 --seed 9 --out " + a).status == 0);
+  BOOST_TEST_REQUIRE(run("reference " + scene + " --box " + box + " --n 300 --seed 9 --out " + b).status == 0);
+  BOOST_TEST_REQUIRE(run("reference " + scene + " --box " + box + " --n 300 --seed 10 --out " + c).status == 0);
+  BOOST_TEST(slurp(a + "/reference.jsonl") == slurp(b + "/reference.jsonl"));
+  BOOST_TEST(slurp(a + "/reference.jsonl") != slurp(c + "/reference.jsonl"));
+  // every drawn value on the grid of 6 decimals, inside the box; the ends of the ranges reached nearly
+  std::istringstream lines(slurp(a + "/reference.jsonl"));
+  std::string line;
+  double lo = 10, hi = -10;
+  int n = 0;
+  while (std::getline(lines, line)) {
+    const json_value j = parse_json(line);
+    const json_value* inputs = j.find("inputs");
+    BOOST_TEST_REQUIRE(inputs->members.size() == 3u);
+    const std::string theta = inputs->find("theta")->text;
+    BOOST_TEST(theta.size() - theta.find('.') - 1 == 6u, theta);
+    const double t = std::stod(theta), p = std::stod(inputs->find("phi_dot")->text);
+    BOOST_TEST((t >= 0.2 && t <= 2.9), theta);
+    BOOST_TEST((p >= -60 && p <= 60));
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+    ++n;
+  }
+  BOOST_TEST(n == 300);
+  BOOST_TEST(lo < 0.3);
+  BOOST_TEST(hi > 2.8);
+  const json_value manifest = parse_json(slurp(a + "/manifest.json"));
+  BOOST_TEST(manifest.find("seed")->text == "9");
+  expect_bad_input("reference " + scene + " --box \"theta=1:0\" --n 3 --out " + c, "--box theta: the lower end exceeds");
+  expect_bad_input("reference " + scene + " --box \"theta=0.1234567:1\" --n 3 --out " + c, "more than --digits 6 decimals");
+  expect_bad_input("reference " + scene + " --box theta --n 3 --out " + c, "is not field=lo:hi");
+  expect_bad_input("reference " + scene + " --box \"theta=0:1\" --out " + c, "--box needs --n N");
+  expect_bad_input("reference " + scene + " --box \"theta=0:1\" --n 0 --out " + c, "--n: expected");
+  expect_bad_input("reference " + scene + " --box \"theta=0:1\" --n 2 --states x.csv --out " + c, "exclude each other");
+}

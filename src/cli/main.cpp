@@ -28,7 +28,8 @@ constexpr const char* usage_text =
     "       appell tradeoff SCENE [--out DIR] [--reps N]\n"
     "       appell extremes [--out DIR]\n"
     "       appell linearize SCENE [--scalar NAME] [--bits N] [--format json|text]\n"
-    "       appell reference SCENE --states FILE [--scalar interval|mpfi] [--bits N] [--inputs decimal|binary64] --out DIR\n"
+    "       appell reference SCENE (--states FILE | --box SPEC --n N [--seed S] [--digits D]) [--scalar interval|mpfi]\n"
+    "                        [--bits N] [--inputs decimal|binary64] --out DIR\n"
     "       appell score REFERENCE_DIR OTHER.csv [--min-digits D] [--plot FILE.png]\n"
     "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
     "  --bits N: precision of mpfr and mpfi (default 256): mpfi gets exactly N bits; mpfr the\n"
@@ -37,7 +38,8 @@ constexpr const char* usage_text =
     "  linearize: the linearized equations of a system file about its \"linearize\" section's motion,\n"
     "             their eigenvalues and the speeds where a real part crosses 0 (enclosed in interval, mpfi)\n"
     "  reference: certified values of a scene's results at many states (FILE: CSV, a header naming the\n"
-    "             state's fields); DIR/reference.csv, reference.jsonl, manifest.json; exit 3 if any refused\n"
+    "             state's fields; SPEC: field=lo:hi,...); DIR/reference.csv, reference.jsonl, manifest.json;\n"
+    "             exit 3 if any refused\n"
     "  score: another implementation's values (CSV: state, then columns named as appell's results)\n"
     "         against a reference: inside, correct digits, within tolerance; exit 0 iff all within\n";
 

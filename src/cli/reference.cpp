@@ -16,6 +16,7 @@
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <sstream>
 
 #include "appell/io/scene.hpp"
@@ -400,6 +401,85 @@ std::string csv_field(const std::string& s) {
 
 }  // namespace
 
+/// A decimal with at most `digits` decimals as an integer count of 10^-digits; input_error otherwise.
+long long scaled_decimal(const std::string& text, int digits, const std::string& field) {
+  std::size_t i = 0;
+  const bool negative = !text.empty() && (text[0] == '-' || text[0] == '+') ? text[i++] == '-' : false;
+  std::string whole, fraction;
+  bool dot = false;
+  for (; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '.' && !dot) dot = true;
+    else if (c >= '0' && c <= '9') (dot ? fraction : whole) += c;
+    else throw input_error(field + ": '" + printable(text) + "' is not a plain decimal (digits, one point, a sign)");
+  }
+  if (whole.empty() && fraction.empty()) throw input_error(field + ": '" + printable(text) + "' is not a number");
+  while (!fraction.empty() && fraction.back() == '0') fraction.pop_back();
+  if (static_cast<int>(fraction.size()) > digits)
+    throw input_error(field + ": '" + printable(text) + "' has more than --digits " + std::to_string(digits) + " decimals");
+  fraction.resize(static_cast<std::size_t>(digits), '0');
+  const std::string all = whole + fraction;
+  const std::size_t first = std::min(all.find_first_not_of('0'), all.size());
+  if (all.size() - first > 17) throw input_error(field + ": '" + printable(text) + "' is too large for the box's grid");
+  const long long v = all.size() == first ? 0 : std::stoll(all.substr(first));
+  return negative ? -v : v;
+}
+
+std::string unscaled_decimal(long long v, int digits) {
+  std::string t = std::to_string(v < 0 ? -v : v);
+  if (static_cast<int>(t.size()) <= digits) t.insert(0, static_cast<std::size_t>(digits + 1) - t.size(), '0');
+  if (digits > 0) t.insert(t.size() - static_cast<std::size_t>(digits), ".");
+  return (v < 0 ? "-" : "") + t;
+}
+
+/// An integer uniform on [0, range] from mt19937_64's raw outputs (rejection: no implementation-defined distribution).
+std::uint64_t uniform_up_to(std::mt19937_64& rng, std::uint64_t range) {
+  if (range == UINT64_MAX) return rng();
+  const std::uint64_t span = range + 1, limit = UINT64_MAX - UINT64_MAX % span;
+  std::uint64_t x;
+  do x = rng();
+  while (x >= limit);
+  return x % span;
+}
+
+/// The states of --box SPEC --n N --seed S --digits D, as a table like a states file's.
+csv_table box_states(const reference_options& o) {
+  csv_table t;
+  t.path = "--box";
+  if (o.n == 0 || o.n > 10000000) throw input_error("--n: expected a number of states from 1 to 10000000");
+  if (o.digits < 0 || o.digits > 12) throw input_error("--digits: expected 0 to 12");
+  struct range {
+    long long lo, hi;
+  };
+  std::vector<range> ranges;
+  t.header.push_back("state");
+  std::stringstream spec(o.box);
+  std::string item;
+  while (std::getline(spec, item, ',')) {
+    const auto eq = item.find('='), colon = item.find(':', eq == std::string::npos ? 0 : eq);
+    if (eq == std::string::npos || colon == std::string::npos || eq == 0)
+      throw input_error("--box: '" + printable(item) + "' is not field=lo:hi");
+    const std::string field = trim(item.substr(0, eq));
+    const std::string where_field = "--box " + field;
+    const long long lo = scaled_decimal(trim(item.substr(eq + 1, colon - eq - 1)), o.digits, where_field + " (lower end)");
+    const long long hi = scaled_decimal(trim(item.substr(colon + 1)), o.digits, where_field + " (upper end)");
+    if (hi < lo) throw input_error(where_field + ": the lower end exceeds the upper end");
+    t.header.push_back(field);
+    ranges.push_back({lo, hi});
+  }
+  if (ranges.empty()) throw input_error("--box: no field=lo:hi given");
+  std::mt19937_64 rng(o.seed);
+  for (std::size_t i = 0; i < o.n; ++i) {
+    std::vector<std::string> row{"b" + std::to_string(i)};
+    for (const range& r : ranges)
+      row.push_back(unscaled_decimal(r.lo + static_cast<long long>(uniform_up_to(rng, static_cast<std::uint64_t>(r.hi - r.lo))),
+                                     o.digits));
+    t.rows.push_back(row);
+    t.line_of_row.push_back(static_cast<int>(i) + 1);
+  }
+  return t;
+}
+
 struct reference_run::impl {
   reference_options o;
   std::string scene_text, states_text;
@@ -419,9 +499,15 @@ reference_run::reference_run(const reference_options& o) {
   r.scene_text = read_whole(o.scene, "the scene file");
   r.root = parse_json(r.scene_text);
   (void)read_scene(r.root);  // the scene itself must be valid
-  r.states = read_csv(o.states, "the states file");
-  if (r.states.rows.empty()) throw input_error(o.states + ": no states (a header line and no rows)");
-  r.states_text = read_whole(o.states, "the states file");
+  if (!o.box.empty()) {
+    r.states = box_states(o);
+    r.states_text = "box " + o.box + " n " + std::to_string(o.n) + " seed " + std::to_string(o.seed) + " digits " +
+                    std::to_string(o.digits);
+  } else {
+    r.states = read_csv(o.states, "the states file");
+    if (r.states.rows.empty()) throw input_error(o.states + ": no states (a header line and no rows)");
+    r.states_text = read_whole(o.states, "the states file");
+  }
   if (o.binary64_inputs) to_binary64(r.root, "");
   const csv_table& states = r.states;
   // Columns: `state` (names) and fields of the scene.
@@ -456,9 +542,27 @@ std::string parse_reference_arguments(int argc, char** argv, int first, referenc
   std::vector<std::string> positional;
   for (int i = first; i < argc; ++i) {
     const std::string a = argv[i];
-    const bool takes_value = a == "--states" || a == "--scalar" || a == "--bits" || a == "--inputs" || a == "--out";
+    const bool takes_value = a == "--states" || a == "--scalar" || a == "--bits" || a == "--inputs" || a == "--out" ||
+                             a == "--box" || a == "--n" || a == "--seed" || a == "--digits";
     if (takes_value && i + 1 >= argc) return a + ": missing value";
+    auto count = [](const std::string& v, std::size_t digits_max) {
+      return !v.empty() && v.size() <= digits_max && v.find_first_not_of("0123456789") == std::string::npos;
+    };
     if (a == "--states") r.states = argv[++i];
+    else if (a == "--box") r.box = argv[++i];
+    else if (a == "--n") {
+      const std::string v = argv[++i];
+      if (!count(v, 8) || std::stoull(v) == 0) return "--n: expected a number of states from 1 to 10000000, got '" + v + "'";
+      r.n = static_cast<std::size_t>(std::stoull(v));
+    } else if (a == "--seed") {
+      const std::string v = argv[++i];
+      if (!count(v, 19)) return "--seed: expected a nonnegative integer, got '" + v + "'";
+      r.seed = std::stoull(v);
+    } else if (a == "--digits") {
+      const std::string v = argv[++i];
+      if (!count(v, 2) || std::stoi(v) > 12) return "--digits: expected 0 to 12, got '" + v + "'";
+      r.digits = std::stoi(v);
+    }
     else if (a == "--scalar") r.scalar = argv[++i];
     else if (a == "--out") r.out_dir = argv[++i];
     else if (a == "--inputs") {
@@ -475,7 +579,10 @@ std::string parse_reference_arguments(int argc, char** argv, int first, referenc
     else positional.push_back(a);
   }
   if (positional.size() != 1) return "reference: expected one scene";
-  if (r.states.empty()) return "reference: --states FILE is required";
+  if (!r.states.empty() && !r.box.empty()) return "reference: --states and --box exclude each other";
+  if (r.states.empty() && r.box.empty()) return "reference: --states FILE (or --box SPEC --n N) is required";
+  if (!r.box.empty() && r.n == 0) return "reference: --box needs --n N";
+  if (r.box.empty() && r.n != 0) return "reference: --n goes with --box";
   if (r.out_dir.empty()) return "reference: --out DIR is required";
   r.scene = positional[0];
   return "";
@@ -572,7 +679,13 @@ int reference_run::write(const std::vector<reference_state_output>& outputs, int
   manifest["bits"] = bits;
   manifest["inputs"] = o.binary64_inputs ? "binary64" : "decimal";
   manifest["scene_sha256"] = sha256(r.scene_text);
-  manifest["states_file"] = o.states;
+  if (o.box.empty()) {
+    manifest["states_file"] = o.states;
+  } else {
+    manifest["box"] = o.box;
+    manifest["seed"] = o.seed;
+    manifest["digits"] = o.digits;
+  }
   manifest["states_sha256"] = sha256(r.states_text);
   manifest["date"] = iso_date_utc();
   manifest["processes"] = processes;

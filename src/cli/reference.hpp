@@ -1,7 +1,8 @@
 // The `appell reference` and `appell score` commands: certified reference
 // values for other implementations, and the scoring of their values.
 //
-// reference SCENE --states FILE --scalar interval|mpfi [--bits N] [--inputs decimal|binary64] --out DIR
+// reference SCENE (--states FILE | --box SPEC --n N [--seed S] [--digits D]) --scalar interval|mpfi [--bits N]
+//           [--inputs decimal|binary64] --out DIR
 //   Many states of one scene in one process.  FILE is CSV: a header naming the
 //   fields each row replaces in the scene (a plain name is a key of the scene's
 //   "state", `omega[1]` an entry of a list there; a dotted path such as
@@ -18,6 +19,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,6 +32,14 @@ struct reference_options {
   std::string scalar = "interval";
   std::optional<unsigned> bits;
   bool binary64_inputs = false;
+  // --box SPEC --n N [--seed S] [--digits D] instead of --states: N states drawn uniformly on the
+  // grid of D decimals (default 6) in the box SPEC = "field=lo:hi,field=lo:hi,..."; the other
+  // fields keep the scene's values.  Drawn from std::mt19937_64 (fixed by the C++ standard) by
+  // exact integer arithmetic: the same states on every machine.
+  std::string box;
+  std::size_t n = 0;
+  std::uint64_t seed = 1;
+  int digits = 6;
 };
 
 /// Returns the process exit status (0: every state certified; 3: some refused, counted on stderr).
