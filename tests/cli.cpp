@@ -511,7 +511,7 @@ BOOST_AUTO_TEST_CASE(reference_and_score_refuse_bad_files_naming_line_and_column
   const std::string ok = text_file("ok.csv", "omega[0],omega[1],omega[2]\n1,2,3\n");
   expect_bad_input("reference " + good_scene + " --states " + ok + " --scalar double --out " + out, "--scalar");
   expect_bad_input("reference " + good_scene + " --states " + ok, "--out DIR is required");
-  expect_bad_input("reference " + good_scene + " --out " + out, "--states FILE is required");
+  expect_bad_input("reference " + good_scene + " --out " + out, "--states FILE (or --box SPEC --n N) is required");
   expect_bad_input("reference " + good_scene + " --states " + ok + " --out " + out + " --inputs float", "--inputs");
 
   // score
@@ -582,4 +582,172 @@ BOOST_AUTO_TEST_CASE(reference_draws_states_in_a_box_reproducibly) {
   expect_bad_input("reference " + scene + " --box \"theta=0:1\" --out " + c, "--box needs --n N");
   expect_bad_input("reference " + scene + " --box \"theta=0:1\" --n 0 --out " + c, "--n: expected");
   expect_bad_input("reference " + scene + " --box \"theta=0:1\" --n 2 --states x.csv --out " + c, "exclude each other");
+}
+
+// The derived state (what the inputs imply but do not give) is echoed by eval and by reference:
+// exact values worked out by hand must lie in the enclosures.
+BOOST_AUTO_TEST_CASE(eval_and_reference_echo_the_derived_state) {
+  auto contains = [](const json_value* x, const std::string& exact) {
+    mpfr_value lo(320), hi(320), v(320);
+    mpfr_set_str(lo, x->find("lo")->text.c_str(), 10, MPFR_RNDD);
+    mpfr_set_str(hi, x->find("hi")->text.c_str(), 10, MPFR_RNDU);
+    mpfr_set_str(v, exact.c_str(), 10, MPFR_RNDN);
+    return mpfr_cmp(lo, v) <= 0 && mpfr_cmp(v, hi) <= 0;
+  };
+  // The bowl: c = (0.54, 0, -0.72), |c| = 0.9, inside: n = -c/|c| = (-0.6, 0, 0.8), a = 0.1:
+  // contact point c - a n = (0.6, 0, -0.8); omega = (0, 2, 0): v_G = omega x a n = (0.16, 0, 0.12).
+  const outcome bowl = run(std::string("eval ") + APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_bowl.json --scalar interval");
+  BOOST_TEST_REQUIRE(bowl.status == 0, bowl.err);
+  const json_value b = parse_json(bowl.out);
+  const json_value* derived = b.find("derived");
+  BOOST_TEST_REQUIRE(derived != nullptr);
+  const char* expected[3][3] = {{"0.6", "0", "-0.8"}, {"-0.6", "0", "0.8"}, {"0.16", "0", "0.12"}};
+  const char* names[3] = {"contact_point", "normal", "center_velocity"};
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 3; ++i)
+      BOOST_TEST(contains(&derived->find(names[k])->items[static_cast<std::size_t>(i)], expected[k][i]),
+                 names[k] << "[" << i << "]");
+  // The cone psi = 0.5 theta + 0.1 sin(2 theta) at theta = 0.7, theta' = 1.2:
+  // psi = 0.35 + 0.1 sin 1.4, psi' = (0.5 + 0.2 cos 1.4) 1.2, here at 320 bits.
+  const outcome cone = run(std::string("eval ") + APPELL_SOURCE_DIR "/data/scenes/top_on_cone.json --scalar mpfi --bits 113");
+  BOOST_TEST_REQUIRE(cone.status == 0, cone.err);
+  const json_value c = parse_json(cone.out);
+  mpfr_value x(320), psi(320), psid(320);
+  mpfr_set_str(x, "1.4", 10, MPFR_RNDN);
+  mpfr_sin(psi, x, MPFR_RNDN);
+  mpfr_div_ui(psi, psi, 10, MPFR_RNDN);
+  mpfr_value t(320);
+  mpfr_set_str(t, "0.35", 10, MPFR_RNDN);
+  mpfr_add(psi, psi, t, MPFR_RNDN);
+  mpfr_cos(psid, x, MPFR_RNDN);
+  mpfr_mul_ui(psid, psid, 2, MPFR_RNDN);
+  mpfr_div_ui(psid, psid, 10, MPFR_RNDN);
+  mpfr_set_str(t, "0.5", 10, MPFR_RNDN);
+  mpfr_add(psid, psid, t, MPFR_RNDN);
+  mpfr_set_str(t, "1.2", 10, MPFR_RNDN);
+  mpfr_mul(psid, psid, t, MPFR_RNDN);
+  for (const auto& [name, value] : {std::pair<const char*, const mpfr_value*>{"psi", &psi}, {"psi_dot", &psid}}) {
+    const json_value* e = c.find("derived")->find(name);
+    BOOST_TEST_REQUIRE(e != nullptr);
+    mpfr_value lo(320), hi(320);
+    mpfr_set_str(lo, e->find("lo")->text.c_str(), 10, MPFR_RNDD);
+    mpfr_set_str(hi, e->find("hi")->text.c_str(), 10, MPFR_RNDU);
+    BOOST_TEST((mpfr_cmp(lo, *value) <= 0 && mpfr_cmp(*value, hi) <= 0), name);
+  }
+  // reference echoes them under "derived" in its JSON Lines (and as rows of its CSV)
+  const std::string out = (work / "ref_derived").string();
+  const std::string states = text_file("bowl_states.csv", "center[0],center[1],center[2],omega[0],omega[1],omega[2]\n0.54,0,-0.72,0,2,0\n");
+  BOOST_TEST_REQUIRE(run(std::string("reference ") + APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_bowl.json --states " + states +
+                         " --scalar mpfi --out " + out).status == 0);
+  const json_value line = parse_json(slurp(out + "/reference.jsonl"));
+  BOOST_TEST(line.find("derived")->find("contact_point[0]") != nullptr);
+  BOOST_TEST(slurp(out + "/reference.csv").find("\n1,center_velocity[2],certified,") != std::string::npos);
+}
+
+// A state exported by an engine as 17-digit decimals lies off the surface of centres by ~1e-17:
+// the rigorous scalars refuse it; with --project TOL appell certifies the values at its projection
+// onto the constraints, which must meet the values at the projection computed here at 400 bits.
+BOOST_AUTO_TEST_CASE(reference_projects_engine_states_onto_the_constraints) {
+  const std::string head = R"({"model": "rolling_sphere", "sphere": {"mass": "2", "radius": "0.1"},
+    "surface": {"type": "sphere", "radius": "1", "side": "inside"}, "gravity": ["0", "0", "-9.81"],
+    "state": {"center": [)";
+  std::mt19937_64 rng(5);
+  std::ostringstream states;
+  states << "state,center[0],center[1],center[2],omega[0],omega[1],omega[2]\n";
+  std::vector<std::array<std::string, 6>> rows;
+  for (int i = 0; i < 20; ++i) {
+    // on the surface of centres (rho = 0.9, lower half), omega normal to c: as a double engine prints them
+    const double th = std::uniform_real_distribution<double>(0.3, 1.4)(rng), ph = std::uniform_real_distribution<double>(-3, 3)(rng);
+    const double c[3] = {0.9 * std::sin(th) * std::cos(ph), 0.9 * std::sin(th) * std::sin(ph), -0.9 * std::cos(th)};
+    const double t1[3] = {-std::sin(ph), std::cos(ph), 0}, t2[3] = {std::cos(th) * std::cos(ph), std::cos(th) * std::sin(ph), std::sin(th)};
+    const double p = std::uniform_real_distribution<double>(-5, 5)(rng), q = std::uniform_real_distribution<double>(-5, 5)(rng);
+    std::array<std::string, 6> row;
+    char buffer[40];
+    for (int k = 0; k < 3; ++k) {
+      std::snprintf(buffer, sizeof buffer, "%.17g", c[k]);
+      row[static_cast<std::size_t>(k)] = buffer;
+      std::snprintf(buffer, sizeof buffer, "%.17g", p * t1[k] + q * t2[k]);
+      row[static_cast<std::size_t>(3 + k)] = buffer;
+    }
+    rows.push_back(row);
+    states << "e" << i;
+    for (const auto& x : row) states << "," << x;
+    states << "\n";
+  }
+  const std::string scene = scene_file("bowl_engine", head + R"("0.54", "0", "-0.72"], "omega": ["0", "2", "0"]}})");
+  const std::string states_file = text_file("bowl_engine.csv", states.str());
+  // without --project: refused in mpfi (the residual ~1e-17 is no rounding error at 256 bits)
+  const std::string strict = (work / "ref_strict").string();
+  const outcome s = run("reference " + scene + " --states " + states_file + " --scalar mpfi --out " + strict);
+  BOOST_TEST(s.status == 3, s.err);
+  BOOST_TEST(slurp(strict + "/reference.csv").find("not on the surface of centres") != std::string::npos);
+  // with --project 1e-12: certified
+  const std::string projected = (work / "ref_projected").string();
+  const outcome o = run("reference " + scene + " --states " + states_file + " --scalar mpfi --bits 113 --project 1e-12 --out " + projected);
+  BOOST_TEST_REQUIRE(o.status == 0, o.err);
+  std::istringstream lines(slurp(projected + "/reference.jsonl"));
+  std::string line;
+  long met = 0;
+  for (int i = 0; std::getline(lines, line); ++i) {
+    const json_value j = parse_json(line);
+    // the projection at 400 bits: c* = rho c / |c|, omega* = omega - (omega . c / |c|^2) c, to 100 digits
+    mpfr_value c[3], w[3], n2(400), cw(400), t(400), rho(400);
+    for (int k = 0; k < 3; ++k) {
+      c[k] = mpfr_value(400);
+      w[k] = mpfr_value(400);
+      mpfr_set_str(c[k], rows[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)].c_str(), 10, MPFR_RNDN);
+      mpfr_set_str(w[k], rows[static_cast<std::size_t>(i)][static_cast<std::size_t>(3 + k)].c_str(), 10, MPFR_RNDN);
+    }
+    mpfr_set_zero(n2, 1);
+    mpfr_set_zero(cw, 1);
+    for (int k = 0; k < 3; ++k) {
+      mpfr_mul(t, c[k], c[k], MPFR_RNDN);
+      mpfr_add(n2, n2, t, MPFR_RNDN);
+      mpfr_mul(t, c[k], w[k], MPFR_RNDN);
+      mpfr_add(cw, cw, t, MPFR_RNDN);
+    }
+    mpfr_set_str(rho, "0.9", 10, MPFR_RNDN);
+    std::string cs, ws;
+    for (int k = 0; k < 3; ++k) {
+      mpfr_value ck(400), wk(400);
+      mpfr_sqrt(t, n2, MPFR_RNDN);
+      mpfr_div(ck, c[k], t, MPFR_RNDN);
+      mpfr_mul(ck, ck, rho, MPFR_RNDN);
+      mpfr_div(t, cw, n2, MPFR_RNDN);
+      mpfr_mul(t, t, c[k], MPFR_RNDN);
+      mpfr_sub(wk, w[k], t, MPFR_RNDN);
+      char buffer[200];
+      mpfr_snprintf(buffer, sizeof buffer, "%.100Re", ck.get());
+      cs += std::string(k ? ", " : "") + "\"" + buffer + "\"";
+      mpfr_snprintf(buffer, sizeof buffer, "%.100Re", wk.get());
+      ws += std::string(k ? ", " : "") + "\"" + buffer + "\"";
+    }
+    const std::string truth_scene = scene_file("bowl_truth", head + cs + "], \"omega\": [" + ws + "]}}");
+    const outcome truth = run("eval " + truth_scene + " --scalar mpfi --bits 256");
+    BOOST_TEST_REQUIRE(truth.status == 0, truth.err);
+    const json_value results = *parse_json(truth.out).find("results");
+    for (const char* name : {"center_ddot", "omega_dot", "contact_force"})
+      for (int k = 0; k < 3; ++k) {
+        const json_value& exact = results.find(name)->items[static_cast<std::size_t>(k)];
+        const json_value* mine = j.find("quantities")->find(std::string(name) + "[" + std::to_string(k) + "]");
+        mpfr_value alo(400), ahi(400), blo(400), bhi(400);
+        mpfr_set_str(alo, exact.find("lo")->text.c_str(), 10, MPFR_RNDD);
+        mpfr_set_str(ahi, exact.find("hi")->text.c_str(), 10, MPFR_RNDU);
+        mpfr_set_str(blo, mine->find("lower")->text.c_str(), 10, MPFR_RNDD);
+        mpfr_set_str(bhi, mine->find("upper")->text.c_str(), 10, MPFR_RNDU);
+        BOOST_TEST_REQUIRE((mpfr_cmp(alo, bhi) <= 0 && mpfr_cmp(blo, ahi) <= 0),
+                           "e" << i << " " << name << "[" << k << "]: the projected enclosure misses the 256-bit one");
+        ++met;
+      }
+    BOOST_TEST(j.find("derived")->find("center_moved") != nullptr);
+  }
+  BOOST_TEST(met == 20 * 9);
+  // off by more than the tolerance: refused, naming the field
+  const std::string far = scene_file("bowl_far", head + R"("0.54", "0", "-0.7201"], "omega": ["0", "2", "0"]}, "project": "1e-12"})");
+  expect_bad_input("eval " + far + " --scalar interval", "state.center: off the surface of centres by");
+  expect_bad_input("eval " + scene_file("bowl_badtol", head + R"("0.54", "0", "-0.72"], "omega": ["0", "2", "0"]}, "project": "-1"})"),
+                   "project: a tolerance must be positive");
+  expect_bad_input("eval " + scene_file("heavy_project", R"({"model": "heavy_top", "top": {"A": "0.08", "C": "0.02", "mass": "1.5", "l": "0.2"},
+    "gravity": "9.81", "state": {"psi": "0", "theta": "0.7", "phi": "0.3", "psi_dot": "1.5", "theta_dot": "1.2", "phi_dot": "40"}, "project": "1e-9"})"),
+                   "project");
 }

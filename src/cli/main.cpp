@@ -29,7 +29,7 @@ constexpr const char* usage_text =
     "       appell extremes [--out DIR]\n"
     "       appell linearize SCENE [--scalar NAME] [--bits N] [--format json|text]\n"
     "       appell reference SCENE (--states FILE | --box SPEC --n N [--seed S] [--digits D]) [--scalar interval|mpfi]\n"
-    "                        [--bits N] [--inputs decimal|binary64] --out DIR\n"
+    "                        [--bits N] [--inputs decimal|binary64] [--project TOL] --out DIR\n"
     "       appell score REFERENCE_DIR OTHER.csv [--min-digits D] [--plot FILE.png]\n"
     "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
     "  --bits N: precision of mpfr and mpfi (default 256): mpfi gets exactly N bits; mpfr the\n"

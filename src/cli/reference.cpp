@@ -293,6 +293,7 @@ void to_binary64(json_value& v, const std::string& path) {
 struct quantity {
   std::string name, lower, upper, nearest_double, rel_error_bound, tolerance;
   bool decided = false;
+  bool derived = false;  ///< of the derived state (evaluation::derived), not a result
 };
 
 std::string mpfr_text(const mpfr_value& v, int digits, mpfr_rnd_t rnd) { return mpfr_to_decimal(v, digits, rnd); }
@@ -367,18 +368,22 @@ void certify(const scene_input& scene, state_result& r) {
   } catch (const std::exception&) {
   }
   r.amplification = error_amplification(scene);
-  for (std::size_t i = 0; i < e.results.size(); ++i) {
-    const auto& res = e.results[i];
-    double scale = 0;  // the largest |component| of this result
-    for (const T& v : res.values) {
-      mpfr_value lo, hi;
-      scalar_traits<T>::to_mpfr(v, lo, hi);
-      scale = std::max({scale, std::abs(mpfr_get_d(lo, MPFR_RNDN)), std::abs(mpfr_get_d(hi, MPFR_RNDN))});
-    }
-    for (std::size_t j = 0; j < res.values.size(); ++j) {
-      const std::string name = res.is_vector ? res.name + "[" + std::to_string(j) + "]" : res.name;
-      const interval* x53 = e53 ? &e53->results[i].values[j] : nullptr;
-      r.quantities.push_back(describe(name, res.values[j], x53, scale, r.amplification));
+  for (const bool derived : {false, true}) {
+    const auto& group = derived ? e.derived : e.results;
+    for (std::size_t i = 0; i < group.size(); ++i) {
+      const auto& res = group[i];
+      double scale = 0;  // the largest |component| of this result
+      for (const T& v : res.values) {
+        mpfr_value lo, hi;
+        scalar_traits<T>::to_mpfr(v, lo, hi);
+        scale = std::max({scale, std::abs(mpfr_get_d(lo, MPFR_RNDN)), std::abs(mpfr_get_d(hi, MPFR_RNDN))});
+      }
+      for (std::size_t j = 0; j < res.values.size(); ++j) {
+        const std::string name = res.is_vector ? res.name + "[" + std::to_string(j) + "]" : res.name;
+        const interval* x53 = e53 ? &(derived ? e53->derived : e53->results)[i].values[j] : nullptr;
+        r.quantities.push_back(describe(name, res.values[j], x53, scale, r.amplification));
+        r.quantities.back().derived = derived;
+      }
     }
   }
 }
@@ -498,6 +503,19 @@ reference_run::reference_run(const reference_options& o) {
     throw input_error("--scalar: reference values are certified: interval or mpfi, got '" + printable(o.scalar) + "'");
   r.scene_text = read_whole(o.scene, "the scene file");
   r.root = parse_json(r.scene_text);
+  if (!o.project.empty()) {  // the scene's "project", set or replaced
+    if (r.root.type != json_value::kind::object) throw input_error(o.scene + ": not a JSON object");
+    json_value tol;
+    tol.type = json_value::kind::string;
+    tol.text = o.project;
+    bool replaced = false;
+    for (auto& m : r.root.members)
+      if (m.key == "project") {
+        m.value = tol;
+        replaced = true;
+      }
+    if (!replaced) r.root.members.push_back({"project", tol});
+  }
   (void)read_scene(r.root);  // the scene itself must be valid
   if (!o.box.empty()) {
     r.states = box_states(o);
@@ -543,13 +561,14 @@ std::string parse_reference_arguments(int argc, char** argv, int first, referenc
   for (int i = first; i < argc; ++i) {
     const std::string a = argv[i];
     const bool takes_value = a == "--states" || a == "--scalar" || a == "--bits" || a == "--inputs" || a == "--out" ||
-                             a == "--box" || a == "--n" || a == "--seed" || a == "--digits";
+                             a == "--box" || a == "--n" || a == "--seed" || a == "--digits" || a == "--project";
     if (takes_value && i + 1 >= argc) return a + ": missing value";
     auto count = [](const std::string& v, std::size_t digits_max) {
       return !v.empty() && v.size() <= digits_max && v.find_first_not_of("0123456789") == std::string::npos;
     };
     if (a == "--states") r.states = argv[++i];
     else if (a == "--box") r.box = argv[++i];
+    else if (a == "--project") r.project = argv[++i];
     else if (a == "--n") {
       const std::string v = argv[++i];
       if (!count(v, 8) || std::stoull(v) == 0) return "--n: expected a number of states from 1 to 10000000, got '" + v + "'";
@@ -632,7 +651,7 @@ reference_state_output reference_run::compute(std::size_t i) const {
     csv << csv_field(s.name) << ",,refused,,,,,,," << csv_field(s.reason) << "\n";
   } else {
     line["error_amplification"] = s.amplification;
-    nlohmann::ordered_json qs = nlohmann::ordered_json::object();
+    nlohmann::ordered_json qs = nlohmann::ordered_json::object(), ds = nlohmann::ordered_json::object();
     for (const quantity& q : s.quantities) {
       csv << csv_field(s.name) << "," << q.name << ",certified," << q.lower << "," << q.upper << "," << q.nearest_double
           << "," << (q.decided ? 1 : 0) << "," << q.rel_error_bound << "," << q.tolerance << ",\n";
@@ -643,9 +662,10 @@ reference_state_output reference_run::compute(std::size_t i) const {
       j["decided"] = q.decided;
       if (!q.rel_error_bound.empty()) j["rel_error_bound"] = q.rel_error_bound;
       j["tolerance"] = q.tolerance;
-      qs[q.name] = j;
+      (q.derived ? ds : qs)[q.name] = j;
     }
     line["quantities"] = qs;
+    if (!ds.empty()) line["derived"] = ds;
   }
   out.csv = csv.str();
   out.jsonl = line.dump() + "\n";
@@ -678,6 +698,7 @@ int reference_run::write(const std::vector<reference_state_output>& outputs, int
   manifest["scalar"] = o.scalar;
   manifest["bits"] = bits;
   manifest["inputs"] = o.binary64_inputs ? "binary64" : "decimal";
+  if (!o.project.empty()) manifest["project"] = o.project;
   manifest["scene_sha256"] = sha256(r.scene_text);
   if (o.box.empty()) {
     manifest["states_file"] = o.states;

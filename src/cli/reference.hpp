@@ -2,7 +2,7 @@
 // values for other implementations, and the scoring of their values.
 //
 // reference SCENE (--states FILE | --box SPEC --n N [--seed S] [--digits D]) --scalar interval|mpfi [--bits N]
-//           [--inputs decimal|binary64] --out DIR
+//           [--inputs decimal|binary64] [--project TOL] --out DIR
 //   Many states of one scene in one process.  FILE is CSV: a header naming the
 //   fields each row replaces in the scene (a plain name is a key of the scene's
 //   "state", `omega[1]` an entry of a list there; a dotted path such as
@@ -32,6 +32,7 @@ struct reference_options {
   std::string scalar = "interval";
   std::optional<unsigned> bits;
   bool binary64_inputs = false;
+  std::string project;  ///< --project TOL: the scene's "project" (states off the constraints by <= TOL, projected)
   // --box SPEC --n N [--seed S] [--digits D] instead of --states: N states drawn uniformly on the
   // grid of D decimals (default 6) in the box SPEC = "field=lo:hi,field=lo:hi,..."; the other
   // fields keep the scene's values.  Drawn from std::mt19937_64 (fixed by the C++ standard) by

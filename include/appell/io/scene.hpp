@@ -60,6 +60,9 @@ template <Scalar T>
 struct evaluation {
   std::vector<named_result<T>> results;
   std::vector<named_result<T>> checks;
+  /// The state the scene's inputs imply but do not give (psi = f(theta) on the cone, the
+  /// sphere's contact point): echoed so that other programs need not rebuild it (may be empty).
+  std::vector<named_result<T>> derived;
   const named_result<T>& result(const std::string& name) const { return find(results, name); }
   const named_result<T>& check(const std::string& name) const { return find(checks, name); }
 
@@ -153,7 +156,7 @@ template <Scalar T>
 evaluation<T> compute(const prepared_scene<T>& scene) {
   const evaluation_scope<T> scope;
   evaluation<T> e = scene.run();
-  for (auto* group : {&e.results, &e.checks})
+  for (auto* group : {&e.results, &e.checks, &e.derived})
     for (auto& r : *group)
       for (std::size_t i = 0; i < r.values.size(); ++i) {
         scope.finish(r.values[i]);
@@ -219,7 +222,8 @@ std::string format_json(const scene_input& scene, const evaluation<T>& e) {
     return s + "}";
   };
   return "{\"model\": \"" + scene.model + "\", " + format_scalar_fields<T>() +
-         ",\n  \"results\": " + group(e.results) + ",\n  \"checks\": " + group(e.checks) + "}\n";
+         ",\n  \"results\": " + group(e.results) + ",\n  \"checks\": " + group(e.checks) +
+         (e.derived.empty() ? std::string() : ",\n  \"derived\": " + group(e.derived)) + "}\n";
 }
 
 /// A human-readable rendering of the same numbers.
@@ -237,6 +241,7 @@ std::string format_text(const scene_input& scene, const evaluation<T>& e) {
   };
   lines(e.results, "results:\n");
   lines(e.checks, "checks (0 if consistent):\n");
+  if (!e.derived.empty()) lines(e.derived, "derived state:\n");
   return s;
 }
 

@@ -147,6 +147,7 @@ struct rolling_sphere_result {
   T virtual_work_residual;
   mat3<T> axes;             ///< the trihedron (columns) on the fixed axes
   vec3<T> frame_rate;       ///< (P, Q, R)
+  vec3<T> normal, contact_point, center_velocity;  ///< the state the constraints imply (fixed axes)
 };
 
 /// Example II at centre c and rotation omega (fixed axes), with applied force
@@ -182,6 +183,9 @@ rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const 
   r.tangential_x = m.reactions(0);
   r.tangential_y = m.reactions(1);
   r.pivot_couple = m.reactions(3);
+  r.normal = vec3<T>(r.axes.col(2));
+  r.contact_point = c - r.normal * a;
+  r.center_velocity = mat_vec(r.axes, v);  // (a q, -a p, 0) on the trihedron: omega x a n
   // eq. (4) in Cotton's speeds (p, q, u_1, v_1, w, r), with the equations cotton_reactions formed there
   const auto adapted = change_speeds(sys, change, 6);
   vector_t<T> vv = vector_t<T>::Zero(6), vdot = vector_t<T>::Zero(6);

@@ -43,6 +43,10 @@ rolling_sphere_input rolling_sphere_model::read(object_reader& scene) {
   const std::vector<decimal_field> zero{{"0", "0"}, {"0", "0"}, {"0", "0"}};
   in.force = scene.has("force") ? scene.numbers("force", 3) : zero;
   in.torque = scene.has("torque") ? scene.numbers("torque", 3) : zero;
+  if (scene.has("project")) {
+    in.project = scene.number("project");
+    require_positive(scene, "project", *in.project, "a tolerance");
+  }
   object_reader state = scene.object("state");
   in.center = state.numbers("center", 3);
   in.omega = state.numbers("omega", 3);

@@ -18,6 +18,9 @@ struct rolling_sphere_input : model_input {
   bool inside = false;
   std::optional<decimal_field> b;  ///< the surface's radius (sphere, cylinder)
   std::vector<decimal_field> gravity, force, torque, center, omega;
+  /// "project": accept a state off the constraints by at most this (length for the centre,
+  /// rad/s for omega . n) and use its projection onto them, enclosed in the scalar's arithmetic.
+  std::optional<decimal_field> project;
 };
 
 struct rolling_sphere_model {
@@ -31,6 +34,8 @@ struct rolling_sphere_model {
     rolling_surface<T> surface;
     vec3<T> c, omega, F, tau;
     T on_surface, no_pivot;  ///< the constraint residuals at the state
+    bool projected = false;
+    T center_moved = T(0), omega_moved = T(0);  ///< the projection's steps along n (when projected)
   };
   template <Scalar T>
   static prepared<T> prepare(const input& in) {
@@ -47,17 +52,46 @@ struct rolling_sphere_model {
     m.F = detail::vec3_from_decimals<T>(in.gravity) * m.M + detail::vec3_from_decimals<T>(in.force);
     m.tau = detail::vec3_from_decimals<T>(in.torque);
     // The state must lie on the constraints: centre on the surface of centres, omega . n = 0.
-    T scale_c, scale_w = sqrt(dot(m.omega, m.omega));
-    if (in.surface == surface_type::plane) {
-      m.on_surface = m.c(2) - m.a;
-      m.no_pivot = m.omega(2);
-      scale_c = abs(m.c(2)) + m.a;
-    } else {
-      const vec3<T> radial = in.surface == surface_type::sphere ? m.c : vec3<T>(m.c(0), m.c(1), T(0));
-      const T norm = sqrt(dot(radial, radial));
-      m.on_surface = norm - m.surface.rho(m.a);
-      m.no_pivot = dot(m.omega, radial) / norm;
-      scale_c = norm + m.surface.b + m.a;  // rho = b -+ a may cancel: its error scales with b and a
+    T scale_c, scale_w;
+    auto residuals = [&] {
+      scale_w = sqrt(dot(m.omega, m.omega));
+      if (in.surface == surface_type::plane) {
+        m.on_surface = m.c(2) - m.a;
+        m.no_pivot = m.omega(2);
+        scale_c = abs(m.c(2)) + m.a;
+      } else {
+        const vec3<T> radial = in.surface == surface_type::sphere ? m.c : vec3<T>(m.c(0), m.c(1), T(0));
+        const T norm = sqrt(dot(radial, radial));
+        m.on_surface = norm - m.surface.rho(m.a);
+        m.no_pivot = dot(m.omega, radial) / norm;
+        scale_c = norm + m.surface.b + m.a;  // rho = b -+ a may cancel: its error scales with b and a
+      }
+    };
+    residuals();
+    if (in.project) {
+      // At most `project` off, then the nearest state on the constraints: the centre moved along
+      // the surface of centres' normal, omega's normal component removed (enclosed in T).
+      const T tol = value<T>(*in.project);
+      if (certainly_positive(T(abs(m.on_surface) - tol)))
+        throw input_error("state.center: off the surface of centres by " + to_string(m.on_surface) +
+                          ", more than project = " + in.project->text);
+      if (certainly_positive(T(abs(m.no_pivot) - tol)))
+        throw input_error("state.omega: omega . n = " + to_string(m.no_pivot) + ", more than project = " +
+                          in.project->text);
+      m.projected = true;
+      m.center_moved = -m.on_surface;
+      m.omega_moved = -m.no_pivot;
+      if (in.surface == surface_type::plane) {
+        m.c(2) = m.a;
+        m.omega(2) = T(0);
+      } else {
+        const vec3<T> radial = in.surface == surface_type::sphere ? m.c : vec3<T>(m.c(0), m.c(1), T(0));
+        const T norm2 = dot(radial, radial), factor = m.surface.rho(m.a) / sqrt(norm2);
+        const T along = dot(m.omega, radial) / norm2;
+        for (int i = 0; i < (in.surface == surface_type::sphere ? 3 : 2); ++i) m.c(i) = radial(i) * factor;
+        m.omega = vec3<T>(m.omega - radial * along);
+      }
+      residuals();
     }
     if (!consistent_with_zero(m.on_surface, scale_c))
       throw input_error("state.center: not on the surface of centres (residual " + to_string(m.on_surface) + ")");
@@ -84,6 +118,15 @@ struct rolling_sphere_model {
     e.checks.push_back(detail::scalar_result("pivot_couple_cotton_minus_lagrange", T(r.reactions(3) - r.multipliers(3))));
     e.checks.push_back(detail::scalar_result("surface_residual", m.on_surface));
     e.checks.push_back(detail::scalar_result("pivot_residual", m.no_pivot));
+    e.derived.push_back(detail::vector_result("contact_point", r.contact_point));
+    e.derived.push_back(detail::vector_result("normal", r.normal));
+    e.derived.push_back(detail::vector_result("center_velocity", r.center_velocity));
+    if (m.projected) {
+      e.derived.push_back(detail::vector_result("center", m.c));
+      e.derived.push_back(detail::vector_result("omega", m.omega));
+      e.derived.push_back(detail::scalar_result("center_moved", m.center_moved));
+      e.derived.push_back(detail::scalar_result("omega_moved", m.omega_moved));
+    }
     return e;
   }
 };

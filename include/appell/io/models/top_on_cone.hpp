@@ -49,6 +49,8 @@ struct top_on_cone_model {
     e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
     e.checks.push_back(detail::scalar_result("cotton_minus_lagrange", T(r.H - r.lagrange_multiplier)));
     e.checks.push_back(detail::scalar_result("theta_ddot_cotton_minus_lagrange", T(r.theta_ddot - r.theta_ddot_lagrange)));
+    e.derived.push_back(detail::scalar_result("psi", s.psi));
+    e.derived.push_back(detail::scalar_result("psi_dot", T(m.cone.fprime(m.theta) * m.theta_dot)));
     return e;
   }
 };
