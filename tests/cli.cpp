@@ -751,3 +751,63 @@ BOOST_AUTO_TEST_CASE(reference_projects_engine_states_onto_the_constraints) {
     "gravity": "9.81", "state": {"psi": "0", "theta": "0.7", "phi": "0.3", "psi_dot": "1.5", "theta_dot": "1.2", "phi_dot": "40"}, "project": "1e-9"})"),
                    "project");
 }
+
+BOOST_AUTO_TEST_CASE(simulate_and_enclose_refuse_bad_input_naming_the_flag) {
+  const std::string out = (work / "motion_bad").string();
+  const std::string top = APPELL_SOURCE_DIR "/data/scenes/heavy_top.json";
+  expect_bad_input("simulate " + good_scene + " --t-end -1 --out " + out, "--t-end");
+  expect_bad_input("simulate " + good_scene + " --t-end 0 --out " + out, "--t-end");
+  expect_bad_input("simulate " + good_scene + " --t-end ten --out " + out, "--t-end");
+  expect_bad_input("simulate " + good_scene + " --t-end nan --out " + out, "--t-end");
+  expect_bad_input("simulate " + good_scene + " --out " + out, "--t-end");
+  expect_bad_input("simulate " + good_scene + " --t-end 1 --order 1 --out " + out, "--order");
+  expect_bad_input("simulate " + good_scene + " --t-end 1 --order 61 --out " + out, "--order");
+  expect_bad_input("simulate " + good_scene + " --t-end 1 --order 2x --out " + out, "--order");
+  expect_bad_input("simulate " + good_scene + " --t-end 1 --every 2 --out " + out, "--every");
+  expect_bad_input("simulate " + good_scene + " --t-end 1 --every -0.1 --out " + out, "--every");
+  expect_bad_input("simulate " + good_scene + " --t-end 1 --tol 0 --out " + out, "--tol");
+  expect_bad_input("simulate " + good_scene + " --t-end 1", "--out");
+  expect_bad_input("simulate " + good_scene + " --t-end 1 --scalar interval --out " + out, "--scalar");
+  expect_bad_input("enclose " + good_scene + " --t-end 1 --scalar double --out " + out, "--scalar");
+  expect_bad_input("enclose " + good_scene + " --t-end 1 --every 0.1 --out " + out, "--every");
+  expect_bad_input("enclose " + good_scene + " --t-end 1 --bits 113 --out " + out, "--bits");
+  expect_bad_input("simulate " + std::string(APPELL_SOURCE_DIR "/data/scenes/top_on_cone.json") + " --t-end 1 --out " + out,
+                   "model");
+  // A state the scene refuses is refused as by eval (theta = 0: the Euler angles are singular).
+  expect_bad_input("simulate " +
+                       scene_file("top_upright", "{\"model\": \"heavy_top\", \"top\": {\"A\": \"0.08\", \"C\": \"0.02\", "
+                                                 "\"mass\": \"1.5\", \"l\": \"0.2\"}, \"gravity\": \"9.81\", \"state\": "
+                                                 "{\"psi\": \"0\", \"theta\": \"0\", \"phi\": \"0\", \"psi_dot\": \"1\", "
+                                                 "\"theta_dot\": \"0\", \"phi_dot\": \"40\"}}") +
+                       " --t-end 1 --out " + out,
+                   "theta");
+  BOOST_TEST(!std::filesystem::exists(out + "/trajectory.csv"));  // nothing written by a refused run
+  (void)top;
+}
+
+BOOST_AUTO_TEST_CASE(simulate_and_enclose_write_their_files_whole) {
+  const std::string sim = (work / "motion_sim").string(), enc = (work / "motion_enc").string();
+  const outcome s = run("simulate " + good_scene + " --t-end 2 --every 0.5 --out " + sim + " --quiet");
+  BOOST_TEST_REQUIRE(s.status == 0, s.err);
+  // header + rows at t = 0, 0.5, 1, 1.5, 2
+  std::ifstream f(sim + "/trajectory.csv");
+  std::string line;
+  int rows = 0;
+  std::getline(f, line);
+  BOOST_TEST(line == "t,p,q,r,omega_dot_x,omega_dot_y,omega_dot_z,energy,angular_momentum_squared");
+  std::vector<std::string> times;
+  while (std::getline(f, line)) {
+    ++rows;
+    times.push_back(line.substr(0, line.find(',')));
+  }
+  BOOST_TEST(rows == 5);
+  BOOST_TEST((times == std::vector<std::string>{"0", "0.5", "1", "1.5", "2"}));
+  BOOST_TEST(std::filesystem::exists(sim + "/summary.json"));
+  const outcome e = run("enclose " + good_scene + " --t-end 2 --out " + enc + " --quiet");
+  BOOST_TEST_REQUIRE(e.status == 0, e.err);
+  BOOST_TEST(e.out.find("certified up to t = 2") != std::string::npos, e.out);
+  const std::string summary = slurp(enc + "/summary.json");
+  BOOST_TEST(summary.find("\"complete\": true") != std::string::npos, summary);
+  for (const auto& entry : std::filesystem::directory_iterator(enc))
+    BOOST_TEST(entry.path().filename().string()[0] != '.', "a temporary file was left: " << entry.path());
+}

@@ -15,6 +15,7 @@
 #include "exit_status.hpp"
 #include "extremes.hpp"
 #include "linearize.hpp"
+#include "motion.hpp"
 #include "reference.hpp"
 #include "tradeoff.hpp"
 
@@ -31,6 +32,9 @@ constexpr const char* usage_text =
     "       appell reference SCENE (--states FILE | --box SPEC --n N [--seed S] [--digits D]) [--scalar interval|mpfi]\n"
     "                        [--bits N] [--inputs decimal|binary64] [--project TOL] --out DIR\n"
     "       appell score REFERENCE_DIR OTHER.csv [--min-digits D] [--plot FILE.png]\n"
+    "       appell simulate SCENE --t-end T [--scalar NAME] [--bits N] [--order N] [--tol E] [--every DT] --out DIR\n"
+    "       appell enclose SCENE --t-end T [--scalar interval|mpfi] [--bits N] [--order N] [--tol E]\n"
+    "                      [--max-width W] --out DIR\n"
     "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
     "  --bits N: precision of mpfr and mpfi (default 256): mpfi gets exactly N bits; mpfr the\n"
     "            smallest count >= N that Boost's decimal-digit precision can set (reported)\n"
@@ -41,7 +45,12 @@ constexpr const char* usage_text =
     "             state's fields; SPEC: field=lo:hi,...); DIR/reference.csv, reference.jsonl, manifest.json;\n"
     "             exit 3 if any refused\n"
     "  score: another implementation's values (CSV: state, then columns named as appell's results)\n"
-    "         against a reference: inside, correct digits, within tolerance; exit 0 iff all within\n";
+    "         against a reference: inside, correct digits, within tolerance; exit 0 iff all within\n"
+    "  simulate: adaptive Taylor steps in a point scalar; DIR/trajectory.csv (state, results, invariants\n"
+    "            every DT), summary.json, drift.png (models euler_body, heavy_top)\n"
+    "  enclose: a rigorous enclosure of the motion up to T; DIR/steps.csv (each step, the state at its end\n"
+    "           and over it, the results and invariants over it), summary.json, widths.png; exit 3 if it\n"
+    "           stops before T (what was enclosed is still written, marked incomplete)\n";
 
 struct options {
   std::string scene;
@@ -130,6 +139,17 @@ int main(int argc, char** argv) {
     if (!error.empty()) return usage(error);
     try {
       return appell::cli::reference(r);
+    } catch (...) {
+      return exit_status_of_current_exception();
+    }
+  }
+  if (command == "simulate" || command == "enclose") {
+    appell::cli::motion_options m;
+    m.command = command;
+    const std::string error = appell::cli::parse_motion_arguments(argc, argv, 2, m);
+    if (!error.empty()) return usage(error);
+    try {
+      return appell::cli::motion(m);
     } catch (...) {
       return exit_status_of_current_exception();
     }

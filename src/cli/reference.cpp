@@ -20,6 +20,7 @@
 #include <sstream>
 
 #include "appell/io/scene.hpp"
+#include "files.hpp"
 
 #ifndef APPELL_VERSION_STRING
 #define APPELL_VERSION_STRING "unknown"
@@ -42,23 +43,6 @@ std::string read_whole(const std::string& path, const char* what) {
   std::ostringstream s;
   s << f.rdbuf();
   return s.str();
-}
-
-/// Writes `text` to DIR/NAME whole or not at all: a temporary file in DIR, then rename.
-void write_whole(const std::filesystem::path& dir, const std::string& name, const std::string& text) {
-  const std::filesystem::path final_path = dir / name;
-  const std::filesystem::path tmp = dir / ("." + name + ".tmp" + std::to_string(::getpid()));
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    f << text;
-    f.flush();
-    if (!f) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw std::runtime_error("cannot write " + tmp.string());
-    }
-  }
-  std::filesystem::rename(tmp, final_path);
 }
 
 /// SHA-256 (FIPS 180-4) of a byte string, as 64 hex digits: the manifest's hash of the inputs.

@@ -289,35 +289,34 @@ void decimal_to_mpq(std::string_view s, mpq_t out) {
   mpz_clear(num);
   mpz_clear(pow10);
 }
+
+// An mpq_t cleared on every way out, a parse error's throw included.
+struct scoped_mpq {
+  mpq_t v;
+  scoped_mpq() { mpq_init(v); }
+  ~scoped_mpq() { mpq_clear(v); }
+  scoped_mpq(const scoped_mpq&) = delete;
+  scoped_mpq& operator=(const scoped_mpq&) = delete;
+};
 }  // namespace
 
 rational_q rational_from_decimal(const std::string& s) {
-  mpq_t q;
-  mpq_init(q);
-  decimal_to_mpq(s, q);
-  rational_q r(q);
-  mpq_clear(q);
-  return r;
+  scoped_mpq q;
+  decimal_to_mpq(s, q.v);
+  return rational_q(q.v);
 }
 
 int decimal_sign_of_polynomial(const std::vector<decimal_term>& terms) {
-  mpq_t sum, term, factor;
-  mpq_init(sum);
-  mpq_init(term);
-  mpq_init(factor);
+  scoped_mpq sum, term, factor;
   for (const auto& t : terms) {
-    mpq_set_si(term, t.coefficient, 1);
+    mpq_set_si(term.v, t.coefficient, 1);
     for (const auto& f : t.factors) {
-      decimal_to_mpq(f, factor);
-      mpq_mul(term, term, factor);
+      decimal_to_mpq(f, factor.v);
+      mpq_mul(term.v, term.v, factor.v);
     }
-    mpq_add(sum, sum, term);
+    mpq_add(sum.v, sum.v, term.v);
   }
-  const int sign = mpq_sgn(sum);
-  mpq_clear(factor);
-  mpq_clear(term);
-  mpq_clear(sum);
-  return sign;
+  return mpq_sgn(sum.v);
 }
 
 int decimal_sign_of_sum(std::initializer_list<std::pair<int, std::string_view>> terms) {

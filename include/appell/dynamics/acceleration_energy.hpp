@@ -22,7 +22,7 @@ T acceleration_energy(const Sys& sys, const vector_t<T>& q, const vector_t<T>& u
   for (std::size_t i = 0; i < plain.size(); ++i) {
     const body_state<T>& s = plain[i];
     const vec3<T> a = detail::derivative(acc[i].velocity) + cross(s.frame_rate, s.velocity);
-    const vec3<T> alpha = detail::derivative(acc[i].omega) + cross(s.frame_rate, s.omega);
+    const vec3<T> alpha = detail::derivative(acc[i].omega) + frame_cross_omega(s);
     S += s.mass * dot(a, a) / T(2) + dot(alpha, mat_vec(s.inertia, alpha)) / T(2) +
          dot(alpha, cross(s.omega, mat_vec(s.inertia, s.omega)));
   }

@@ -45,6 +45,9 @@ struct body_state {
   vec3<S> velocity = vec3<S>::Zero();  ///< of the centre of mass, on F
   vec3<S> omega = vec3<S>::Zero();     ///< angular velocity of the body, on F
   vec3<S> frame_rate = vec3<S>::Zero();  ///< angular velocity of F (0: F is fixed)
+  /// F is the body's own frame (frame_rate is omega itself): frame_rate x omega is then exactly 0,
+  /// not an interval cross product of omega with itself (whose width is not 0).
+  bool frame_is_body = false;
   vec3<S> force = vec3<S>::Zero();     ///< applied force through G, on F
   vec3<S> couple = vec3<S>::Zero();    ///< applied couple, on F
 };
@@ -60,6 +63,12 @@ concept mechanical_system = requires(const Sys& s, const vector_t<T>& q, const T
 template <class T>
 vec3<T> cross(const vec3<T>& a, const vec3<T>& b) {
   return vec3<T>(a(1) * b(2) - a(2) * b(1), a(2) * b(0) - a(0) * b(2), a(0) * b(1) - a(1) * b(0));
+}
+/// frame_rate x omega of a body (exactly 0 when the frame is the body's own).
+template <class T>
+vec3<T> frame_cross_omega(const body_state<T>& s) {
+  if (s.frame_is_body) return vec3<T>(T(0), T(0), T(0));
+  return cross(s.frame_rate, s.omega);
 }
 template <class T>
 T dot(const vec3<T>& a, const vec3<T>& b) {
@@ -104,6 +113,7 @@ namespace detail {
 template <class T, class D>
 body_state<T> values(const body_state<D>& d) {
   body_state<T> s;
+  s.frame_is_body = d.frame_is_body;
   s.mass = d.mass.v;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) s.inertia(i, j) = d.inertia(i, j).v;
@@ -166,7 +176,7 @@ std::vector<body_kinematics<T>> differentiate_kinematics_in_slots(const Sys& sys
       }
       if (has_c) {
         B.cv = derivative(d[i].velocity, k - first) + cross(B.state.frame_rate, B.state.velocity);
-        B.cw = derivative(d[i].omega, k - first) + cross(B.state.frame_rate, B.state.omega);
+        B.cw = derivative(d[i].omega, k - first) + frame_cross_omega(B.state);
       }
     }
   }
@@ -208,7 +218,7 @@ std::vector<body_kinematics<T>> differentiate_kinematics_by_columns(const Sys& s
   for (std::size_t i = 0; i < d.size(); ++i) {
     const body_state<T>& s = plain[i];
     out[i].cv = detail::derivative(d[i].velocity) + cross(s.frame_rate, s.velocity);
-    out[i].cw = detail::derivative(d[i].omega) + cross(s.frame_rate, s.omega);
+    out[i].cw = detail::derivative(d[i].omega) + frame_cross_omega(s);
   }
   return out;
 }

@@ -31,7 +31,7 @@ T inertia_virtual_work(const Sys& sys, const vector_t<T>& q, const vector_t<T>& 
   for (const body_state<D>& b : bodies) {
     const body_state<T> s = detail::values<T>(b);
     const vec3<T> a = detail::derivative(b.velocity, 0) + cross(s.frame_rate, s.velocity);
-    const vec3<T> alpha = detail::derivative(b.omega, 0) + cross(s.frame_rate, s.omega);
+    const vec3<T> alpha = detail::derivative(b.omega, 0) + frame_cross_omega(s);
     const vec3<T> dr = detail::derivative(b.velocity, 1), dtheta = detail::derivative(b.omega, 1);
     const vec3<T> moment = mat_vec(s.inertia, alpha) + cross(s.omega, mat_vec(s.inertia, s.omega));
     work += s.mass * dot(a, dr) + dot(moment, dtheta);

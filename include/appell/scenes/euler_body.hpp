@@ -61,6 +61,7 @@ struct euler_system {
     body_state<S> b;  // mass irrelevant: G is fixed
     b.omega = vec3<S>(u(0), u(1), u(2));
     b.frame_rate = b.omega;  // the body axes turn with the body
+    b.frame_is_body = true;
     for (int i = 0; i < 3; ++i) {
       b.inertia(i, i) = S(body.inertia(i));
       b.couple(i) = S(body.torque(i));
@@ -76,12 +77,19 @@ struct euler_body_result {
   T power_residual;         ///< omega . (I omega') - omega . torque: 0 on the motion
 };
 
+/// Appell's equations of Euler's body at angular velocity omega (the generic path):
+/// what `appell eval` solves, and what `appell simulate` / `enclose` run on jets.
+template <Scalar T>
+appell_equations<T> euler_body_equations(const euler_body<T>& body, const vec3<T>& omega) {
+  return gibbs_appell(euler_system<T>{body}, vector_t<T>(vector_t<T>::Zero(3)), vector_t<T>(omega), T(0));
+}
+
 /// Euler's body through the generic Gibbs-Appell path at angular velocity omega.
 template <Scalar T>
 euler_body_result<T> euler_body_motion(const euler_body<T>& body, const vec3<T>& omega) {
   const euler_system<T> sys{body};
   const vector_t<T> q = vector_t<T>::Zero(3), u = omega;
-  const appell_equations<T> eq = gibbs_appell(sys, q, u, T(0));
+  const appell_equations<T> eq = euler_body_equations(body, omega);
   const vector_t<T> udot = eq.accelerations();
   euler_body_result<T> r;
   r.omega_dot = vec3<T>(udot(0), udot(1), udot(2));

@@ -350,7 +350,10 @@ struct expression_system {
         s.couple(i) = b.couple[k].at(v);
         if (b.has_omega) s.omega(i) = b.omega[k].at(v);
       }
-      if (b.body_axes) s.frame_rate = s.omega;  // the body's own axes turn with it
+      if (b.body_axes) {  // the body's own axes turn with it
+        s.frame_rate = s.omega;
+        s.frame_is_body = true;
+      }
       if (b.has_matrix) {
         // R and R' = sum_i dR/dq_i q'_i + dR/dt; omega from the skew matrices R' R^T (fixed
         // axes, for an isotropic inertia) or R^T R' (the body's axes, turning with omega).
@@ -377,6 +380,7 @@ struct expression_system {
           }
           s.velocity = vb, s.force = fb, s.couple = cb;
           s.frame_rate = s.omega;
+          s.frame_is_body = true;
         }
         if (b.has_inertia) s.inertia = b.inertia_on_body_axes(v);
         out.push_back(s);

@@ -109,6 +109,19 @@ struct top_on_pivot_result {
   T psi_ddot_lagrange, theta_ddot_lagrange, phi_ddot_lagrange;
 };
 
+/// Cotton's method on the free top with the pivot as its last three speeds:
+/// (psi'', theta'', phi'') and the pivot force (fixed axes).  What `appell eval`
+/// reports, and what `appell simulate` / `enclose` run on jets.
+template <Scalar T>
+cotton_result<T> top_on_pivot_cotton(const T& A, const T& C, const T& mass, const T& l, const T& g,
+                                     const top_on_pivot_state<T>& s) {
+  const free_top_resal<T> sys{A, C, mass, l, g};
+  vector_t<T> q(6), v_a(3);
+  q << s.psi, s.theta, s.phi, T(0), T(0), T(0);
+  v_a << s.psi_dot, s.theta_dot, s.phi_dot;
+  return cotton_reactions(sys, q, v_a, T(0), 3);
+}
+
 /// The heavy top on its pivot: Cotton's method from the free body, and the
 /// Lagrange multipliers of the free body on the fixed axes as the check.
 template <Scalar T>
@@ -121,7 +134,7 @@ top_on_pivot_result<T> top_on_pivot_motion(const T& A, const T& C, const T& mass
     vector_t<T> q(6), v_a(3);
     q << s.psi, s.theta, s.phi, T(0), T(0), T(0);
     v_a << s.psi_dot, s.theta_dot, s.phi_dot;
-    const cotton_result<T> c = cotton_reactions(sys, q, v_a, t, 3);
+    const cotton_result<T> c = top_on_pivot_cotton(A, C, mass, l, g, s);
     r.psi_ddot = c.free_accelerations(0);
     r.theta_ddot = c.free_accelerations(1);
     r.phi_ddot = c.free_accelerations(2);

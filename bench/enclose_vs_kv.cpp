@@ -1,0 +1,104 @@
+// appell enclose against the figures of the kv library (Kashiwagi; interval<double>, Taylor order
+// 24, affine wrapping) measured on this machine (issue "Motion over time", point 7), on the same
+// three problems, each through appell's one code path (the scene's dynamics on jets):
+//   Euler's body, moments (1, 2, 3), omega0 = (1, 1, 1): largest state width at T;
+//   the heavy symmetric top (A = 1 about O, C = 2, m g l = 1, theta0 = 1, precession 0.5,
+//   spin 5, the rest 0): largest state width, and its energy's width over the steps;
+//   the simple pendulum theta'' = -sin theta, theta0 = 1, as a one-body system.
+// Prints one table: appell's width and time, kv's, and the ratios (width: appell / kv, below 1 is
+// tighter; time: appell / kv, the goal is at most 0.5).  Times are this run's, on this machine; kv's
+// are the issue's.  Usage: appell_bench_enclose [--quick] [--order N]
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "appell/ode/enclose.hpp"
+
+using namespace appell;
+
+namespace {
+
+struct kv_figure {
+  const char* problem;
+  double t_end;
+  double kv_width;
+  double kv_seconds;  // < 0: not given
+  const char* quantity;
+};
+
+struct measured {
+  double width = 0, energy_width = 0, seconds = 0;
+  long steps = 0;
+  bool complete = false;
+};
+
+template <class P>
+measured run(const P& prob, const vector_t<interval>& x0, double t_end, int order) {
+  measured m;
+  const auto start = std::chrono::steady_clock::now();
+  const ode::enclose_stats st = ode::enclose(prob, x0, interval(t_end), order, std::ldexp(1.0, -53), 1.0, 2,
+                                             [&](const ode::enclosed_step<interval>& s) {
+                                               m.width = ode::detail::max_width(s.end);
+                                               for (const auto& inv : s.invariants)
+                                                 if (inv.name == "energy")
+                                                   m.energy_width = std::max(m.energy_width, boost::numeric::width(inv.values[0]));
+                                             });
+  m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m.steps = st.steps;
+  m.complete = st.complete;
+  return m;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool quick = false;
+  int order = 24;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else if (!std::strcmp(argv[i], "--order") && i + 1 < argc) order = std::atoi(argv[++i]);
+  }
+  const evaluation_scope<interval> scope;
+  const ode::euler_body_problem<interval> euler{{vec3<interval>(interval(1), interval(2), interval(3)), vec3<interval>::Zero()}};
+  const vector_t<interval> euler0 = vector_t<interval>::Constant(3, interval(1));
+  const ode::heavy_top_problem<interval> top{interval(1), interval(2), interval(1), interval(1), interval(1)};
+  vector_t<interval> top0(6);
+  top0 << interval(0), interval(1), interval(0), interval(0.5), interval(0), interval(5);
+  const ode::pendulum_problem<interval> pendulum{interval(1), interval(1), interval(1)};
+  vector_t<interval> pend0(2);
+  pend0 << interval(1), interval(0);
+
+  const kv_figure figures[] = {
+      {"euler_body", 10, 7.3e-14, 0.12, "state"},   {"euler_body", 100, 9.3e-12, 1.3, "state"},
+      {"euler_body", 1000, 1.1e-9, 26, "state"},    {"heavy_top", 10, 3.7e-12, 7.2, "state"},
+      {"heavy_top", 10, 6.2e-11, 7.2, "energy"},    {"heavy_top", 100, 3.5e-10, 79, "state"},
+      {"pendulum", 10, 1.5e-14, -1, "state"},       {"pendulum", 1000, 9.5e-11, 25, "state"}};
+  std::printf("appell enclose (interval<double>, order %d, generic Gibbs-Appell path on jets) against kv\n\n", order);
+  std::printf("| problem | T | quantity | appell width | kv width | width ratio | appell s | kv s | time ratio | steps |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+  measured last;
+  std::string last_key;
+  for (const kv_figure& f : figures) {
+    if (quick && f.t_end > 10) continue;
+    const std::string key = std::string(f.problem) + std::to_string(f.t_end);
+    if (key != last_key) {
+      if (!std::strcmp(f.problem, "euler_body")) last = run(euler, euler0, f.t_end, order);
+      else if (!std::strcmp(f.problem, "heavy_top")) last = run(top, top0, f.t_end, order);
+      else last = run(pendulum, pend0, f.t_end, order);
+      last_key = key;
+    }
+    const double w = !std::strcmp(f.quantity, "energy") ? last.energy_width : last.width;
+    char kv_s[32] = "n/a", ratio_s[32] = "n/a";
+    if (f.kv_seconds > 0) {
+      std::snprintf(kv_s, sizeof kv_s, "%.3g", f.kv_seconds);
+      std::snprintf(ratio_s, sizeof ratio_s, "%.2f", last.seconds / f.kv_seconds);
+    }
+    std::printf("| %s | %g | %s%s | %.2e | %.2e | %.2f | %.3g | %s | %s | %ld |\n", f.problem, f.t_end, f.quantity,
+                !std::strcmp(f.quantity, "energy") ? " (over every step)" : " at T", w, f.kv_width, w / f.kv_width,
+                last.seconds, kv_s, ratio_s, last.steps);
+    std::fflush(stdout);
+    if (!last.complete) std::printf("  (INCOMPLETE: the enclosure stopped before T)\n");
+  }
+  return 0;
+}

@@ -1,0 +1,197 @@
+// appell/ode/taylor.hpp -- Taylor coefficients of a motion, and the point
+// integrator of `appell simulate`.
+//
+// taylor_series(P, x0, p): the coefficients x_0 .. x_p of the solution of
+// x' = f(x) through x0, by the recursion x_{k+1} = f(x)_k / (k + 1), f being
+// the problem's right-hand side evaluated on jets (ode/jet.hpp) holding the
+// coefficients known so far.  With interval coefficients each is enclosed.
+//
+// taylor_series_jacobian(P, X, p): the same coefficients over a box X, and
+// their derivatives d x_k / d x0 over X (the right-hand side on
+// multi_dual<jet<I>, dim>: the variational equation by the same recursion).
+//
+// simulate(): adaptive Taylor steps for point scalars.  Step size from the
+// last two coefficients (Jorba & Zou 2005): h = min_k (tol / |x_k|)^(1/k),
+// k = p - 1, p, times exp(-0.7 / (p - 1)); tol relative to max(1, |x|).
+// The state is summed with Kahan's compensation, so that round-off may grow
+// like sqrt(t) (Brouwer's law) rather than t.  Output times i * every are
+// hit exactly (the step is cut there, not interpolated).
+#pragma once
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <type_traits>
+#include <vector>
+
+#include "appell/ode/jet.hpp"
+#include "appell/ode/problems.hpp"
+
+namespace appell::ode {
+
+template <class S>
+using series = std::vector<vector_t<S>>;  // series[k](i): coefficient k of component i
+
+/// Coefficients 0 .. p of the solution through x0.
+template <class P, class S>
+series<S> taylor_series(const P& prob, const vector_t<S>& x0, int p) {
+  const Eigen::Index n = x0.size();
+  series<S> c(static_cast<std::size_t>(p + 1), vector_t<S>(n));
+  c[0] = x0;
+  vector_t<jet<S>> X(n);
+  for (int k = 0; k < p; ++k) {
+    const jet_order_scope order(k);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      std::vector<S> ci(static_cast<std::size_t>(k + 1));
+      for (int j = 0; j <= k; ++j) ci[static_cast<std::size_t>(j)] = c[static_cast<std::size_t>(j)](i);
+      X(i) = jet<S>(std::move(ci));
+    }
+    const vector_t<jet<S>> F = prob.template rhs<jet<S>>(X);
+    for (Eigen::Index i = 0; i < n; ++i) c[static_cast<std::size_t>(k + 1)](i) = F(i)[k] / S(k + 1);
+  }
+  return c;
+}
+
+/// Coefficients over the box X and their Jacobians d x_k / d x0 (dim x dim), k = 0 .. p.
+template <class P, class I>
+void taylor_series_jacobian(const P& prob, const vector_t<I>& X0, int p, series<I>& c, std::vector<matrix_t<I>>& D) {
+  constexpr int n = P::dim;
+  using MD = multi_dual<jet<I>, n>;
+  c.assign(static_cast<std::size_t>(p + 1), vector_t<I>(n));
+  D.assign(static_cast<std::size_t>(p + 1), matrix_t<I>(n, n));
+  c[0] = X0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) D[0](i, j) = I(i == j ? 1 : 0);
+  vector_t<MD> X(n);
+  for (int k = 0; k < p; ++k) {
+    const jet_order_scope order(k);
+    for (int i = 0; i < n; ++i) {
+      std::vector<I> v(static_cast<std::size_t>(k + 1));
+      for (int m = 0; m <= k; ++m) v[static_cast<std::size_t>(m)] = c[static_cast<std::size_t>(m)](i);
+      X(i).v = jet<I>(std::move(v));
+      for (int j = 0; j < n; ++j) {
+        std::vector<I> d(static_cast<std::size_t>(k + 1));
+        for (int m = 0; m <= k; ++m) d[static_cast<std::size_t>(m)] = D[static_cast<std::size_t>(m)](i, j);
+        X(i).d[static_cast<std::size_t>(j)] = jet<I>(std::move(d));
+      }
+    }
+    const vector_t<MD> F = prob.template rhs<MD>(X);
+    const I kp1(k + 1);
+    for (int i = 0; i < n; ++i) {
+      c[static_cast<std::size_t>(k + 1)](i) = F(i).v[k] / kp1;
+      for (int j = 0; j < n; ++j) D[static_cast<std::size_t>(k + 1)](i, j) = F(i).d[static_cast<std::size_t>(j)][k] / kp1;
+    }
+  }
+}
+
+/// sum_k c_k tau^k, k = first .. last (Horner).
+template <class S>
+vector_t<S> horner(const series<S>& c, const S& tau, int first, int last) {
+  vector_t<S> r = c[static_cast<std::size_t>(last)];
+  for (int k = last - 1; k >= first; --k) r = vector_t<S>(r * tau + c[static_cast<std::size_t>(k)]);
+  if (first > 0)
+    for (int k = 0; k < first; ++k) r = vector_t<S>(r * tau);
+  return r;
+}
+
+/// The step size from the last two coefficients (point magnitudes).
+template <class S>
+double step_from_coefficients(const series<S>& c, double tol) {
+  const int p = static_cast<int>(c.size()) - 1;
+  double scale = 1;
+  for (Eigen::Index i = 0; i < c[0].size(); ++i) scale = std::max(scale, std::fabs(approx_double(c[0](i))));
+  const double eps = tol * scale;
+  double h = std::numeric_limits<double>::infinity();
+  for (int k = p - 1; k <= p; ++k) {
+    double m = 0;
+    for (Eigen::Index i = 0; i < c[static_cast<std::size_t>(k)].size(); ++i)
+      m = std::max(m, std::fabs(approx_double(c[static_cast<std::size_t>(k)](i))));
+    if (m > 0) h = std::min(h, std::pow(eps / m, 1.0 / k));
+  }
+  return h * std::exp(-0.7 / (p - 1));
+}
+
+struct simulate_options {
+  std::string t_end;       ///< decimal
+  std::string every;       ///< decimal; empty: the horizon / 100
+  int order = 20;
+  double tol = 0;          ///< per-step tolerance; 0: the scalar's unit round-off
+  bool progress = true;    ///< a progress line on stderr for runs longer than a second
+};
+
+/// One output row of a point run.
+template <class T>
+struct sample {
+  T t;
+  vector_t<T> x;
+  std::vector<named_values<T>> results, invariants;
+};
+
+struct simulate_stats {
+  long steps = 0;
+  double seconds = 0;
+  double min_step = 0, max_step = 0;
+};
+
+/// Integrates prob from x0 over [0, t_end]; calls `emit` at t = 0, every, 2 every, ..., t_end.
+template <class P, class T>
+simulate_stats simulate(const P& prob, const vector_t<T>& x0, const T& t_end, const T& every, int order, double tol,
+                        const std::type_identity_t<std::function<void(const sample<T>&)>>& emit,
+                        const std::function<void(double)>& progress = {}) {
+  using std::abs;
+  const auto start = std::chrono::steady_clock::now();
+  simulate_stats st;
+  st.min_step = std::numeric_limits<double>::infinity();
+  const Eigen::Index n = x0.size();
+  vector_t<T> x = x0, comp = vector_t<T>::Zero(n);
+  T t = T(0);
+  long next_index = 1;
+  auto record = [&](const T& time) {
+    sample<T> s{time, x, {}, {}};
+    prob.results(x, s.results);
+    prob.invariants(x, s.invariants);
+    emit(s);
+  };
+  record(t);
+  const double horizon = approx_double(t_end);
+  while (true) {
+    T t_next = T(static_cast<double>(next_index)) * every;  // exact: next_index < 2^53
+    bool last = false;
+    if (!(t_next < t_end)) {
+      t_next = t_end;
+      last = true;
+    }
+    while (t < t_next) {
+      const series<T> c = taylor_series(prob, x, order);
+      T h = T(step_from_coefficients(c, tol));
+      bool hits = false;
+      if (!(t + h < t_next)) {
+        h = t_next - t;
+        hits = true;
+      }
+      const vector_t<T> delta = horner(c, h, 1, order);
+      for (Eigen::Index i = 0; i < n; ++i) {  // Kahan: x += delta with the carried error
+        const T y = delta(i) - comp(i);
+        const T s = x(i) + y;
+        comp(i) = (s - x(i)) - y;
+        x(i) = s;
+      }
+      t = hits ? t_next : T(t + h);
+      ++st.steps;
+      const double hd = approx_double(h);
+      if (!hits) st.min_step = std::min(st.min_step, hd);
+      st.max_step = std::max(st.max_step, hd);
+      for (Eigen::Index i = 0; i < n; ++i)
+        if (!is_finite(x(i))) throw certification_error("the state is no longer finite at t = " + std::to_string(approx_double(t)));
+      if (progress) progress(approx_double(t) / horizon);
+    }
+    record(t);
+    if (last) break;
+    ++next_index;
+  }
+  if (!std::isfinite(st.min_step)) st.min_step = st.max_step;
+  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return st;
+}
+
+}  // namespace appell::ode

@@ -1,0 +1,348 @@
+// The body of `appell simulate` / `appell enclose` in one scalar: included by
+// the generated units (one per standard scalar; CMakeLists.txt).
+#pragma once
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "files.hpp"
+#include "motion.hpp"
+
+#include "appell/io/models/euler_body.hpp"
+#include "appell/io/models/heavy_top.hpp"
+#include "appell/ode/enclose.hpp"
+#include "appell/ode/taylor.hpp"
+
+namespace appell::cli {
+
+namespace motion_detail {
+
+/// "\rsimulate: t = 3.1 of 10 (31%)" on stderr, from one second on, twice a second at most.
+class progress_meter {
+ public:
+  progress_meter(std::string what, double horizon, bool quiet)
+      : what_(std::move(what)), horizon_(horizon), quiet_(quiet), start_(std::chrono::steady_clock::now()), last_(start_) {}
+  ~progress_meter() {
+    if (shown_) std::cerr << "\n";
+  }
+  void operator()(double fraction) {
+    if (quiet_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - start_ < std::chrono::seconds(1) || now - last_ < std::chrono::milliseconds(500)) return;
+    last_ = now;
+    shown_ = true;
+    char line[160];
+    std::snprintf(line, sizeof line, "\r%s: t = %.6g of %.6g (%.0f%%)", what_.c_str(), fraction * horizon_, horizon_,
+                  100 * fraction);
+    std::cerr << line << std::flush;
+  }
+
+ private:
+  std::string what_;
+  double horizon_;
+  bool quiet_;
+  std::chrono::steady_clock::time_point start_, last_;
+  bool shown_ = false;
+};
+
+template <class S>
+void column_names(const std::vector<ode::named_values<S>>& group, const std::string& suffix, std::vector<std::string>& out) {
+  static const char* axes[] = {"_x", "_y", "_z"};
+  for (const auto& g : group) {
+    if (g.values.size() == 1) out.push_back(g.name + suffix);
+    else
+      for (std::size_t i = 0; i < g.values.size(); ++i) out.push_back(g.name + (i < 3 ? axes[i] : "_" + std::to_string(i)) + suffix);
+  }
+}
+
+inline void plot(const std::string& script) {
+  if (FILE* gp = popen("gnuplot 2>/dev/null", "w")) {
+    std::fputs(script.c_str(), gp);
+    pclose(gp);
+  }
+}
+
+template <Scalar T>
+int default_order() {
+  const unsigned bits = scalar_traits<T>::precision_bits();
+  if constexpr (scalar_traits<T>::is_interval) {
+    if (bits <= 53) return 24;
+    return std::clamp(static_cast<int>(std::ceil(0.3 * bits)), 24, 60);
+  } else {
+    return std::clamp(static_cast<int>(std::ceil(0.35 * bits)) + 1, 12, 60);
+  }
+}
+
+template <Scalar T>
+double default_tol() {
+  return std::ldexp(1.0, -static_cast<int>(std::min(1000u, scalar_traits<T>::precision_bits())));
+}
+
+template <Scalar T, class P>
+motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scene_input& scene, const motion_options& o) {
+  const T t_end = from_decimal<T>(o.t_end);
+  const T every = from_decimal<T>(o.every);
+  const int order = o.order.value_or(default_order<T>());
+  const double tol = o.tol.value_or(default_tol<T>());
+  std::vector<std::string> header{"t"};
+  for (const auto& s : P::state_names()) header.push_back(s);
+  std::vector<ode::sample<T>> rows;
+  progress_meter meter("simulate", approx_double(t_end), o.quiet);
+  const ode::simulate_stats st =
+      ode::simulate(prob, x0, t_end, every, order, tol, [&](const ode::sample<T>& s) { rows.push_back(s); },
+                    [&](double f) { meter(f); });
+  column_names(rows.front().results, "", header);
+  column_names(rows.front().invariants, "", header);
+  std::ostringstream csv;
+  for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << header[i];
+  csv << "\n";
+  // drift data: t and |I(t) - I(0)| / max(|I(0)|, 1e-300) per invariant
+  std::ostringstream dat;
+  nlohmann::json inv = nlohmann::json::array();
+  std::vector<double> worst(rows.front().invariants.size(), 0.0);
+  for (const auto& r : rows) {
+    csv << to_string(r.t);
+    for (Eigen::Index i = 0; i < r.x.size(); ++i) csv << "," << to_string(r.x(i));
+    for (const auto& g : r.results)
+      for (const T& v : g.values) csv << "," << to_string(v);
+    for (const auto& g : r.invariants)
+      for (const T& v : g.values) csv << "," << to_string(v);
+    csv << "\n";
+    dat << approx_double(r.t);
+    for (std::size_t q = 0; q < r.invariants.size(); ++q) {
+      using std::abs;
+      const T i0 = rows.front().invariants[q].values[0];
+      const double d = approx_double(T(abs(T(r.invariants[q].values[0] - i0))));
+      const double rel = d / std::max(std::fabs(approx_double(i0)), 1e-300);
+      worst[q] = std::max(worst[q], rel);
+      dat << " " << std::max(rel, 1e-40);
+    }
+    dat << "\n";
+  }
+  for (std::size_t q = 0; q < worst.size(); ++q)
+    inv.push_back({{"name", rows.front().invariants[q].name},
+                   {"initial", to_string(rows.front().invariants[q].values[0])},
+                   {"final", to_string(rows.back().invariants[q].values[0])},
+                   {"max_relative_drift", worst[q]}});
+  nlohmann::json final_state = nlohmann::json::object();
+  for (std::size_t i = 0; i < P::state_names().size(); ++i)
+    final_state[P::state_names()[i]] = to_string(rows.back().x(static_cast<Eigen::Index>(i)));
+  nlohmann::json summary = {{"command", "simulate"},
+                            {"scene", o.scene},
+                            {"model", scene.model},
+                            {"scalar", scalar_traits<T>::name},
+                            {"bits", scalar_traits<T>::precision_bits()},
+                            {"order", order},
+                            {"tol", tol},
+                            {"t_end", o.t_end},
+                            {"every", o.every},
+                            {"steps", st.steps},
+                            {"seconds", st.seconds},
+                            {"min_step", st.min_step},
+                            {"max_step", st.max_step},
+                            {"final_state", final_state},
+                            {"invariants", inv}};
+  const std::filesystem::path dir(o.out);
+  std::filesystem::create_directories(dir);
+  write_whole(dir, "trajectory.csv", csv.str());
+  write_whole(dir, "summary.json", summary.dump(2) + "\n");
+  std::string plotted;
+  if (!worst.empty()) {
+    const std::filesystem::path datf = dir / (".drift.dat" + std::to_string(::getpid()));
+    { std::ofstream(datf) << dat.str(); }
+    const std::filesystem::path png = dir / "drift.png";
+    const std::filesystem::path tmp = dir / (".drift.png" + std::to_string(::getpid()));
+    std::string script = "set terminal png size 900,500 noenhanced\nset output '" + tmp.string() +
+                         "'\nset logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'relative drift |I(t) - I(0)| / |I(0)|'\n"
+                         "set title '" + scene.model + ", " + scalar_traits<T>::name + ", order " + std::to_string(order) +
+                         "'\nset grid\nset key below\nplot ";
+    for (std::size_t q = 0; q < worst.size(); ++q)
+      script += std::string(q ? ", " : "") + "'" + datf.string() + "' using 1:" + std::to_string(q + 2) + " with lines title '" +
+                rows.front().invariants[q].name + "'";
+    plot(script + "\n");
+    std::filesystem::remove(datf);
+    std::error_code ec;
+    if (std::filesystem::exists(tmp)) {
+      std::filesystem::rename(tmp, png, ec);
+      plotted = ", drift.png";
+    }
+  }
+  std::ostringstream out;
+  out << "simulate " << scene.model << " in " << scalar_traits<T>::name << " (" << scalar_traits<T>::precision_bits()
+      << " bits), order " << order << ", tol " << tol << ": " << st.steps << " steps to t = " << o.t_end << " in "
+      << st.seconds << " s\n";
+  for (const auto& j : inv)
+    out << "  " << j["name"].get<std::string>() << ": largest relative drift " << j["max_relative_drift"].get<double>() << "\n";
+  out << "wrote " << (dir / "trajectory.csv").string() << ", summary.json" << plotted << "\n";
+  return {0, out.str()};
+}
+
+template <Scalar I>
+std::string bounds(const I& x) {
+  return lower_string(x) + "," + upper_string(x);
+}
+
+template <Scalar I, class P>
+motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene_input& scene, const motion_options& o) {
+  const I t_end = from_decimal<I>(o.t_end);
+  const int order = o.order.value_or(default_order<I>());
+  const double tol = o.tol.value_or(default_tol<I>());
+  std::vector<std::string> header{"t0", "t1"};
+  for (const auto& s : P::state_names()) {
+    header.push_back(s + "_lo");
+    header.push_back(s + "_hi");
+  }
+  for (const auto& s : P::state_names()) {
+    header.push_back(s + "_over_lo");
+    header.push_back(s + "_over_hi");
+  }
+  std::ostringstream body, dat;
+  bool first = true;
+  double worst_end = 0;
+  std::vector<std::string> group_header;
+  std::vector<double> worst_over;  // per result/invariant value: largest width over a step
+  std::vector<std::string> value_names;
+  vector_t<I> last_end = x0;
+  progress_meter meter("enclose", approx_double(t_end), o.quiet);
+  const ode::enclose_stats st = ode::enclose(
+      prob, x0, t_end, order, tol, o.max_width, 2,
+      [&](const ode::enclosed_step<I>& s) {
+        if (first) {
+          std::vector<std::string> names;
+          column_names(s.results, "", names);
+          column_names(s.invariants, "", names);
+          value_names = names;
+          for (const auto& nm : names) {
+            group_header.push_back(nm + "_lo");
+            group_header.push_back(nm + "_hi");
+          }
+          worst_over.assign(names.size(), 0.0);
+          first = false;
+        }
+        body << lower_string(s.t0) << "," << upper_string(s.t1);
+        for (Eigen::Index i = 0; i < s.end.size(); ++i) body << "," << bounds(s.end(i));
+        for (Eigen::Index i = 0; i < s.over.size(); ++i) body << "," << bounds(s.over(i));
+        std::size_t v = 0;
+        double wr = 0;
+        auto emit_group = [&](const std::vector<ode::named_values<I>>& g) {
+          for (const auto& nv : g)
+            for (const I& x : nv.values) {
+              body << "," << bounds(x);
+              const double w = approx_double(I(scalar_traits<I>::width(x)));
+              worst_over[v] = std::max(worst_over[v], w);
+              wr = std::max(wr, w);
+              ++v;
+            }
+        };
+        emit_group(s.results);
+        emit_group(s.invariants);
+        body << "\n";
+        const double we = ode::detail::max_width(s.end);
+        worst_end = std::max(worst_end, we);
+        dat << approx_double(s.t1) << " " << std::max(we, 1e-300) << " " << std::max(wr, 1e-300) << "\n";
+        last_end = s.end;
+      },
+      [&](double f) { meter(f); });
+  std::ostringstream csv;
+  for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << header[i];
+  for (const auto& h : group_header) csv << "," << h;
+  csv << "\n" << body.str();
+  nlohmann::json final_state = nlohmann::json::object();
+  for (std::size_t i = 0; i < P::state_names().size(); ++i)
+    final_state[P::state_names()[i]] = to_string(last_end(static_cast<Eigen::Index>(i)));
+  nlohmann::json widths = nlohmann::json::object();
+  for (std::size_t i = 0; i < value_names.size(); ++i) widths[value_names[i]] = worst_over[i];
+  const double final_width = ode::detail::max_width(last_end);
+  nlohmann::json summary = {{"command", "enclose"},
+                            {"scene", o.scene},
+                            {"model", scene.model},
+                            {"scalar", scalar_traits<I>::name},
+                            {"bits", scalar_traits<I>::precision_bits()},
+                            {"order", order},
+                            {"tol", tol},
+                            {"t_end", o.t_end},
+                            {"complete", st.complete},
+                            {"reason", st.reason},
+                            {"t_reached", st.t_reached},
+                            {"steps", st.steps},
+                            {"rejected_steps", st.rejected},
+                            {"seconds", st.seconds},
+                            {"final_state", final_state},
+                            {"final_largest_width", final_width},
+                            {"largest_width_over_a_step", widths}};
+  const std::filesystem::path dir(o.out);
+  std::filesystem::create_directories(dir);
+  write_whole(dir, "steps.csv", csv.str());
+  write_whole(dir, "summary.json", summary.dump(2) + "\n");
+  std::string plotted;
+  {
+    const std::filesystem::path datf = dir / (".widths.dat" + std::to_string(::getpid()));
+    { std::ofstream(datf) << dat.str(); }
+    const std::filesystem::path tmp = dir / (".widths.png" + std::to_string(::getpid()));
+    plot("set terminal png size 900,500 noenhanced\nset output '" + tmp.string() +
+         "'\nset logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'width'\nset title '" + scene.model + ", " +
+         scalar_traits<I>::name + " (" + std::to_string(scalar_traits<I>::precision_bits()) + " bits), order " +
+         std::to_string(order) + "'\nset grid\nset key below\nplot '" + datf.string() +
+         "' using 1:2 with lines title 'state at each step end (largest width)', '' using 1:3 with lines title "
+         "'results and invariants over each whole step (largest width)'\n");
+    std::filesystem::remove(datf);
+    std::error_code ec;
+    if (std::filesystem::exists(tmp)) {
+      std::filesystem::rename(tmp, dir / "widths.png", ec);
+      plotted = ", widths.png";
+    }
+  }
+  std::ostringstream out;
+  out << "enclose " << scene.model << " in " << scalar_traits<I>::name << " (" << scalar_traits<I>::precision_bits()
+      << " bits), order " << order << ": " << st.steps << " steps (" << st.rejected << " rejected) in " << st.seconds
+      << " s\n";
+  if (st.complete) out << "  certified up to t = " << o.t_end << "; the state's largest width there " << final_width << "\n";
+  else out << "  INCOMPLETE: " << st.reason << "; enclosed up to t = " << st.t_reached << "\n";
+  for (std::size_t i = 0; i < value_names.size(); ++i)
+    out << "  " << value_names[i] << ": largest width over a whole step " << worst_over[i] << "\n";
+  out << "wrote " << (dir / "steps.csv").string() << ", summary.json" << plotted << "\n";
+  return {st.complete ? 0 : 3, out.str()};
+}
+
+template <Scalar T, class P>
+motion_outcome run_problem(const P& prob, const vector_t<T>& x0, const scene_input& scene, const motion_options& o) {
+  if constexpr (scalar_traits<T>::is_interval) {
+    if (o.command != "enclose")
+      throw input_error("--scalar: simulate runs point scalars (double, long-double, dd, float128, mpfr); use enclose for " +
+                        std::string(scalar_traits<T>::name));
+    return enclose_problem<T>(prob, x0, scene, o);
+  } else {
+    if (o.command != "simulate")
+      throw input_error("--scalar: enclose needs an interval scalar (interval or mpfi), not " + std::string(scalar_traits<T>::name));
+    return simulate_problem<T>(prob, x0, scene, o);
+  }
+}
+
+}  // namespace motion_detail
+
+template <Scalar T>
+motion_outcome run_motion(const scene_input& scene, const motion_options& o) {
+  const evaluation_scope<T> scope;
+  if (scene.model == "euler_body") {
+    const auto m = euler_body_model::prepare<T>(scene.as<euler_body_input>());
+    return motion_detail::run_problem<T>(ode::euler_body_problem<T>{m.body}, vector_t<T>(m.omega), scene, o);
+  }
+  if (scene.model == "heavy_top") {
+    const auto m = heavy_top_model::prepare<T>(scene.as<heavy_top_input>());
+    vector_t<T> x0(6);
+    x0 << m.state.psi, m.state.theta, m.state.phi, m.state.psi_dot, m.state.theta_dot, m.state.phi_dot;
+    return motion_detail::run_problem<T>(ode::heavy_top_problem<T>{m.A, m.C, m.mass, m.l, m.g}, x0, scene, o);
+  }
+  throw input_error("model: " + o.command + " knows the models euler_body and heavy_top; '" + scene.model +
+                    "' has no motion yet");
+}
+
+}  // namespace appell::cli

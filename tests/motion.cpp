@@ -1,0 +1,301 @@
+// Motion over time (ode/): jets, Taylor coefficients, the point integrator and
+// the verified enclosure, each against an independent truth:
+//   - jet rules against series known in closed form (sin, cos, exp, log,
+//     sqrt, atan, quotient), and interval jets containing MPFR jets at 256 bits
+//     on random series;
+//   - the Taylor coefficients of Euler's body from the generic Gibbs-Appell
+//     path (the scene's code on jets) against those of Euler's equations
+//     written out (euler_omega_dot on jets), and against finite sums of the
+//     closed-form solution's derivatives;
+//   - the enclosure of Euler's free body at T against the closed-form solution
+//     in Jacobi elliptic functions (Boost.Math, 100 digits), on random bodies;
+//   - the heavy top's energy and two momenta, enclosed over every whole step,
+//     each containing its initial value computed at 256 bits;
+//   - point trajectories (double, dd) inside the enclosures widened by their
+//     precision.
+#define BOOST_TEST_MODULE motion
+#include <boost/test/unit_test.hpp>
+
+#include <boost/multiprecision/mpfr.hpp>
+#include <random>
+
+#include "appell/ode/closed_forms.hpp"
+#include "appell/ode/enclose.hpp"
+#include "appell/ode/taylor.hpp"
+#include "appell/scalar/decimal.hpp"
+
+using namespace appell;
+using truth_t = boost::multiprecision::mpfr_float_100;
+
+namespace {
+
+template <class I>
+truth_t lo(const I& x) {
+  mpfr_value a, b;
+  scalar_traits<I>::to_mpfr(x, a, b);
+  truth_t r;
+  mpfr_set(r.backend().data(), a, MPFR_RNDD);
+  return r;
+}
+template <class I>
+truth_t hi(const I& x) {
+  mpfr_value a, b;
+  scalar_traits<I>::to_mpfr(x, a, b);
+  truth_t r;
+  mpfr_set(r.backend().data(), b, MPFR_RNDU);
+  return r;
+}
+template <class I>
+bool holds(const I& x, const truth_t& v) {
+  return lo(x) <= v && v <= hi(x);
+}
+
+std::string decimal_on_grid(std::mt19937_64& rng, int lo_thousandths, int hi_thousandths) {
+  std::uniform_int_distribution<int> d(lo_thousandths, hi_thousandths);
+  const int v = d(rng);
+  return std::to_string(v / 1000) + "." + std::to_string(1000 + v % 1000).substr(1);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(jet_rules_match_closed_form_series) {
+  // x(t) = 0.3 + t: sin, cos, exp of x have coefficients f^(k)(0.3) / k!; 1 / (1 - t) has all 1;
+  // sqrt(1 + t) and log(1 + t), atan(t) their binomial / alternating series.
+  const int n = 12;
+  const jet_order_scope order(n);
+  const jet<double> x(std::vector<double>{0.3, 1.0});
+  const jet<double> s = sin(x), c = cos(x), e = exp(x);
+  double fact = 1;
+  for (int k = 0; k <= n; ++k) {
+    if (k > 0) fact *= k;
+    const double dk_sin = (k % 4 == 0) ? std::sin(0.3) : (k % 4 == 1) ? std::cos(0.3) : (k % 4 == 2) ? -std::sin(0.3) : -std::cos(0.3);
+    const double dk_cos = (k % 4 == 0) ? std::cos(0.3) : (k % 4 == 1) ? -std::sin(0.3) : (k % 4 == 2) ? -std::cos(0.3) : std::sin(0.3);
+    BOOST_TEST(std::fabs(s[k] - dk_sin / fact) <= 1e-15);
+    BOOST_TEST(std::fabs(c[k] - dk_cos / fact) <= 1e-15);
+    BOOST_TEST(std::fabs(e[k] - std::exp(0.3) / fact) <= 1e-15);
+  }
+  const jet<double> t(std::vector<double>{0.0, 1.0});
+  const jet<double> geo = jet<double>(1.0) / (jet<double>(1.0) - t);
+  const jet<double> sq = sqrt(jet<double>(1.0) + t), lg = log(jet<double>(1.0) + t), at = atan(t);
+  double binom = 1;  // C(1/2, k)
+  for (int k = 0; k <= n; ++k) {
+    BOOST_TEST(geo[k] == 1.0);
+    BOOST_TEST(std::fabs(sq[k] - binom) <= 1e-16);
+    binom *= (0.5 - k) / (k + 1);
+    if (k > 0) BOOST_TEST(std::fabs(lg[k] - ((k % 2) ? 1.0 : -1.0) / k) <= 1e-16);
+    const double atk = (k % 2 == 0) ? 0.0 : (((k / 2) % 2) ? -1.0 : 1.0) / k;
+    BOOST_TEST(std::fabs(at[k] - atk) <= 1e-16);
+  }
+  // A jet's powers are its products: pown(x, 5) = x x x x x.
+  const jet<double> p5 = pown(x, 5), m5 = x * x * x * x * x;
+  for (int k = 0; k <= n; ++k) BOOST_TEST(std::fabs(p5[k] - m5[k]) <= 1e-15);
+}
+
+BOOST_AUTO_TEST_CASE(interval_jets_contain_mpfr_jets_at_256_bits) {
+  // Random series with decimal coefficients, enclosed; the same operations in MPFR at 256 bits
+  // on the exact decimals (each coefficient's error ~1e-75): every interval coefficient holds it.
+  std::mt19937_64 rng(20261124);
+  const evaluation_scope<interval> scope;
+  const int n = 16;
+  long checked = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<std::string> a(n + 1), b(n + 1);
+    for (int k = 0; k <= n; ++k) {
+      a[static_cast<std::size_t>(k)] = (rng() % 2 ? "-" : "") + decimal_on_grid(rng, 1, 2000);
+      b[static_cast<std::size_t>(k)] = decimal_on_grid(rng, 1, 2000);
+    }
+    b[0] = decimal_on_grid(rng, 2000, 3000);  // b_0 > |...|: sqrt, log and the quotient defined
+    std::vector<interval> ai, bi;
+    std::vector<mpfr> am, bm;
+    {
+      const mp_precision_scope p(256);
+      for (int k = 0; k <= n; ++k) {
+        ai.push_back(from_decimal<interval>(a[static_cast<std::size_t>(k)]));
+        bi.push_back(from_decimal<interval>(b[static_cast<std::size_t>(k)]));
+        am.push_back(from_decimal<mpfr>(a[static_cast<std::size_t>(k)]));
+        bm.push_back(from_decimal<mpfr>(b[static_cast<std::size_t>(k)]));
+      }
+      const jet_order_scope order(n);
+      const jet<interval> A(ai), B(bi);
+      const jet<mpfr> Am(am), Bm(bm);
+      const std::vector<std::pair<jet<interval>, jet<mpfr>>> results{
+          {A * B, Am * Bm}, {A / B, Am / Bm},         {sin(A), sin(Am)}, {cos(B), cos(Bm)},
+          {sqrt(B), sqrt(Bm)}, {log(B), log(Bm)},     {atan(A), atan(Am)}, {exp(A / B), exp(Am / Bm)},
+          {pown(A, 3), pown(Am, 3)}, {A - B * A, Am - Bm * Am}};
+      for (const auto& [ri, rm] : results)
+        for (int k = 0; k <= n; ++k) {
+          const truth_t v(rm[k].str(0, std::ios_base::scientific));
+          if (!holds(ri[k], v)) BOOST_ERROR("coefficient " << k << " misses the 256-bit value at trial " << trial);
+          ++checked;
+        }
+    }
+  }
+  BOOST_TEST(checked == 200L * 10 * 17);
+  BOOST_TEST_MESSAGE("interval jets: " << checked << " coefficients, each holding the 256-bit value");
+}
+
+namespace {
+/// Euler's equations written out (euler_omega_dot), as a problem: the second route.
+struct euler_direct {
+  euler_body<double> body;
+  static constexpr int dim = 3;
+  template <class S>
+  vector_t<S> rhs(const vector_t<S>& x) const {
+    const euler_body<S> b{vec3<S>(S(body.inertia(0)), S(body.inertia(1)), S(body.inertia(2))), vec3<S>(S(0), S(0), S(0))};
+    return vector_t<S>(euler_omega_dot(b, vec3<S>(x(0), x(1), x(2))));
+  }
+};
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(euler_body_coefficients_from_the_generic_path_equal_euler_s_equations) {
+  // The scene's code (gibbs_appell on the body, then the order-by-order solve) on jets against
+  // Euler's equations written out (euler_omega_dot) on jets: two routes to the same series.
+  const euler_body<double> body{vec3<double>(1.0, 2.0, 3.0), vec3<double>(0.0, 0.0, 0.0)};
+  const ode::euler_body_problem<double> prob{body};
+  const vector_t<double> x0 = vector_t<double>(vec3<double>(1.0, 1.0, 1.0));
+  const auto c1 = ode::taylor_series(prob, x0, 24);
+  const auto c2 = ode::taylor_series(euler_direct{body}, x0, 24);
+  for (int k = 0; k <= 24; ++k)
+    for (int i = 0; i < 3; ++i) {
+      const double a = c1[static_cast<std::size_t>(k)](i), b = c2[static_cast<std::size_t>(k)](i);
+      BOOST_TEST(std::fabs(a - b) <= 1e-14 * std::max(1.0, std::fabs(b)), "k=" << k << " i=" << i << ": " << a << " vs " << b);
+    }
+}
+
+
+BOOST_AUTO_TEST_CASE(euler_body_enclosure_holds_the_elliptic_solution) {
+  std::mt19937_64 rng(7);
+  int cases = 0;
+  double widest = 0;
+  while (cases < 12) {
+    const std::string I1 = decimal_on_grid(rng, 500, 1500);
+    const std::string d2 = decimal_on_grid(rng, 100, 1200), d3 = decimal_on_grid(rng, 100, 1200);
+    const truth_t i1(I1), i2 = i1 + truth_t(d2), i3 = i2 + truth_t(d3);
+    if (!(i3 < i1 + i2)) continue;  // a body's moments satisfy the triangle inequality
+    const std::string a = decimal_on_grid(rng, 200, 1500), c = decimal_on_grid(rng, 200, 1500);
+    const truth_t ta(a), tc(c);
+    if (!(i1 * (i1 - i2) * ta * ta + i3 * (i3 - i2) * tc * tc > 0)) continue;  // M^2 > 2 E I2
+    const std::string T = "5";
+    const ode::euler_free_body_solution<truth_t> truth{i1, i2, i3, ta, tc};
+    const std::array<truth_t, 3> w = truth.at(truth_t(T));
+    const evaluation_scope<interval> scope;
+    const interval J1 = from_decimal<interval>(I1), J2 = J1 + from_decimal<interval>(d2), J3 = J2 + from_decimal<interval>(d3);
+    const ode::euler_body_problem<interval> prob{{vec3<interval>(J1, J2, J3), vec3<interval>(interval(0), interval(0), interval(0))}};
+    vector_t<interval> x0(3);
+    x0 << from_decimal<interval>(a), interval(0), from_decimal<interval>(c);
+    vector_t<interval> end;
+    long steps = 0;
+    const ode::enclose_stats st = ode::enclose(prob, x0, from_decimal<interval>(T), 24, std::ldexp(1.0, -53), 1.0, 2,
+                                               [&](const ode::enclosed_step<interval>& s) {
+                                                 end = s.end;
+                                                 ++steps;
+                                                 // over every step: the solution at the step's start lies in it
+                                                 const std::array<truth_t, 3> w0 = truth.at(lo(s.t0));
+                                                 for (int i = 0; i < 3; ++i) BOOST_TEST(holds(s.over(i), w0[static_cast<std::size_t>(i)]));
+                                               });
+    BOOST_TEST_REQUIRE(st.complete, st.reason);
+    for (int i = 0; i < 3; ++i) {
+      BOOST_TEST(holds(end(i), w[static_cast<std::size_t>(i)]),
+                 "I = (" << I1 << ", +" << d2 << ", +" << d3 << ") omega0 = (" << a << ", 0, " << c << "): component " << i
+                         << " misses " << w[static_cast<std::size_t>(i)].str(20) << ": " << to_string(end(i)));
+      widest = std::max(widest, boost::numeric::width(end(i)));
+    }
+    ++cases;
+  }
+  BOOST_TEST_MESSAGE("euler_body: 12 random bodies enclosed to T = 5 hold the elliptic solution; widest " << widest);
+  BOOST_TEST(widest < 1e-10);  // a verified but useful enclosure, not merely a true one
+}
+
+BOOST_AUTO_TEST_CASE(heavy_top_invariants_stay_inside_their_initial_values) {
+  // I1 = I2 = 1 (A about O), I3 = 2, m g l = 1, theta0 = 1, phi'0 = 0.5, psi'0 = 5 (the top:
+  // its psi, phi are appell's phi, psi: Euler angles z-x-z with psi about the vertical).
+  const evaluation_scope<interval> scope;
+  const ode::heavy_top_problem<interval> prob{interval(1), interval(2), interval(1), interval(1), interval(1)};
+  vector_t<interval> x0(6);
+  x0 << interval(0), interval(1), interval(0), from_decimal<interval>("0.5"), interval(0), interval(5);
+  std::vector<ode::named_values<mpfr>> initial;
+  {
+    const mp_precision_scope p(256);
+    const ode::heavy_top_problem<mpfr> pm{mpfr(1), mpfr(2), mpfr(1), mpfr(1), mpfr(1)};
+    vector_t<mpfr> xm(6);
+    xm << mpfr(0), mpfr(1), mpfr(0), mpfr("0.5"), mpfr(0), mpfr(5);
+    pm.invariants(xm, initial);
+  }
+  long steps = 0;
+  double widest = 0;
+  const ode::enclose_stats st =
+      ode::enclose(prob, x0, interval(10), 24, std::ldexp(1.0, -53), 1.0, 2, [&](const ode::enclosed_step<interval>& s) {
+        ++steps;
+        BOOST_TEST_REQUIRE(s.invariants.size() == initial.size());
+        for (std::size_t q = 0; q < initial.size(); ++q) {
+          const truth_t v(initial[q].values[0].str(0, std::ios_base::scientific));
+          BOOST_TEST(holds(s.invariants[q].values[0], v), initial[q].name << " over step " << steps);
+          widest = std::max(widest, boost::numeric::width(s.invariants[q].values[0]));
+        }
+      });
+  BOOST_TEST_REQUIRE(st.complete, st.reason);
+  BOOST_TEST_MESSAGE("heavy_top: energy and momenta over " << steps << " steps to T = 10, widest " << widest);
+}
+
+BOOST_AUTO_TEST_CASE(point_trajectories_agree_with_the_enclosure) {
+  // Euler's body (1, 2, 3), omega0 = (1, 1, 1) to T = 10: double and dd inside the interval
+  // enclosure widened by a few hundred units of their last place.
+  const std::string T = "10";
+  vector_t<interval> end;
+  {
+    const evaluation_scope<interval> scope;
+    const ode::euler_body_problem<interval> prob{{vec3<interval>(interval(1), interval(2), interval(3)), vec3<interval>::Zero()}};
+    vector_t<interval> x0 = vector_t<interval>::Constant(3, interval(1));
+    const auto st = ode::enclose(prob, x0, interval(10), 24, std::ldexp(1.0, -53), 1.0, 2,
+                                 [&](const ode::enclosed_step<interval>& s) { end = s.end; });
+    BOOST_TEST_REQUIRE(st.complete, st.reason);
+  }
+  auto run = [&]<class T>(std::type_identity<T>, double slack) {
+    const ode::euler_body_problem<T> prob{{vec3<T>(T(1), T(2), T(3)), vec3<T>(T(0), T(0), T(0))}};
+    vector_t<T> x0 = vector_t<T>::Constant(3, T(1)), last;
+    ode::simulate(prob, x0, T(10), T(1), 20 + 10 * (sizeof(T) > 8), std::ldexp(1.0, -53 * (1 + (sizeof(T) > 8))),
+                  [&](const ode::sample<T>& s) { last = s.x; });
+    for (int i = 0; i < 3; ++i) {
+      const double v = approx_double(last(i));
+      BOOST_TEST(v >= end(i).lower() - slack);
+      BOOST_TEST(v <= end(i).upper() + slack);
+    }
+  };
+  run(std::type_identity<double>{}, 1e-13);
+  run(std::type_identity<dd>{}, 1e-15);  // dd's error is far below the interval's width
+}
+
+BOOST_AUTO_TEST_CASE(pendulum_energy_holds_its_initial_value_and_the_state_its_period) {
+  // theta'' = -sin theta, theta0 = 1 as a one-body system on the generic path.  The energy over
+  // every step holds -cos 1; at a multiple of the period 4 K(sin(1/2)) the state is back to (1, 0).
+  const evaluation_scope<interval> scope;
+  const ode::pendulum_problem<interval> prob{interval(1), interval(1), interval(1)};
+  vector_t<interval> x0(2);
+  x0 << interval(1), interval(0);
+  const truth_t e0 = -cos(truth_t(1));
+  const truth_t period = ode::pendulum_solution<truth_t>{truth_t(1), truth_t(1)}.period();
+  // the enclosure at 3 periods (an interval t_end, from the 100-digit period)
+  const truth_t t3 = 3 * period;
+  const interval t_end(std::nextafter(static_cast<double>(t3), 0.0), std::nextafter(static_cast<double>(t3), 100.0));
+  long steps = 0;
+  vector_t<interval> end;
+  const ode::enclose_stats st = ode::enclose(prob, x0, t_end, 24, std::ldexp(1.0, -53), 1.0, 2,
+                                             [&](const ode::enclosed_step<interval>& s) {
+                                               ++steps;
+                                               BOOST_TEST(holds(s.invariants[0].values[0], e0), "energy over step " << steps);
+                                               end = s.end;
+                                             });
+  BOOST_TEST_REQUIRE(st.complete, st.reason);
+  // t_end is an interval of two ulps around 3 periods: the state at every time in it is enclosed,
+  // the true one at exactly 3 periods among them.
+  BOOST_TEST(holds(end(0), truth_t(1)), to_string(end(0)));
+  BOOST_TEST(holds(end(1), truth_t(0)), to_string(end(1)));
+  BOOST_TEST(boost::numeric::width(end(0)) < 1e-12);
+  // and at t = 2.5, between turning points, the state holds the Jacobi-elliptic solution
+  const ode::enclose_stats st2 = ode::enclose(prob, x0, interval(2.5), 24, std::ldexp(1.0, -53), 1.0, 2,
+                                              [&](const ode::enclosed_step<interval>& s) { end = s.end; });
+  BOOST_TEST_REQUIRE(st2.complete, st2.reason);
+  const std::array<truth_t, 2> exact = ode::pendulum_solution<truth_t>{truth_t(1), truth_t(1)}.at(truth_t("2.5"));
+  BOOST_TEST(holds(end(0), exact[0]), to_string(end(0)) << " vs " << exact[0]);
+  BOOST_TEST(holds(end(1), exact[1]), to_string(end(1)) << " vs " << exact[1]);
+}
