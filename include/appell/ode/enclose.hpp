@@ -13,10 +13,15 @@
 //     the solution at some state of B).  By the mean-value theorem
 //        x_{j+1} in T(xh_j) + J (x_j - xh_j) + R,  J = sum_{k<p} d x_k/d x0 (X_j) h^k,
 //     and with S = J A_j:  X_{j+1} = T(xh_j) + R + S r_j  (the box), and the
-//     parallelepiped  xh_{j+1} + A_{j+1} r_{j+1}  with A_{j+1} the Q of a QR
-//     factorization of mid(S) (columns ordered by length: Lohner), r_{j+1} =
+//     parallelepiped  xh_{j+1} + A_{j+1} r_{j+1},  r_{j+1} =
 //     (A_{j+1}^-1 S) r_j + A_{j+1}^-1 (T(xh_j) + R - xh_{j+1}); A^-1 enclosed by
-//     a verified solve.  The box kept is the intersection of both and of Y.
+//     a verified solve.  Two such frames travel side by side, since neither
+//     wins everywhere (measured: the QR frame is 10x tighter on Euler's body,
+//     the parallelepiped 40x tighter on the heavy top): A_{j+1} the Q of a QR
+//     factorization of mid(S) (columns ordered by length: Lohner's method),
+//     and A_{j+1} = mid(S) itself (the parallelepiped method; replaced by the
+//     Q when mid(S) has condition number above 1e8).  The box kept is the
+//     intersection of the box, of both parallelepipeds, and of Y.
 //  3. Over the whole step, the state lies in Y, and any quantity g(x) (the
 //     scene's reactions, its energy) in  sum_{k<p} g_k(X_j) [0,h]^k + g_p(B) [0,h]^p:
 //     g evaluated on the jets of the solution (its Taylor coefficients at
@@ -28,10 +33,15 @@
 // and marked incomplete, with the reason.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <functional>
 #include <string>
 #include <vector>
+
+#include <Eigen/QR>
+#include <Eigen/SVD>
 
 #include "appell/linalg/solve.hpp"
 #include "appell/ode/taylor.hpp"
@@ -88,6 +98,45 @@ double max_width(const vector_t<I>& x) {
   for (Eigen::Index i = 0; i < x.size(); ++i) w = std::max(w, approx_double(I(scalar_traits<I>::width(x(i)))));
   return w;
 }
+
+/// One representation of the set of states: x - xh in A r.
+template <class I>
+struct frame {
+  matrix_t<I> A;  ///< exact point matrix
+  vector_t<I> r;
+  bool qr;        ///< Lohner's QR frame (true) or the parallelepiped mid(S) (false)
+};
+
+/// The next frame's matrix from S = J A: the Q of mid(S) with columns ordered by length scaled
+/// by r's widths (Lohner), or mid(S) itself while its condition number stays below 1e8.
+template <class I>
+matrix_t<I> next_frame_matrix(const matrix_t<I>& S, const vector_t<I>& r, bool qr) {
+  const Eigen::Index n = S.rows();
+  Eigen::MatrixXd Sm(n, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) Sm(i, j) = approx_double(S(i, j));
+  Eigen::MatrixXd M;
+  bool use_qr = qr;
+  if (!qr) {
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Sm);
+    const auto sv = svd.singularValues();
+    use_qr = !(sv(n - 1) > 0) || !(sv(0) / sv(n - 1) < 1e8);
+    if (!use_qr) M = Sm;
+  }
+  if (use_qr) {
+    std::vector<std::pair<double, Eigen::Index>> len(static_cast<std::size_t>(n));
+    for (Eigen::Index j = 0; j < n; ++j)
+      len[static_cast<std::size_t>(j)] = {-Sm.col(j).norm() * std::max(approx_double(I(scalar_traits<I>::width(r(j)))), 1e-300), j};
+    std::sort(len.begin(), len.end());
+    Eigen::MatrixXd Sp(n, n);
+    for (Eigen::Index j = 0; j < n; ++j) Sp.col(j) = Sm.col(len[static_cast<std::size_t>(j)].second);
+    M = Eigen::HouseholderQR<Eigen::MatrixXd>(Sp).householderQ();
+  }
+  matrix_t<I> A(n, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) A(i, j) = I(M(i, j));
+  return A;
+}
 }  // namespace detail
 
 /// Encloses the motion of prob from the box x0 over [0, t_end]; calls `emit` for every step.
@@ -105,7 +154,8 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     xh(i) = detail::thin_of<I>(scalar_traits<I>::mid(X(i)));
     r(i) = X(i) - xh(i);
   }
-  matrix_t<I> A = matrix_t<I>::Identity(n, n);
+  std::array<detail::frame<I>, 2> frames{detail::frame<I>{matrix_t<I>::Identity(n, n), r, true},
+                                         detail::frame<I>{matrix_t<I>::Identity(n, n), r, false}};
   I t = I(0);
   const double horizon = approx_double(t_end);
   const double h_floor = 1e-9 * std::max(1.0, horizon);
@@ -228,40 +278,33 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     for (int k = q - 1; k >= 0; --k) J = matrix_t<I>(J * h + DX[static_cast<std::size_t>(k)]);
     const vector_t<I> z = horner(series<I>(cc.begin(), cc.begin() + q + 1), h, 0, q);  // T_q(xh)
     const vector_t<I> H = q < p - 1 ? horner(cX, h, q + 1, p - 1) : vector_t<I>(vector_t<I>::Zero(n));
-    const matrix_t<I> S = appell::detail::product(J, A);
     vector_t<I> zr = z + H + R, Xn(n), xhn(n);
-    const vector_t<I> Sr = appell::detail::product(S, r);
     for (int i = 0; i < n; ++i) {
-      Xn(i) = zr(i) + Sr(i);
+      Xn(i) = zr(i);
       xhn(i) = detail::thin_of<I>(scalar_traits<I>::mid(zr(i)));
     }
-    // Q of mid(S) with its columns ordered by length (scaled by r's widths).
-    Eigen::MatrixXd Sm(n, n);
-    std::vector<std::pair<double, int>> len(static_cast<std::size_t>(n));
-    for (int j = 0; j < n; ++j) {
-      double s2 = 0;
+    bool first_frame = true;
+    for (detail::frame<I>& f : frames) {
+      const matrix_t<I> S = appell::detail::product(J, f.A);
+      const vector_t<I> Sr = appell::detail::product(S, f.r);
       for (int i = 0; i < n; ++i) {
-        Sm(i, j) = approx_double(S(i, j));
-        s2 += Sm(i, j) * Sm(i, j);
+        const I box = zr(i) + Sr(i);
+        Xn(i) = first_frame ? box : appell::detail::intersect(Xn(i), box);
       }
-      len[static_cast<std::size_t>(j)] = {-std::sqrt(s2) * std::max(approx_double(I(scalar_traits<I>::width(r(j)))), 1e-300), j};
+      first_frame = false;
+      const matrix_t<I> An = detail::next_frame_matrix(S, f.r, f.qr);
+      // A^-1 S and A^-1 (zr - xhn), each by verified solves with the exact point matrix An.
+      matrix_t<I> AiS(n, n);
+      for (int j = 0; j < n; ++j) AiS.col(j) = verified_solve(An, vector_t<I>(S.col(j)));
+      const vector_t<I> dz = verified_solve(An, vector_t<I>(zr - xhn));
+      f.A = An;
+      f.r = appell::detail::product(AiS, f.r) + dz;
     }
-    std::sort(len.begin(), len.end());
-    Eigen::MatrixXd Sp(n, n);
-    for (int j = 0; j < n; ++j) Sp.col(j) = Sm.col(len[static_cast<std::size_t>(j)].second);
-    const Eigen::MatrixXd Qd = Eigen::HouseholderQR<Eigen::MatrixXd>(Sp).householderQ();
-    matrix_t<I> An(n, n);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) An(i, j) = I(Qd(i, j));
-    // A^-1 S and A^-1 (zr - xhn), each by verified solves with the exact point matrix An.
-    matrix_t<I> AiS(n, n);
-    for (int j = 0; j < n; ++j) AiS.col(j) = verified_solve(An, vector_t<I>(S.col(j)));
-    const vector_t<I> dz = verified_solve(An, vector_t<I>(zr - xhn));
-    const vector_t<I> rn = appell::detail::product(AiS, r) + dz;
-    const vector_t<I> par = xhn + appell::detail::product(An, rn);
-    for (int i = 0; i < n; ++i) {
-      Xn(i) = appell::detail::intersect(appell::detail::intersect(Xn(i), par(i)), Y(i));
+    for (const detail::frame<I>& f : frames) {
+      const vector_t<I> par = xhn + appell::detail::product(f.A, f.r);
+      for (int i = 0; i < n; ++i) Xn(i) = appell::detail::intersect(Xn(i), par(i));
     }
+    for (int i = 0; i < n; ++i) Xn(i) = appell::detail::intersect(Xn(i), Y(i));
     // Over the whole step: the state and the scene's quantities by their jets.
     enclosed_step<I> step;
     step.t0 = t;
@@ -305,8 +348,6 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     t = step.t1;
     X = Xn;
     xh = xhn;
-    A = An;
-    r = rn;
     st.t_reached = approx_double(t);
     if (progress) progress(st.t_reached / horizon);
     if (detail::max_width(X) > max_width) {
