@@ -811,3 +811,33 @@ BOOST_AUTO_TEST_CASE(simulate_and_enclose_write_their_files_whole) {
   for (const auto& entry : std::filesystem::directory_iterator(enc))
     BOOST_TEST(entry.path().filename().string()[0] != '.', "a temporary file was left: " << entry.path());
 }
+
+BOOST_AUTO_TEST_CASE(horizon_refuses_bad_input_and_meets_the_closed_form) {
+  const std::string out = (work / "horizon").string();
+  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/euler_body_horizon.json";
+  expect_bad_input("horizon " + scene + " --t-end -1 --out " + out, "--t-end");
+  expect_bad_input("horizon " + scene + " --out " + out, "--t-end");
+  expect_bad_input("horizon " + scene + " --t-end 10 --every 11 --out " + out, "--every");
+  expect_bad_input("horizon " + scene + " --t-end 10 --scalars interval --out " + out, "--scalars");
+  expect_bad_input("horizon " + scene + " --t-end 10 --scalars double,quad --out " + out, "--scalars");
+  expect_bad_input("horizon " + scene + " --t-end 10", "--out");
+  BOOST_TEST(!std::filesystem::exists(out + "/horizon.csv"));
+  // Two periods in double and dd against the Jacobi-elliptic solution at 256 bits: the errors are
+  // those of each precision (an integrator or a closed form off by a term would be off by far more).
+  const outcome r = run("horizon " + scene + " --t-end 14 --scalars double,dd --quiet --out " + out);
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  BOOST_TEST(r.out.find("closed form") != std::string::npos, r.out);
+  const std::string summary = slurp(out + "/summary.json");
+  std::vector<double> finals;  // "final_error": X, once per scalar, in order
+  for (std::size_t at = summary.find("\"final_error\": "); at != std::string::npos;
+       at = summary.find("\"final_error\": ", at + 1))
+    finals.push_back(std::stod(summary.substr(at + 15)));
+  BOOST_TEST_REQUIRE(finals.size() == 2u, summary);
+  const double e_double = finals[0], e_dd = finals[1];
+  BOOST_TEST(e_double < 1e-13, e_double);
+  BOOST_TEST(e_double > 0);
+  BOOST_TEST(e_dd < 1e-28, e_dd);
+  BOOST_TEST(std::filesystem::exists(out + "/horizon.csv"));
+  for (const auto& entry : std::filesystem::directory_iterator(out))
+    BOOST_TEST(entry.path().filename().string()[0] != '.', "a temporary file was left: " << entry.path());
+}

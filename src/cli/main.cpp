@@ -35,6 +35,7 @@ constexpr const char* usage_text =
     "       appell simulate SCENE --t-end T [--scalar NAME] [--bits N] [--order N] [--tol E] [--every DT] --out DIR\n"
     "       appell enclose SCENE --t-end T [--scalar interval|mpfi] [--bits N] [--order N] [--tol E]\n"
     "                      [--max-width W] --out DIR\n"
+    "       appell horizon SCENE --t-end T [--every DT] [--scalars LIST] --out DIR\n"
     "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
     "  --bits N: precision of mpfr and mpfi (default 256): mpfi gets exactly N bits; mpfr the\n"
     "            smallest count >= N that Boost's decimal-digit precision can set (reported)\n"
@@ -50,7 +51,11 @@ constexpr const char* usage_text =
     "            every DT), summary.json, drift.png (models euler_body, heavy_top)\n"
     "  enclose: a rigorous enclosure of the motion up to T; DIR/steps.csv (each step, the state at its end\n"
     "           and over it, the results and invariants over it), summary.json, widths.png; exit 3 if it\n"
-    "           stops before T (what was enclosed is still written, marked incomplete)\n";
+    "           stops before T (what was enclosed is still written, marked incomplete)\n"
+    "  horizon: the long-horizon study: each point scalar in LIST (default double,long-double,dd,float128)\n"
+    "           against a 256-bit reference (closed form where known); the error against time, Brouwer's\n"
+    "           law as the goal line, digits kept per decade of periods; DIR/horizon.csv, summary.json,\n"
+    "           horizon.png\n";
 
 struct options {
   std::string scene;
@@ -150,6 +155,16 @@ int main(int argc, char** argv) {
     if (!error.empty()) return usage(error);
     try {
       return appell::cli::motion(m);
+    } catch (...) {
+      return exit_status_of_current_exception();
+    }
+  }
+  if (command == "horizon") {
+    appell::cli::horizon_options h;
+    const std::string error = appell::cli::parse_horizon_arguments(argc, argv, 2, h);
+    if (!error.empty()) return usage(error);
+    try {
+      return appell::cli::horizon(h);
     } catch (...) {
       return exit_status_of_current_exception();
     }

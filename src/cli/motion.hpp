@@ -11,10 +11,19 @@
 // decimals rounded outward), DIR/summary.json (complete or not, and why),
 // DIR/widths.png.  Exit 0 when the enclosure reaches T, 3 when it stops early
 // (what was enclosed is still written, marked incomplete).
+//
+//   appell horizon SCENE --t-end T [--every DT] [--scalars LIST] --out DIR
+//
+// The long-horizon study (horizon.cpp): each point scalar's simulate against a
+// reference at 256 bits (the closed form where the scene has one, Euler's body
+// in Jacobi elliptic functions; otherwise simulate in mpfr at 256 bits), the
+// error against time with Brouwer's law as the goal line; DIR/horizon.csv,
+// DIR/summary.json, DIR/horizon.png.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "appell/io/scene.hpp"
 
@@ -42,10 +51,36 @@ struct motion_outcome {
 template <Scalar T>
 motion_outcome run_motion(const scene_input& scene, const motion_options& o);
 
+/// One scalar's trajectory for `appell horizon`: the states at t = 0, every, 2 every, ... as
+/// exact decimals of the scalar's values (lower_string: a point's value, written in full).
+struct horizon_track {
+  std::string scalar;
+  unsigned bits = 0;
+  int order = 0;
+  std::vector<std::string> t;
+  std::vector<std::vector<std::string>> x;
+  long steps = 0;
+  double seconds = 0;
+};
+
+/// Runs `simulate` on the scene in scalar T (default order and tolerance) from 0 to t_end with
+/// outputs every `every` (decimals); instantiated with run_motion.
+template <Scalar T>
+horizon_track run_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every, bool quiet);
+
 /// Parses argv[first..] into o; returns "" or the usage error (naming the flag).
 std::string parse_motion_arguments(int argc, char** argv, int first, motion_options& o);
 
 /// Validates the options, reads the scene, runs it; returns the exit status.
 int motion(const motion_options& o);
+
+/// appell horizon SCENE --t-end T [--every DT] [--scalars LIST] --out DIR: the long-horizon study.
+struct horizon_options {
+  std::string scene, t_end, every, out;
+  std::vector<std::string> scalars{"double", "long-double", "dd", "float128"};
+  bool quiet = false;
+};
+std::string parse_horizon_arguments(int argc, char** argv, int first, horizon_options& o);
+int horizon(const horizon_options& o);
 
 }  // namespace appell::cli

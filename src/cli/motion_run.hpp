@@ -328,21 +328,60 @@ motion_outcome run_problem(const P& prob, const vector_t<T>& x0, const scene_inp
 
 }  // namespace motion_detail
 
-template <Scalar T>
-motion_outcome run_motion(const scene_input& scene, const motion_options& o) {
-  const evaluation_scope<T> scope;
+namespace motion_detail {
+/// Calls f(problem, x0) with the scene's motion problem in T.
+template <Scalar T, class F>
+auto with_problem(const scene_input& scene, const std::string& command, F&& f) {
   if (scene.model == "euler_body") {
     const auto m = euler_body_model::prepare<T>(scene.as<euler_body_input>());
-    return motion_detail::run_problem<T>(ode::euler_body_problem<T>{m.body}, vector_t<T>(m.omega), scene, o);
+    return f(ode::euler_body_problem<T>{m.body}, vector_t<T>(m.omega));
   }
   if (scene.model == "heavy_top") {
     const auto m = heavy_top_model::prepare<T>(scene.as<heavy_top_input>());
     vector_t<T> x0(6);
     x0 << m.state.psi, m.state.theta, m.state.phi, m.state.psi_dot, m.state.theta_dot, m.state.phi_dot;
-    return motion_detail::run_problem<T>(ode::heavy_top_problem<T>{m.A, m.C, m.mass, m.l, m.g}, x0, scene, o);
+    return f(ode::heavy_top_problem<T>{m.A, m.C, m.mass, m.l, m.g}, x0);
   }
-  throw input_error("model: " + o.command + " knows the models euler_body and heavy_top; '" + scene.model +
+  throw input_error("model: " + command + " knows the models euler_body and heavy_top; '" + scene.model +
                     "' has no motion yet");
+}
+}  // namespace motion_detail
+
+template <Scalar T>
+motion_outcome run_motion(const scene_input& scene, const motion_options& o) {
+  const evaluation_scope<T> scope;
+  return motion_detail::with_problem<T>(scene, o.command, [&](const auto& prob, const vector_t<T>& x0) {
+    return motion_detail::run_problem<T>(prob, x0, scene, o);
+  });
+}
+
+template <Scalar T>
+horizon_track run_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every, bool quiet) {
+  horizon_track tr;
+  if constexpr (scalar_traits<T>::is_interval) {
+    throw input_error("--scalars: the study runs point scalars, not " + std::string(scalar_traits<T>::name));
+  } else {
+    const evaluation_scope<T> scope;
+    tr.scalar = scalar_traits<T>::name;
+    tr.bits = scalar_traits<T>::precision_bits();
+    tr.order = motion_detail::default_order<T>();
+    motion_detail::progress_meter meter("horizon (" + tr.scalar + ")", from_decimal<double>(t_end), quiet);
+    motion_detail::with_problem<T>(scene, "horizon", [&](const auto& prob, const vector_t<T>& x0) {
+      const ode::simulate_stats st = ode::simulate(
+          prob, x0, from_decimal<T>(t_end), from_decimal<T>(every), tr.order, motion_detail::default_tol<T>(),
+          [&](const ode::sample<T>& s) {
+            tr.t.push_back(lower_string(s.t));
+            std::vector<std::string> v;
+            for (Eigen::Index i = 0; i < s.x.size(); ++i) v.push_back(lower_string(s.x(i)));
+            tr.x.push_back(std::move(v));
+          },
+          [&](double f) { meter(f); });
+      tr.steps = st.steps;
+      tr.seconds = st.seconds;
+      return 0;
+    });
+  }
+  return tr;
 }
 
 }  // namespace appell::cli

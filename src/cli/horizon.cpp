@@ -1,0 +1,288 @@
+// appell horizon: the long-horizon precision study (motion.hpp).
+//
+// Each point scalar integrates the scene with `simulate`'s defaults (order and tolerance from its
+// precision); its state at t = 0, DT, 2 DT, ... is compared with a reference at 256 bits:
+//   - Euler's free body with I1 < I2 < I3 and omega(0) = (a, 0, c), M^2 > 2 E I2: the closed form
+//     in Jacobi elliptic functions (ode/closed_forms.hpp; Boost.Math in MPFR at 256 bits), at the
+//     very time each scalar reached (its t, converted exactly);
+//   - the heavy top: its nutation (theta, theta') in Jacobi elliptic functions (psi and phi would
+//     need elliptic integrals of the third kind: not compared);
+//   - any other scene: simulate in mpfr at 256 bits (order 91, tolerance 2^-256), at the same
+//     output indices.
+// The error at t is max_i |x_i - ref_i| / max(1, |ref_i|).  Brouwer's law, the goal line, is the
+// round-off of a careful integrator accumulating as a random walk: eps sqrt(n(t)), n(t) the
+// number of steps taken by t (eps = 2^-bits).
+#include <unistd.h>
+
+#include <algorithm>
+#include <boost/multiprecision/mpfr.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "appell/io/models/euler_body.hpp"
+#include "appell/io/models/heavy_top.hpp"
+#include "appell/ode/closed_forms.hpp"
+#include "appell/scalar/decimal.hpp"
+#include "appell/scalar/standard_scalars.hpp"
+#include "files.hpp"
+#include "motion.hpp"
+
+namespace appell::cli {
+
+namespace {
+
+using ref_t = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<256>, boost::multiprecision::et_off>;
+
+double positive(const std::string& flag, const std::string& text) {
+  double v = 0;
+  try {
+    v = from_decimal<double>(text);
+  } catch (const std::exception&) {
+    throw input_error(flag + ": expected a positive decimal, got '" + text + "'");
+  }
+  if (!(v > 0) || !std::isfinite(v)) throw input_error(flag + ": expected a positive decimal, got '" + text + "'");
+  return v;
+}
+
+/// The closed form of Euler's body when the scene is one it covers.
+std::optional<ode::euler_free_body_solution<ref_t>> euler_closed_form(const scene_input& scene) {
+  if (scene.model != "euler_body") return std::nullopt;
+  const auto& in = scene.as<euler_body_input>();
+  for (const auto& f : in.torque)
+    if (ref_t(f.text) != 0) return std::nullopt;
+  const ref_t I1(in.inertia[0].text), I2(in.inertia[1].text), I3(in.inertia[2].text);
+  const ref_t a(in.omega[0].text), b(in.omega[1].text), c(in.omega[2].text);
+  if (b != 0 || !ode::euler_free_body_solution<ref_t>::applies(I1, I2, I3, a, c)) return std::nullopt;
+  return ode::euler_free_body_solution<ref_t>(I1, I2, I3, a, c);
+}
+
+/// The heavy top's nutation in closed form (theta, theta' compared; psi and phi are not).
+std::optional<ode::heavy_top_nutation<ref_t>> top_closed_form(const scene_input& scene) {
+  if (scene.model != "heavy_top") return std::nullopt;
+  const auto& in = scene.as<heavy_top_input>();
+  try {
+    return ode::heavy_top_nutation<ref_t>(ref_t(in.A.text), ref_t(in.C.text),
+                                          ref_t(in.mass.text) * ref_t(in.gravity.text) * ref_t(in.l.text),
+                                          ref_t(in.theta.text), ref_t(in.psi_dot.text), ref_t(in.theta_dot.text),
+                                          ref_t(in.phi_dot.text));
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;  // no gravity or a steady precession: the 256-bit simulate instead
+  }
+}
+
+std::string digits_text(double err) {
+  if (!(err > 0)) return ">= all";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f", std::max(0.0, -std::log10(err)));
+  return b;
+}
+
+}  // namespace
+
+std::string parse_horizon_arguments(int argc, char** argv, int first, horizon_options& o) {
+  for (int i = first; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--t-end" || a == "--every" || a == "--out" || a == "--scalars") {
+      if (i + 1 >= argc) return a + ": missing value";
+      const std::string v = argv[++i];
+      if (a == "--t-end") o.t_end = v;
+      else if (a == "--every") o.every = v;
+      else if (a == "--out") o.out = v;
+      else {
+        o.scalars.clear();
+        std::stringstream ss(v);
+        for (std::string s; std::getline(ss, s, ',');)
+          if (!s.empty()) o.scalars.push_back(s);
+        if (o.scalars.empty()) return "--scalars: expected a comma-separated list of point scalars";
+      }
+    } else if (a == "--quiet") {
+      o.quiet = true;
+    } else if (!a.empty() && a[0] == '-') {
+      return "unknown option " + a;
+    } else if (o.scene.empty()) {
+      o.scene = a;
+    } else {
+      return "unexpected argument '" + a + "'";
+    }
+  }
+  return "";
+}
+
+int horizon(const horizon_options& given) {
+  horizon_options o = given;
+  if (o.scene.empty()) throw input_error("horizon: SCENE is required");
+  if (o.t_end.empty()) throw input_error("--t-end: required (the horizon, a positive decimal)");
+  if (o.out.empty()) throw input_error("--out: required (the directory to write)");
+  const double t_end = positive("--t-end", o.t_end);
+  for (const auto& s : o.scalars) {
+    const auto infos = standard_scalar_infos();
+    const auto it = std::find_if(infos.begin(), infos.end(), [&](const scalar_info& i) { return i.name == s; });
+    if (it == infos.end()) throw input_error("--scalars: unknown scalar '" + s + "' (known: " + standard_scalar_names() + ")");
+    if (it->rigorous) throw input_error("--scalars: the study runs point scalars; " + s + " is an interval type (see enclose)");
+  }
+  const scene_input scene = read_scene_file(o.scene);
+  const auto closed = euler_closed_form(scene);
+  const auto top = top_closed_form(scene);
+  double period = 0;
+  if (closed) period = static_cast<double>(closed->period());
+  if (top) period = static_cast<double>(top->period());
+  if (o.every.empty()) o.every = to_decimal(period > 0 ? std::min(period, t_end / 10) : t_end / 1000);
+  const double every = positive("--every", o.every);
+  if (every > t_end) throw input_error("--every: the output step " + o.every + " is larger than the horizon " + o.t_end);
+  if (t_end / every > 1e6) throw input_error("--every: more than 10^6 output times; choose a larger step");
+
+  std::vector<horizon_track> tracks;
+  for (const auto& s : o.scalars)
+    tracks.push_back(with_scalar(s, std::nullopt, [&]<class T>(std::type_identity<T>) {
+      return run_horizon_track<T>(scene, o.t_end, o.every, o.quiet);
+    }));
+  horizon_track reference;
+  std::string reference_kind;
+  std::vector<std::size_t> compared;  // the state's components compared
+  if (closed) {
+    reference_kind = "closed form (Jacobi elliptic functions, MPFR 256 bits)";
+    compared = {0, 1, 2};
+  } else if (top) {
+    reference_kind = "closed form of the nutation (Jacobi elliptic functions, MPFR 256 bits; theta and theta' compared)";
+    compared = {1, 4};
+  } else {
+    reference_kind = "simulate in mpfr at 256 bits";
+    reference = with_scalar("mpfr", 256u, [&]<class T>(std::type_identity<T>) {
+      return run_horizon_track<T>(scene, o.t_end, o.every, o.quiet);
+    });
+  }
+
+  // errors[k][i]: scalar k at output i
+  std::vector<std::vector<double>> errors(tracks.size());
+  std::vector<std::vector<double>> times(tracks.size());
+  for (std::size_t k = 0; k < tracks.size(); ++k) {
+    const horizon_track& tr = tracks[k];
+    for (std::size_t i = 0; i < tr.t.size(); ++i) {
+      std::vector<ref_t> truth;
+      if (closed) {
+        const auto w = closed->at(ref_t(tr.t[i]));
+        truth.assign(w.begin(), w.end());
+      } else if (top) {
+        const auto w = top->at(ref_t(tr.t[i]));
+        truth.assign(w.begin(), w.end());
+      } else {
+        if (i >= reference.x.size()) break;
+        for (const auto& v : reference.x[i]) truth.emplace_back(v);
+      }
+      if (compared.empty())
+        for (std::size_t j = 0; j < truth.size(); ++j) compared.push_back(j);
+      ref_t err = 0;
+      for (std::size_t j = 0; j < truth.size(); ++j) {
+        using std::abs;
+        const ref_t e = abs(ref_t(tr.x[i][compared[j]]) - truth[j]) / std::max(ref_t(1), ref_t(abs(truth[j])));
+        err = std::max(err, e);
+      }
+      errors[k].push_back(static_cast<double>(err));
+      times[k].push_back(from_decimal<double>(tr.t[i]));
+    }
+  }
+
+  const std::filesystem::path dir(o.out);
+  std::filesystem::create_directories(dir);
+  std::ostringstream csv;
+  csv << "t" << (period > 0 ? ",periods" : "");
+  for (const auto& tr : tracks) csv << ",error_" << tr.scalar << ",brouwer_" << tr.scalar;
+  csv << "\n";
+  const std::size_t rows = times.empty() ? 0 : times[0].size();
+  auto brouwer = [&](std::size_t k, double t) {
+    const double eps = std::ldexp(1.0, -static_cast<int>(tracks[k].bits));
+    const double steps = t_end > 0 ? tracks[k].steps * t / t_end : 0;
+    return eps * std::sqrt(std::max(steps, 1.0));
+  };
+  for (std::size_t i = 0; i < rows; ++i) {
+    csv << to_decimal(times[0][i]);
+    if (period > 0) csv << "," << to_decimal(times[0][i] / period);
+    for (std::size_t k = 0; k < tracks.size(); ++k)
+      csv << "," << (i < errors[k].size() ? to_decimal(errors[k][i]) : "") << "," << to_decimal(brouwer(k, times[0][i]));
+    csv << "\n";
+  }
+  write_whole(dir, "horizon.csv", csv.str());
+
+  // The table: digits kept at 1, 10, 100, ... periods (or tenths of the horizon without a period).
+  std::vector<double> marks, counts;
+  const double unit = period > 0 ? period : t_end / 10;
+  for (double m = 1; m * unit <= t_end * (1 + 1e-12); m *= 10) {
+    marks.push_back(m * unit);
+    counts.push_back(m);
+  }
+  std::ostringstream table;
+  table << "| scalar | bits | order | steps | seconds |";
+  for (std::size_t q = 0; q < marks.size(); ++q)
+    table << " digits to " << (period > 0 ? to_decimal(counts[q]) + (counts[q] == 1 ? " period" : " periods") : "t = " + to_decimal(marks[q]))
+          << " |";
+  table << " Brouwer's digits at T |\n|---|---|---|---|---|";
+  for (std::size_t q = 0; q < marks.size(); ++q) table << "---|";
+  table << "---|\n";
+  nlohmann::json js_tracks = nlohmann::json::array();
+  for (std::size_t k = 0; k < tracks.size(); ++k) {
+    table << "| " << tracks[k].scalar << " | " << tracks[k].bits << " | " << tracks[k].order << " | " << tracks[k].steps << " | ";
+    char sec[32];
+    std::snprintf(sec, sizeof sec, "%.3g", tracks[k].seconds);
+    table << sec << " |";
+    nlohmann::json marks_js = nlohmann::json::array();
+    for (double m : marks) {
+      // the worst error up to the mark
+      double worst = 0;
+      for (std::size_t i = 0; i < errors[k].size() && times[k][i] <= m * (1 + 1e-9); ++i) worst = std::max(worst, errors[k][i]);
+      table << " " << digits_text(worst) << " |";
+      marks_js.push_back({{"t", m}, {"largest_error", worst}});
+    }
+    table << " " << digits_text(brouwer(k, t_end)) << " |\n";
+    js_tracks.push_back({{"scalar", tracks[k].scalar},
+                         {"bits", tracks[k].bits},
+                         {"order", tracks[k].order},
+                         {"steps", tracks[k].steps},
+                         {"seconds", tracks[k].seconds},
+                         {"largest_error_up_to", marks_js},
+                         {"final_error", errors[k].empty() ? 0.0 : errors[k].back()}});
+  }
+  nlohmann::json summary = {{"command", "horizon"},   {"scene", o.scene},   {"model", scene.model},
+                            {"t_end", o.t_end},       {"every", o.every},   {"period", period},
+                            {"reference", reference_kind}, {"error", "max_i |x_i - ref_i| / max(1, |ref_i|)"},
+                            {"tracks", js_tracks}};
+  write_whole(dir, "summary.json", summary.dump(2) + "\n");
+
+  std::string plotted;
+  {
+    const std::filesystem::path tmp = dir / (".horizon.png" + std::to_string(::getpid()));
+    const std::string x = period > 0 ? "2" : "1";
+    std::string script = "set terminal png size 1000,560 noenhanced\nset output '" + tmp.string() +
+                         "'\nset datafile separator ','\nset logscale xy\nset autoscale xfix\nset format y '%.0e'\nset xlabel '" +
+                         (period > 0 ? std::string("periods") : std::string("t")) +
+                         "'\nset ylabel 'error against the 256-bit reference'\nset title '" + scene.model +
+                         ": error against time; dashed: Brouwer (eps sqrt(steps))'\nset grid\nset key below\nplot ";
+    const int first_col = period > 0 ? 3 : 2;
+    for (std::size_t k = 0; k < tracks.size(); ++k) {
+      const int col = first_col + 2 * static_cast<int>(k);
+      script += std::string(k ? ", " : "") + "'" + (dir / "horizon.csv").string() + "' every ::1 using " + x + ":($" +
+                std::to_string(col) + " > 0 ? $" + std::to_string(col) + " : 1/0) with lines lw 2 lc " +
+                std::to_string(k + 1) + " title '" + tracks[k].scalar + "', '' every ::1 using " + x + ":" +
+                std::to_string(col + 1) + " with lines dt 2 lc " + std::to_string(k + 1) + " notitle";
+    }
+    if (FILE* gp = popen("gnuplot 2>/dev/null", "w")) {
+      std::fputs((script + "\n").c_str(), gp);
+      pclose(gp);
+    }
+    std::error_code ec;
+    if (std::filesystem::exists(tmp)) {
+      std::filesystem::rename(tmp, dir / "horizon.png", ec);
+      plotted = ", horizon.png";
+    }
+  }
+  std::cout << "horizon " << scene.model << " to t = " << o.t_end;
+  if (period > 0) std::cout << " (" << t_end / period << " periods of " << period << ")";
+  std::cout << "; reference: " << reference_kind << "\n" << table.str();
+  std::cout << "wrote " << (dir / "horizon.csv").string() << ", summary.json" << plotted << "\n";
+  return 0;
+}
+
+}  // namespace appell::cli
