@@ -814,6 +814,7 @@ BOOST_AUTO_TEST_CASE(simulate_and_enclose_write_their_files_whole) {
 
 BOOST_AUTO_TEST_CASE(horizon_refuses_bad_input_and_meets_the_closed_form) {
   const std::string out = (work / "horizon").string();
+  std::filesystem::remove_all(out);  // a run before this one wrote there
   const std::string scene = APPELL_SOURCE_DIR "/data/scenes/euler_body_horizon.json";
   expect_bad_input("horizon " + scene + " --t-end -1 --out " + out, "--t-end");
   expect_bad_input("horizon " + scene + " --out " + out, "--t-end");

@@ -210,6 +210,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   std::vector<std::string> group_header;
   std::vector<double> worst_over;  // per result/invariant value: largest width over a step
   std::vector<std::string> value_names;
+  std::size_t result_values = 0;  // value_names: the results' first, then the invariants'
   vector_t<I> last_end = x0;
   progress_meter meter("enclose", approx_double(t_end), o.quiet);
   const ode::enclose_stats st = ode::enclose(
@@ -218,6 +219,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
         if (first) {
           std::vector<std::string> names;
           column_names(s.results, "", names);
+          result_values = names.size();
           column_names(s.invariants, "", names);
           value_names = names;
           for (const auto& nm : names) {
@@ -231,19 +233,19 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
         for (Eigen::Index i = 0; i < s.end.size(); ++i) body << "," << bounds(s.end(i));
         for (Eigen::Index i = 0; i < s.over.size(); ++i) body << "," << bounds(s.over(i));
         std::size_t v = 0;
-        double wr = 0;
-        auto emit_group = [&](const std::vector<ode::named_values<I>>& g) {
+        double wr = 0;  // the invariants' largest width over the step (their uncertainty: constant in truth)
+        auto emit_group = [&](const std::vector<ode::named_values<I>>& g, bool invariant) {
           for (const auto& nv : g)
             for (const I& x : nv.values) {
               body << "," << bounds(x);
               const double w = approx_double(I(scalar_traits<I>::width(x)));
               worst_over[v] = std::max(worst_over[v], w);
-              wr = std::max(wr, w);
+              if (invariant) wr = std::max(wr, w);
               ++v;
             }
         };
-        emit_group(s.results);
-        emit_group(s.invariants);
+        emit_group(s.results, false);
+        emit_group(s.invariants, true);
         body << "\n";
         const double we = ode::detail::max_width(s.end);
         worst_end = std::max(worst_end, we);
@@ -292,7 +294,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
          scalar_traits<I>::name + " (" + std::to_string(scalar_traits<I>::precision_bits()) + " bits), order " +
          std::to_string(order) + "'\nset grid\nset key below\nplot '" + datf.string() +
          "' using 1:2 with lines title 'state at each step end (largest width)', '' using 1:3 with lines title "
-         "'results and invariants over each whole step (largest width)'\n");
+         "'invariants over each whole step (largest width; constant in truth)'\n");
     std::filesystem::remove(datf);
     std::error_code ec;
     if (std::filesystem::exists(tmp)) {
@@ -307,7 +309,8 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   if (st.complete) out << "  certified up to t = " << o.t_end << "; the state's largest width there " << final_width << "\n";
   else out << "  INCOMPLETE: " << st.reason << "; enclosed up to t = " << st.t_reached << "\n";
   for (std::size_t i = 0; i < value_names.size(); ++i)
-    out << "  " << value_names[i] << ": largest width over a whole step " << worst_over[i] << "\n";
+    out << "  " << value_names[i] << ": enclosed over every whole step; widest " << worst_over[i]
+        << (i < result_values ? " (its variation over the step included)\n" : " (constant in truth)\n");
   out << "wrote " << (dir / "steps.csv").string() << ", summary.json" << plotted << "\n";
   return {st.complete ? 0 : 3, out.str()};
 }
