@@ -16,6 +16,7 @@
 #include <string>
 
 #include "appell/io/json.hpp"
+#include "appell/ode/closed_forms.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 
 namespace {
@@ -841,4 +842,38 @@ BOOST_AUTO_TEST_CASE(horizon_refuses_bad_input_and_meets_the_closed_form) {
   BOOST_TEST(std::filesystem::exists(out + "/horizon.csv"));
   for (const auto& entry : std::filesystem::directory_iterator(out))
     BOOST_TEST(entry.path().filename().string()[0] != '.', "a temporary file was left: " << entry.path());
+}
+
+BOOST_AUTO_TEST_CASE(reference_along_a_trajectory_takes_the_states_of_the_motion) {
+  // --trajectory 10 --every 1 on Euler's body (1, 2, 3), omega0 = (1, 0, 1): 11 states named t=0..t=10,
+  // each certified, each on the motion: the Jacobi-elliptic solution (long double, Boost.Math)
+  // within 1e-15 at every t.
+  const std::string out = (work / "ref_trajectory").string();
+  std::filesystem::remove_all(out);
+  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/euler_body_horizon.json";
+  const outcome r = run("reference " + scene + " --trajectory 10 --every 1 --scalar mpfi --bits 113 --out " + out);
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  const appell::ode::euler_free_body_solution<long double> truth(1.0L, 2.0L, 3.0L, 1.0L, 1.0L);
+  std::ifstream f(out + "/reference.jsonl");
+  std::string line;
+  int n = 0;
+  while (std::getline(f, line)) {
+    BOOST_TEST(line.find("\"state\":\"t=" + std::to_string(n) + "\"") != std::string::npos, line.substr(0, 40));
+    BOOST_TEST(line.find("\"status\":\"certified\"") != std::string::npos);
+    const auto w = truth.at(static_cast<long double>(n));
+    for (int i = 0; i < 3; ++i) {
+      const std::string key = "\"omega[" + std::to_string(i) + "]\":\"";
+      const std::size_t at = line.find(key);
+      BOOST_TEST_REQUIRE(at != std::string::npos);
+      const long double v = std::stold(line.substr(at + key.size()));
+      BOOST_TEST(std::fabs(static_cast<double>(v - w[static_cast<std::size_t>(i)])) < 1e-15, "t=" << n << " omega[" << i << "] " << v);
+    }
+    ++n;
+  }
+  BOOST_TEST(n == 11);
+  expect_bad_input("reference " + std::string(APPELL_SOURCE_DIR "/data/scenes/top_on_cone.json") +
+                       " --trajectory 2 --every 0.5 --out " + out, "--trajectory");
+  expect_bad_input("reference " + scene + " --trajectory 2 --out " + out, "--every");
+  expect_bad_input("reference " + scene + " --trajectory 2 --every 3 --out " + out, "--every");
+  expect_bad_input("reference " + scene + " --trajectory -2 --every 1 --out " + out, "--trajectory");
 }

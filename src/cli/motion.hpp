@@ -68,6 +68,13 @@ struct horizon_track {
 template <Scalar T>
 horizon_track run_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every, bool quiet);
 
+/// The scene fields of a model's motion state, in the order of its problem's state (empty: no motion).
+inline std::vector<std::string> motion_state_fields(const std::string& model) {
+  if (model == "euler_body") return {"omega[0]", "omega[1]", "omega[2]"};
+  if (model == "heavy_top") return {"psi", "theta", "phi", "psi_dot", "theta_dot", "phi_dot"};
+  return {};
+}
+
 /// Parses argv[first..] into o; returns "" or the usage error (naming the flag).
 std::string parse_motion_arguments(int argc, char** argv, int first, motion_options& o);
 

@@ -21,6 +21,7 @@
 
 #include "appell/io/scene.hpp"
 #include "files.hpp"
+#include "motion.hpp"
 
 #ifndef APPELL_VERSION_STRING
 #define APPELL_VERSION_STRING "unknown"
@@ -431,6 +432,36 @@ std::uint64_t uniform_up_to(std::mt19937_64& rng, std::uint64_t range) {
   return x % span;
 }
 
+/// The states of --trajectory T --every DT: the scene's motion by simulate in dd, each value
+/// the double nearest to it (what an engine in binary64 would be given), as a states table.
+csv_table trajectory_states(const reference_options& o, const scene_input& scene) {
+  const auto fields = motion_state_fields(scene.model);
+  if (fields.empty())
+    throw input_error("--trajectory: the model '" + scene.model + "' has no motion (euler_body and heavy_top have)");
+  double t_end = 0, every = 0;
+  try {
+    t_end = from_decimal<double>(o.trajectory);
+    every = from_decimal<double>(o.every);
+  } catch (const std::exception&) {
+  }
+  if (!(t_end > 0) || !std::isfinite(t_end)) throw input_error("--trajectory: expected a positive decimal, got '" + o.trajectory + "'");
+  if (!(every > 0) || !std::isfinite(every)) throw input_error("--every: expected a positive decimal, got '" + o.every + "'");
+  if (every > t_end) throw input_error("--every: the output step " + o.every + " is larger than the horizon " + o.trajectory);
+  if (t_end / every > 1e6) throw input_error("--every: more than 10^6 states; choose a larger step");
+  const horizon_track tr = run_horizon_track<dd>(scene, o.trajectory, o.every, true);
+  csv_table t;
+  t.path = "--trajectory";
+  t.header.push_back("state");
+  for (const auto& f : fields) t.header.push_back(f);
+  for (std::size_t i = 0; i < tr.t.size(); ++i) {
+    std::vector<std::string> row{"t=" + to_decimal(from_decimal<double>(tr.t[i]))};
+    for (const auto& v : tr.x[i]) row.push_back(to_decimal(from_decimal<double>(v)));
+    t.rows.push_back(std::move(row));
+    t.line_of_row.push_back(static_cast<int>(i) + 2);
+  }
+  return t;
+}
+
 /// The states of --box SPEC --n N --seed S --digits D, as a table like a states file's.
 csv_table box_states(const reference_options& o) {
   csv_table t;
@@ -500,8 +531,11 @@ reference_run::reference_run(const reference_options& o) {
       }
     if (!replaced) r.root.members.push_back({"project", tol});
   }
-  (void)read_scene(r.root);  // the scene itself must be valid
-  if (!o.box.empty()) {
+  const scene_input base_scene = read_scene(r.root);  // the scene itself must be valid
+  if (!o.trajectory.empty()) {
+    r.states = trajectory_states(o, base_scene);
+    r.states_text = "trajectory " + o.trajectory + " every " + o.every;
+  } else if (!o.box.empty()) {
     r.states = box_states(o);
     r.states_text = "box " + o.box + " n " + std::to_string(o.n) + " seed " + std::to_string(o.seed) + " digits " +
                     std::to_string(o.digits);
@@ -545,13 +579,16 @@ std::string parse_reference_arguments(int argc, char** argv, int first, referenc
   for (int i = first; i < argc; ++i) {
     const std::string a = argv[i];
     const bool takes_value = a == "--states" || a == "--scalar" || a == "--bits" || a == "--inputs" || a == "--out" ||
-                             a == "--box" || a == "--n" || a == "--seed" || a == "--digits" || a == "--project";
+                             a == "--box" || a == "--n" || a == "--seed" || a == "--digits" || a == "--project" ||
+                             a == "--trajectory" || a == "--every";
     if (takes_value && i + 1 >= argc) return a + ": missing value";
     auto count = [](const std::string& v, std::size_t digits_max) {
       return !v.empty() && v.size() <= digits_max && v.find_first_not_of("0123456789") == std::string::npos;
     };
     if (a == "--states") r.states = argv[++i];
     else if (a == "--box") r.box = argv[++i];
+    else if (a == "--trajectory") r.trajectory = argv[++i];
+    else if (a == "--every") r.every = argv[++i];
     else if (a == "--project") r.project = argv[++i];
     else if (a == "--n") {
       const std::string v = argv[++i];
@@ -582,8 +619,12 @@ std::string parse_reference_arguments(int argc, char** argv, int first, referenc
     else positional.push_back(a);
   }
   if (positional.size() != 1) return "reference: expected one scene";
-  if (!r.states.empty() && !r.box.empty()) return "reference: --states and --box exclude each other";
-  if (r.states.empty() && r.box.empty()) return "reference: --states FILE (or --box SPEC --n N) is required";
+  if (!r.states.empty() + !r.box.empty() + !r.trajectory.empty() > 1)
+    return "reference: --states, --box and --trajectory exclude each other";
+  if (r.states.empty() && r.box.empty() && r.trajectory.empty())
+    return "reference: --states FILE (or --box SPEC --n N) is required";
+  if (!r.trajectory.empty() && r.every.empty()) return "reference: --trajectory needs --every DT";
+  if (r.trajectory.empty() && !r.every.empty()) return "reference: --every goes with --trajectory";
   if (!r.box.empty() && r.n == 0) return "reference: --box needs --n N";
   if (r.box.empty() && r.n != 0) return "reference: --n goes with --box";
   if (r.out_dir.empty()) return "reference: --out DIR is required";
@@ -684,7 +725,11 @@ int reference_run::write(const std::vector<reference_state_output>& outputs, int
   manifest["inputs"] = o.binary64_inputs ? "binary64" : "decimal";
   if (!o.project.empty()) manifest["project"] = o.project;
   manifest["scene_sha256"] = sha256(r.scene_text);
-  if (o.box.empty()) {
+  if (!o.trajectory.empty()) {
+    manifest["trajectory"] = o.trajectory;
+    manifest["every"] = o.every;
+    manifest["trajectory_by"] = "simulate in dd (default order and tolerance), each value the nearest double";
+  } else if (o.box.empty()) {
     manifest["states_file"] = o.states;
   } else {
     manifest["box"] = o.box;

@@ -1,7 +1,8 @@
 // The `appell reference` and `appell score` commands: certified reference
 // values for other implementations, and the scoring of their values.
 //
-// reference SCENE (--states FILE | --box SPEC --n N [--seed S] [--digits D]) --scalar interval|mpfi [--bits N]
+// reference SCENE (--states FILE | --box SPEC --n N [--seed S] [--digits D] | --trajectory T --every DT)
+//           --scalar interval|mpfi [--bits N]
 //           [--inputs decimal|binary64] [--project TOL] --out DIR
 //   Many states of one scene in one process.  FILE is CSV: a header naming the
 //   fields each row replaces in the scene (a plain name is a key of the scene's
@@ -38,6 +39,9 @@ struct reference_options {
   // fields keep the scene's values.  Drawn from std::mt19937_64 (fixed by the C++ standard) by
   // exact integer arithmetic: the same states on every machine.
   std::string box;
+  // --trajectory T --every DT instead: the states of the scene's own motion at t = 0, DT, ..., T
+  // (simulate in dd, each value the double nearest to it), named t=...; models with a motion.
+  std::string trajectory, every;
   std::size_t n = 0;
   std::uint64_t seed = 1;
   int digits = 6;
