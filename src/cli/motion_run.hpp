@@ -70,6 +70,18 @@ inline void plot(const std::string& script) {
   }
 }
 
+/// The precision asked for (--bits), recorded before the evaluation scope raises mpfi's working
+/// precision by its guard bits.
+inline thread_local unsigned requested_bits = 0;
+
+/// "113 bits" or "113 bits, working precision 128".
+template <Scalar T>
+std::string bits_text() {
+  const unsigned working = scalar_traits<T>::precision_bits();
+  const unsigned asked = requested_bits ? requested_bits : working;
+  return std::to_string(asked) + " bits" + (asked != working ? ", working precision " + std::to_string(working) : "");
+}
+
 template <Scalar T>
 int default_order() {
   const unsigned bits = scalar_traits<T>::precision_bits();
@@ -139,7 +151,8 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
                             {"scene", o.scene},
                             {"model", scene.model},
                             {"scalar", scalar_traits<T>::name},
-                            {"bits", scalar_traits<T>::precision_bits()},
+                            {"bits", requested_bits ? requested_bits : scalar_traits<T>::precision_bits()},
+                            {"working_bits", scalar_traits<T>::precision_bits()},
                             {"order", order},
                             {"tol", tol},
                             {"t_end", o.t_end},
@@ -176,8 +189,7 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
     }
   }
   std::ostringstream out;
-  out << "simulate " << scene.model << " in " << scalar_traits<T>::name << " (" << scalar_traits<T>::precision_bits()
-      << " bits), order " << order << ", tol " << tol << ": " << st.steps << " steps to t = " << o.t_end << " in "
+  out << "simulate " << scene.model << " in " << scalar_traits<T>::name << " (" << bits_text<T>() << "), order " << order << ", tol " << tol << ": " << st.steps << " steps to t = " << o.t_end << " in "
       << st.seconds << " s\n";
   for (const auto& j : inv)
     out << "  " << j["name"].get<std::string>() << ": largest relative drift " << j["max_relative_drift"].get<double>() << "\n";
@@ -267,7 +279,8 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
                             {"scene", o.scene},
                             {"model", scene.model},
                             {"scalar", scalar_traits<I>::name},
-                            {"bits", scalar_traits<I>::precision_bits()},
+                            {"bits", requested_bits ? requested_bits : scalar_traits<I>::precision_bits()},
+                            {"working_bits", scalar_traits<I>::precision_bits()},
                             {"order", order},
                             {"tol", tol},
                             {"t_end", o.t_end},
@@ -291,7 +304,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
     const std::filesystem::path tmp = dir / (".widths.png" + std::to_string(::getpid()));
     plot("set terminal png size 900,500 noenhanced\nset output '" + tmp.string() +
          "'\nset logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'width'\nset title '" + scene.model + ", " +
-         scalar_traits<I>::name + " (" + std::to_string(scalar_traits<I>::precision_bits()) + " bits), order " +
+         scalar_traits<I>::name + " (" + bits_text<I>() + "), order " +
          std::to_string(order) + "'\nset grid\nset key below\nplot '" + datf.string() +
          "' using 1:2 with lines title 'state at each step end (largest width)', '' using 1:3 with lines title "
          "'invariants over each whole step (largest width; constant in truth)'\n");
@@ -303,8 +316,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
     }
   }
   std::ostringstream out;
-  out << "enclose " << scene.model << " in " << scalar_traits<I>::name << " (" << scalar_traits<I>::precision_bits()
-      << " bits), order " << order << ": " << st.steps << " steps (" << st.rejected << " rejected) in " << st.seconds
+  out << "enclose " << scene.model << " in " << scalar_traits<I>::name << " (" << bits_text<I>() << "), order " << order << ": " << st.steps << " steps (" << st.rejected << " rejected) in " << st.seconds
       << " s\n";
   if (st.complete) out << "  certified up to t = " << o.t_end << "; the state's largest width there " << final_width << "\n";
   else out << "  INCOMPLETE: " << st.reason << "; enclosed up to t = " << st.t_reached << "\n";
@@ -352,6 +364,7 @@ auto with_problem(const scene_input& scene, const std::string& command, F&& f) {
 
 template <Scalar T>
 motion_outcome run_motion(const scene_input& scene, const motion_options& o) {
+  motion_detail::requested_bits = scalar_traits<T>::precision_bits();
   const evaluation_scope<T> scope;
   return motion_detail::with_problem<T>(scene, o.command, [&](const auto& prob, const vector_t<T>& x0) {
     return motion_detail::run_problem<T>(prob, x0, scene, o);
