@@ -37,17 +37,6 @@ namespace {
 
 using ref_t = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<256>, boost::multiprecision::et_off>;
 
-double positive(const std::string& flag, const std::string& text) {
-  double v = 0;
-  try {
-    v = from_decimal<double>(text);
-  } catch (const std::exception&) {
-    throw input_error(flag + ": expected a positive decimal, got '" + text + "'");
-  }
-  if (!(v > 0) || !std::isfinite(v)) throw input_error(flag + ": expected a positive decimal, got '" + text + "'");
-  return v;
-}
-
 /// The closed form of Euler's body when the scene is one it covers.
 std::optional<ode::euler_free_body_solution<ref_t>> euler_closed_form(const scene_input& scene) {
   if (scene.model != "euler_body") return std::nullopt;
@@ -99,14 +88,8 @@ std::string parse_horizon_arguments(int argc, char** argv, int first, horizon_op
           if (!s.empty()) o.scalars.push_back(s);
         if (o.scalars.empty()) return "--scalars: expected a comma-separated list of point scalars";
       }
-    } else if (a == "--quiet") {
-      o.quiet = true;
-    } else if (!a.empty() && a[0] == '-') {
-      return "unknown option " + a;
-    } else if (o.scene.empty()) {
-      o.scene = a;
-    } else {
-      return "unexpected argument '" + a + "'";
+    } else if (const std::string e = parse_common_argument(a, o.scene, o.quiet); !e.empty()) {
+      return e;
     }
   }
   return "";
@@ -117,7 +100,7 @@ int horizon(const horizon_options& given) {
   if (o.scene.empty()) throw input_error("horizon: SCENE is required");
   if (o.t_end.empty()) throw input_error("--t-end: required (the horizon, a positive decimal)");
   if (o.out.empty()) throw input_error("--out: required (the directory to write)");
-  const double t_end = positive("--t-end", o.t_end);
+  const double t_end = positive_decimal("--t-end", o.t_end);
   for (const auto& s : o.scalars) {
     const auto infos = standard_scalar_infos();
     const auto it = std::find_if(infos.begin(), infos.end(), [&](const scalar_info& i) { return i.name == s; });
@@ -131,7 +114,7 @@ int horizon(const horizon_options& given) {
   if (closed) period = static_cast<double>(closed->period());
   if (top) period = static_cast<double>(top->period());
   if (o.every.empty()) o.every = to_decimal(period > 0 ? std::min(period, t_end / 10) : t_end / 1000);
-  const double every = positive("--every", o.every);
+  const double every = positive_decimal("--every", o.every);
   if (every > t_end) throw input_error("--every: the output step " + o.every + " is larger than the horizon " + o.t_end);
   if (t_end / every > 1e6) throw input_error("--every: more than 10^6 output times; choose a larger step");
 

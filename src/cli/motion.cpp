@@ -8,8 +8,6 @@
 
 namespace appell::cli {
 
-namespace {
-/// A positive finite decimal, or input_error naming the flag.
 double positive_decimal(const std::string& flag, const std::string& text) {
   double v = 0;
   try {
@@ -20,7 +18,14 @@ double positive_decimal(const std::string& flag, const std::string& text) {
   if (!(v > 0) || !std::isfinite(v)) throw input_error(flag + ": expected a positive decimal, got '" + text + "'");
   return v;
 }
-}  // namespace
+
+std::string parse_common_argument(const std::string& a, std::string& scene, bool& quiet) {
+  if (a == "--quiet") quiet = true;
+  else if (!a.empty() && a[0] == '-') return "unknown option " + a;
+  else if (scene.empty()) scene = a;
+  else return "unexpected argument '" + a + "'";
+  return "";
+}
 
 std::string parse_motion_arguments(int argc, char** argv, int first, motion_options& o) {
   for (int i = first; i < argc; ++i) {
@@ -69,14 +74,8 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
           return e.what();
         }
       }
-    } else if (a == "--quiet") {
-      o.quiet = true;
-    } else if (!a.empty() && a[0] == '-') {
-      return "unknown option " + a;
-    } else if (o.scene.empty()) {
-      o.scene = a;
-    } else {
-      return "unexpected argument '" + a + "'";
+    } else if (const std::string e = parse_common_argument(a, o.scene, o.quiet); !e.empty()) {
+      return e;
     }
   }
   return "";

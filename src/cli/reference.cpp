@@ -438,14 +438,7 @@ csv_table trajectory_states(const reference_options& o, const scene_input& scene
   const auto fields = motion_state_fields(scene.model);
   if (fields.empty())
     throw input_error("--trajectory: the model '" + scene.model + "' has no motion (euler_body and heavy_top have)");
-  double t_end = 0, every = 0;
-  try {
-    t_end = from_decimal<double>(o.trajectory);
-    every = from_decimal<double>(o.every);
-  } catch (const std::exception&) {
-  }
-  if (!(t_end > 0) || !std::isfinite(t_end)) throw input_error("--trajectory: expected a positive decimal, got '" + o.trajectory + "'");
-  if (!(every > 0) || !std::isfinite(every)) throw input_error("--every: expected a positive decimal, got '" + o.every + "'");
+  const double t_end = positive_decimal("--trajectory", o.trajectory), every = positive_decimal("--every", o.every);
   if (every > t_end) throw input_error("--every: the output step " + o.every + " is larger than the horizon " + o.trajectory);
   if (t_end / every > 1e6) throw input_error("--every: more than 10^6 states; choose a larger step");
   const horizon_track tr = run_horizon_track<dd>(scene, o.trajectory, o.every, true);
