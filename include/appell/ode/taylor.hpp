@@ -97,16 +97,18 @@ vector_t<S> horner(const series<S>& c, const S& tau, int first, int last) {
 /// The step size from the last two coefficients (point magnitudes).
 template <class S>
 double step_from_coefficients(const series<S>& c, double tol) {
+  // Component by component: each with the tolerance tol max(1, |x_i|).  One scale for the
+  // whole state (its largest component) let an angle that grows without bound (a top's spin
+  // angle, 40 t) loosen the tolerance of every other component as t grows: the heavy top's
+  // long-horizon error then grew as t^3 (appell horizon, README).
   const int p = static_cast<int>(c.size()) - 1;
-  double scale = 1;
-  for (Eigen::Index i = 0; i < c[0].size(); ++i) scale = std::max(scale, std::fabs(approx_double(c[0](i))));
-  const double eps = tol * scale;
   double h = std::numeric_limits<double>::infinity();
-  for (int k = p - 1; k <= p; ++k) {
-    double m = 0;
-    for (Eigen::Index i = 0; i < c[static_cast<std::size_t>(k)].size(); ++i)
-      m = std::max(m, std::fabs(approx_double(c[static_cast<std::size_t>(k)](i))));
-    if (m > 0) h = std::min(h, std::pow(eps / m, 1.0 / k));
+  for (Eigen::Index i = 0; i < c[0].size(); ++i) {
+    const double eps = tol * std::max(1.0, std::fabs(approx_double(c[0](i))));
+    for (int k = p - 1; k <= p; ++k) {
+      const double m = std::fabs(approx_double(c[static_cast<std::size_t>(k)](i)));
+      if (m > 0) h = std::min(h, std::pow(eps / m, 1.0 / k));
+    }
   }
   return h * std::exp(-0.7 / (p - 1));
 }
