@@ -753,6 +753,43 @@ BOOST_AUTO_TEST_CASE(reference_projects_engine_states_onto_the_constraints) {
                    "project");
 }
 
+// The same for a system file (the rolling disk): engine states refused as they stand, certified
+// with --project at their projection (test system_model checks the projection itself at 400 bits).
+BOOST_AUTO_TEST_CASE(reference_projects_system_states_onto_the_constraints) {
+  std::ostringstream states;
+  states << "state,theta,z,x_dot,psi_dot,phi_dot\n";
+  for (int i = 0; i < 5; ++i) {
+    const double theta = 0.1 + 0.1 * i, psid = 1 + i, phid = 10 - i;
+    char row[200];  // z = a cos(theta), x_dot = a (psi' sin(theta) + phi') at psi = 0, as a double engine prints them
+    std::snprintf(row, sizeof row, "d%d,%.17g,%.17g,%.17g,%.17g,%.17g\n", i, theta, 0.3 * std::cos(theta),
+                  0.3 * (psid * std::sin(theta) + phid), psid, phid);
+    states << row;
+  }
+  const std::string file = text_file("disk_engine.csv", states.str());
+  const std::string scene = std::string(APPELL_SOURCE_DIR) + "/data/scenes/system_rolling_disk.json";
+  const std::string strict = (work / "disk_strict").string();
+  const outcome s = run("reference " + scene + " --states " + file + " --scalar interval --out " + strict);
+  BOOST_TEST(s.status == 3, s.err);
+  BOOST_TEST(slurp(strict + "/reference.csv").find("does not hold") != std::string::npos);
+  const std::string projected = (work / "disk_projected").string();
+  const outcome o = run("reference " + scene + " --states " + file + " --scalar mpfi --bits 113 --project 1e-12 --out " + projected);
+  BOOST_TEST_REQUIRE(o.status == 0, o.err);
+  std::istringstream lines(slurp(projected + "/reference.jsonl"));
+  std::string line;
+  int n = 0;
+  for (; std::getline(lines, line); ++n) {
+    const json_value j = parse_json(line);
+    const json_value* moved = j.find("derived")->find("coordinates_moved");
+    BOOST_TEST_REQUIRE(moved != nullptr);
+    BOOST_TEST(std::stod(moved->find("upper")->text) < 1e-12);
+    BOOST_TEST(j.find("quantities")->find("ground_reaction") != nullptr);
+  }
+  BOOST_TEST(n == 5);
+  const outcome far = run("reference " + scene + " --states " + file + " --scalar interval --project 1e-30 --out " + projected + "_far");
+  BOOST_TEST(far.status == 3, far.err);
+  BOOST_TEST(slurp(projected + "_far/reference.csv").find("more than project") != std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(simulate_and_enclose_refuse_bad_input_naming_the_flag) {
   const std::string out = (work / "motion_bad").string();
   const std::string top = APPELL_SOURCE_DIR "/data/scenes/heavy_top.json";
@@ -772,7 +809,7 @@ BOOST_AUTO_TEST_CASE(simulate_and_enclose_refuse_bad_input_naming_the_flag) {
   expect_bad_input("enclose " + good_scene + " --t-end 1 --scalar double --out " + out, "--scalar");
   expect_bad_input("enclose " + good_scene + " --t-end 1 --every 0.1 --out " + out, "--every");
   expect_bad_input("enclose " + good_scene + " --t-end 1 --bits 113 --out " + out, "--bits");
-  expect_bad_input("simulate " + std::string(APPELL_SOURCE_DIR "/data/scenes/top_on_cone.json") + " --t-end 1 --out " + out,
+  expect_bad_input("simulate " + std::string(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk.json") + " --t-end 1 --out " + out,
                    "model");
   // A state the scene refuses is refused as by eval (theta = 0: the Euler angles are singular).
   expect_bad_input("simulate " +
@@ -871,7 +908,7 @@ BOOST_AUTO_TEST_CASE(reference_along_a_trajectory_takes_the_states_of_the_motion
     ++n;
   }
   BOOST_TEST(n == 11);
-  expect_bad_input("reference " + std::string(APPELL_SOURCE_DIR "/data/scenes/top_on_cone.json") +
+  expect_bad_input("reference " + std::string(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk.json") +
                        " --trajectory 2 --every 0.5 --out " + out, "--trajectory");
   expect_bad_input("reference " + scene + " --trajectory 2 --out " + out, "--every");
   expect_bad_input("reference " + scene + " --trajectory 2 --every 3 --out " + out, "--every");

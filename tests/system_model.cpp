@@ -260,13 +260,15 @@ struct disk_case {
   std::vector<std::pair<std::string, ref_t>> expected;
 };
 
-disk_case random_disk(const std::string& file_text) {
-  const std::string m = random_decimal(100, 10000, 3), a = random_decimal(50, 1000, 3);
-  const std::string psi = random_decimal(-3000, 3000, 3), theta = random_decimal(-1200, 1200, 3),
-                    phi = random_decimal(-3000, 3000, 3), psd = random_decimal(-5000, 5000, 3),
-                    thd = random_decimal(-2000, 2000, 3), phd = random_decimal(-30000, 30000, 3);
-  const ref_t M = ref_t(m), A = ref_t(a), ps = ref_t(psi), th = ref_t(theta), ph = ref_t(phi), g = ref_t("9.81");
-  const ref_t ps_d = ref_t(psd), th_d = ref_t(thd), ph_d = ref_t(phd);
+/// Newton-Euler for the rolling disk at 400 bits: the centre's velocity the rolling implies,
+/// and the results (accelerations, contact force) by name.
+struct disk_newton_euler {
+  V3 vG;
+  std::vector<std::pair<std::string, ref_t>> expected;
+};
+disk_newton_euler newton_euler_disk(const ref_t& M, const ref_t& A, const ref_t& ps, const ref_t& th, const ref_t& ph,
+                                    const ref_t& ps_d, const ref_t& th_d, const ref_t& ph_d) {
+  const ref_t g = ref_t("9.81");
   const M3 Rzx = rot(2, ps) * rot(0, th), R = Rzx * rot(1, ph);
   const V3 ez(0, 0, 1), h = rot(2, ps).col(0), n = Rzx.col(1), w = Rzx.col(2);
   const V3 omega = ez * ps_d + h * th_d + n * ph_d, Omega = ez * ps_d + h * th_d;
@@ -298,28 +300,46 @@ disk_case random_disk(const std::string& file_text) {
   E.col(0) = ez, E.col(1) = h, E.col(2) = n;
   const V3 rates = E.partialPivLu().solve(
       V3(alpha - cross3(ez * ps_d, h) * th_d - cross3(Omega, n) * ph_d));
-  disk_case c;
-  std::string s = file_text;
-  auto set_state = [&](const std::string& key, const std::string& value) {
+  return {vG,
+          {{"x_ddot", aG(0)},        {"y_ddot", aG(1)},        {"z_ddot", aG(2)},
+           {"psi_ddot", rates(0)},   {"theta_ddot", rates(1)}, {"phi_ddot", rates(2)},
+           {"roll_x_reaction", F(0)}, {"roll_y_reaction", F(1)}, {"ground_reaction", F(2)}}};
+}
+
+/// The disk's scene text with parameters and state fields replaced.
+struct scene_editor {
+  std::string s;
+  void state(const std::string& key, const std::string& value) {
     const std::string pattern = "\"" + key + "\": \"";
     const auto at = s.find(pattern, s.find("\"state\""));
     const auto end = s.find('"', at + pattern.size());
     s.replace(at + pattern.size(), end - at - pattern.size(), value);
-  };
-  auto set_parameter = [&](const std::string& key, const std::string& value) {
+  }
+  void parameter(const std::string& key, const std::string& value) {
     const std::string pattern = "\"" + key + "\": \"";
     const auto at = s.find(pattern);
     const auto end = s.find('"', at + pattern.size());
     s.replace(at + pattern.size(), end - at - pattern.size(), value);
-  };
-  set_parameter("m", m), set_parameter("a", a);
-  set_state("z", digits110(A * cos(th))), set_state("psi", psi), set_state("theta", theta), set_state("phi", phi);
-  set_state("x_dot", digits110(vG(0))), set_state("y_dot", digits110(vG(1))), set_state("z_dot", digits110(vG(2)));
-  set_state("psi_dot", psd), set_state("theta_dot", thd), set_state("phi_dot", phd);
+  }
+};
+
+disk_case random_disk(const std::string& file_text) {
+  const std::string m = random_decimal(100, 10000, 3), a = random_decimal(50, 1000, 3);
+  const std::string psi = random_decimal(-3000, 3000, 3), theta = random_decimal(-1200, 1200, 3),
+                    phi = random_decimal(-3000, 3000, 3), psd = random_decimal(-5000, 5000, 3),
+                    thd = random_decimal(-2000, 2000, 3), phd = random_decimal(-30000, 30000, 3);
+  const ref_t M = ref_t(m), A = ref_t(a), th = ref_t(theta);
+  const disk_newton_euler ne = newton_euler_disk(M, A, ref_t(psi), th, ref_t(phi), ref_t(psd), ref_t(thd), ref_t(phd));
+  const V3& vG = ne.vG;
+  disk_case c;
+  scene_editor e{file_text};
+  e.parameter("m", m), e.parameter("a", a);
+  e.state("z", digits110(A * cos(th))), e.state("psi", psi), e.state("theta", theta), e.state("phi", phi);
+  e.state("x_dot", digits110(vG(0))), e.state("y_dot", digits110(vG(1))), e.state("z_dot", digits110(vG(2)));
+  e.state("psi_dot", psd), e.state("theta_dot", thd), e.state("phi_dot", phd);
+  const std::string& s = e.s;
   c.json = s;
-  c.expected = {{"x_ddot", aG(0)},        {"y_ddot", aG(1)},        {"z_ddot", aG(2)},
-                {"psi_ddot", rates(0)},   {"theta_ddot", rates(1)}, {"phi_ddot", rates(2)},
-                {"roll_x_reaction", F(0)}, {"roll_y_reaction", F(1)}, {"ground_reaction", F(2)}};
+  c.expected = ne.expected;
   return c;
 }
 }  // namespace
@@ -355,6 +375,109 @@ BOOST_AUTO_TEST_CASE(a_rolling_disk_encloses_newton_euler) {
   BOOST_TEST_MESSAGE("rolling disk: " << values << " enclosures against Newton-Euler at 400 bits, " << misses << " misses");
   BOOST_TEST(values > 3000);
   BOOST_TEST(misses == 0);
+}
+
+// --- "project": states an engine exports, certified at their projection ---------------
+// A double engine prints the disk's state to 17 digits: off its constraints by ~1e-17, so
+// refused as it stands.  With "project" the reader moves it onto them (the coordinates along
+// the holonomic constraint's gradient at the given state, the speeds orthogonally onto the
+// constraints); here that projection is computed by hand at 400 bits (the ground constraint
+// z - a cos(theta) and the rolling rows derived on paper, Newton on the one multiplier), and
+// Newton-Euler at the projected state gives the results the enclosures must hold.
+namespace {
+std::string engine17(const ref_t& x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", static_cast<double>(x));
+  return buf;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(engine_states_of_the_disk_are_certified_at_their_projection) {
+  std::ifstream f(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk.json");
+  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  long values = 0, misses = 0, too_far = 0;
+  ref_t largest_move = 0;
+  for (int k = 0; k < 40; ++k) {
+    const std::string m = random_decimal(100, 10000, 3), a = random_decimal(50, 1000, 3);
+    const std::string psi = random_decimal(-3000, 3000, 3), theta = random_decimal(-1200, 1200, 3),
+                      phi = random_decimal(-3000, 3000, 3), psd = random_decimal(-5000, 5000, 3),
+                      thd = random_decimal(-2000, 2000, 3), phd = random_decimal(-30000, 30000, 3);
+    const ref_t M(m), A(a), ps(psi), th(theta), ph(phi);
+    const disk_newton_euler exact = newton_euler_disk(M, A, ps, th, ph, ref_t(psd), ref_t(thd), ref_t(phd));
+    const std::string z_text = engine17(A * cos(th)), xd = engine17(exact.vG(0)), yd = engine17(exact.vG(1)),
+                      zd = engine17(exact.vG(2));
+    scene_editor e{text};
+    e.parameter("m", m), e.parameter("a", a);
+    e.state("z", z_text), e.state("psi", psi), e.state("theta", theta), e.state("phi", phi);
+    e.state("x_dot", xd), e.state("y_dot", yd), e.state("z_dot", zd);
+    e.state("psi_dot", psd), e.state("theta_dot", thd), e.state("phi_dot", phd);
+    expect_refused(e.s, "state: constraint");  // as exported: off the constraints
+
+    // The projection by hand.
+    const ref_t z0(z_text), s0 = A * sin(th);
+    ref_t lambda = 0;
+    for (int it = 0; it < 60; ++it) {
+      const ref_t thl = th + s0 * lambda;
+      lambda -= (z0 + lambda - A * cos(thl)) / (1 + A * sin(thl) * s0);
+    }
+    const ref_t zp = z0 + lambda, thp = th + s0 * lambda;
+    Eigen::Matrix<ref_t, 3, 6> C = Eigen::Matrix<ref_t, 3, 6>::Zero();
+    C(0, 2) = 1, C(0, 4) = A * sin(thp);                                   // d/dt (z - a cos theta)
+    C(1, 0) = 1, C(1, 3) = -A * cos(ps) * sin(thp), C(1, 4) = -A * sin(ps) * cos(thp), C(1, 5) = -A * cos(ps);
+    C(2, 1) = 1, C(2, 3) = -A * sin(ps) * sin(thp), C(2, 4) = A * cos(ps) * cos(thp), C(2, 5) = -A * sin(ps);
+    Eigen::Matrix<ref_t, 6, 1> u0;
+    u0 << ref_t(xd), ref_t(yd), ref_t(zd), ref_t(psd), ref_t(thd), ref_t(phd);
+    const Eigen::Matrix<ref_t, 3, 3> CCt = C * C.transpose();
+    const Eigen::Matrix<ref_t, 3, 1> Cu = C * u0;
+    const Eigen::Matrix<ref_t, 6, 1> up = u0 - C.transpose() * CCt.partialPivLu().solve(Cu);
+    const ref_t q_moved = abs(lambda) * sqrt(1 + s0 * s0), u_moved = (up - u0).norm();
+    largest_move = std::max(largest_move, std::max(q_moved, u_moved));
+    const disk_newton_euler at = newton_euler_disk(M, A, ps, thp, ph, up(3), up(4), up(5));
+    std::vector<std::pair<std::string, ref_t>> want = at.expected;
+    const char* speed_names[] = {"x_dot", "y_dot", "z_dot", "psi_dot", "theta_dot", "phi_dot"};
+    for (int j = 0; j < 6; ++j) want.emplace_back(speed_names[j], up(j));
+    want.emplace_back("z", zp), want.emplace_back("theta", thp), want.emplace_back("psi", ps);
+    want.emplace_back("coordinates_moved", q_moved), want.emplace_back("speeds_moved", u_moved);
+
+    const std::string projected = replace(e.s, "\"model\": \"system\",", "\"model\": \"system\", \"project\": \"1e-12\",");
+    const scene_input scene = read_scene(parse_json(projected));
+    auto run = [&]<class T>(std::type_identity<T>) {
+      const evaluation<T> ev = evaluate<T>(scene);
+      for (const auto& [name, value] : want) {
+        ++values;
+        const bool derived = name.find("_ddot") == std::string::npos && name.find("_reaction") == std::string::npos;
+        const named_result<T>& r = derived ? ev.derived_result(name) : ev.result(name);
+        const auto [lo, hi] = bounds_of(r.values[0]);
+        // The certified state is the projection written to 90 digits: within 1e-85 of it.
+        const ref_t delta = ref_t("1e-75") * (1 + abs(value));
+        if (hi < value - delta || lo > value + delta) {
+          if (misses++ < 3)
+            BOOST_TEST_MESSAGE("miss: " << name << " = " << to_string(r.values[0]) << " against " << value.str(30));
+        }
+      }
+      for (const auto& ch : ev.checks) {
+        const auto [lo, hi] = bounds_of(ch.values[0]);
+        BOOST_TEST((lo <= 0 && hi >= 0), ch.name << " = " << to_string(ch.values[0]) << " excludes 0");
+      }
+      return 0;
+    };
+    with_scalar("interval", std::nullopt, run);
+    with_scalar("mpfi", 128u, run);
+    // A tolerance below the distance is refused, naming it.
+    if (q_moved > ref_t("1e-30") || u_moved > ref_t("1e-30")) {
+      ++too_far;
+      expect_refused(replace(e.s, "\"model\": \"system\",", "\"model\": \"system\", \"project\": \"1e-30\","),
+                     "more than project = 1e-30");
+    }
+  }
+  BOOST_TEST_MESSAGE("engine states of the disk: " << values << " enclosures at the projection, " << misses
+                                                   << " misses; largest move " << largest_move.str(3) << "; "
+                                                   << too_far << " refused with project = 1e-30");
+  BOOST_TEST(values == 40 * 2 * 20);
+  BOOST_TEST(misses == 0);
+  BOOST_TEST(too_far == 40);
+  BOOST_TEST(largest_move < ref_t("1e-12"));
+  expect_refused(replace(text, "\"model\": \"system\",", "\"model\": \"system\", \"project\": \"-1\","), "project");
 }
 
 // --- the Whipple bicycle against the benchmark's linearized equations -------------------

@@ -72,6 +72,8 @@ horizon_track run_horizon_track(const scene_input& scene, const std::string& t_e
 inline std::vector<std::string> motion_state_fields(const std::string& model) {
   if (model == "euler_body") return {"omega[0]", "omega[1]", "omega[2]"};
   if (model == "heavy_top") return {"psi", "theta", "phi", "psi_dot", "theta_dot", "phi_dot"};
+  if (model == "top_on_cone") return {"theta", "phi", "theta_dot", "phi_dot"};
+  if (model == "rolling_sphere") return {"center[0]", "center[1]", "center[2]", "omega[0]", "omega[1]", "omega[2]"};
   return {};
 }
 

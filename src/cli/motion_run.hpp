@@ -18,6 +18,8 @@
 
 #include "appell/io/models/euler_body.hpp"
 #include "appell/io/models/heavy_top.hpp"
+#include "appell/io/models/rolling_sphere.hpp"
+#include "appell/io/models/top_on_cone.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/taylor.hpp"
 
@@ -116,7 +118,7 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
   std::ostringstream csv;
   for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << header[i];
   csv << "\n";
-  // drift data: t and |I(t) - I(0)| / max(|I(0)|, 1e-300) per invariant
+  // drift data: t and |I(t) - I(0)| / max(|I(0)|, 1e-300) per invariant (|I(t)| for one that is 0 in truth)
   std::ostringstream dat;
   nlohmann::json inv = nlohmann::json::array();
   std::vector<double> worst(rows.front().invariants.size(), 0.0);
@@ -133,7 +135,9 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
       using std::abs;
       const T i0 = rows.front().invariants[q].values[0];
       const double d = approx_double(T(abs(T(r.invariants[q].values[0] - i0))));
-      const double rel = d / std::max(std::fabs(approx_double(i0)), 1e-300);
+      const bool absolute = rows.front().invariants[q].zero_in_truth;
+      const double rel = absolute ? std::fabs(approx_double(r.invariants[q].values[0]))
+                                  : d / std::max(std::fabs(approx_double(i0)), 1e-300);
       worst[q] = std::max(worst[q], rel);
       dat << " " << std::max(rel, 1e-40);
     }
@@ -143,7 +147,7 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
     inv.push_back({{"name", rows.front().invariants[q].name},
                    {"initial", to_string(rows.front().invariants[q].values[0])},
                    {"final", to_string(rows.back().invariants[q].values[0])},
-                   {"max_relative_drift", worst[q]}});
+                   {rows.front().invariants[q].zero_in_truth ? "max_abs_value" : "max_relative_drift", worst[q]}});
   nlohmann::json final_state = nlohmann::json::object();
   for (std::size_t i = 0; i < P::state_names().size(); ++i)
     final_state[P::state_names()[i]] = to_string(rows.back().x(static_cast<Eigen::Index>(i)));
@@ -174,12 +178,12 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
     const std::filesystem::path png = dir / "drift.png";
     const std::filesystem::path tmp = dir / (".drift.png" + std::to_string(::getpid()));
     std::string script = "set terminal png size 900,500 noenhanced\nset output '" + tmp.string() +
-                         "'\nset logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'relative drift |I(t) - I(0)| / |I(0)|'\n"
+                         "'\nset logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'relative drift |I(t) - I(0)| / |I(0)|, or |I(t)| where I = 0'\n"
                          "set title '" + scene.model + ", " + scalar_traits<T>::name + ", order " + std::to_string(order) +
                          "'\nset grid\nset key below\nplot ";
     for (std::size_t q = 0; q < worst.size(); ++q)
       script += std::string(q ? ", " : "") + "'" + datf.string() + "' using 1:" + std::to_string(q + 2) + " with lines title '" +
-                rows.front().invariants[q].name + "'";
+                rows.front().invariants[q].name + (rows.front().invariants[q].zero_in_truth ? " (|I|, 0 in truth)" : "") + "'";
     plot(script + "\n");
     std::filesystem::remove(datf);
     std::error_code ec;
@@ -191,8 +195,12 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
   std::ostringstream out;
   out << "simulate " << scene.model << " in " << scalar_traits<T>::name << " (" << bits_text<T>() << "), order " << order << ", tol " << tol << ": " << st.steps << " steps to t = " << o.t_end << " in "
       << st.seconds << " s\n";
-  for (const auto& j : inv)
-    out << "  " << j["name"].get<std::string>() << ": largest relative drift " << j["max_relative_drift"].get<double>() << "\n";
+  for (const auto& j : inv) {
+    if (j.contains("max_abs_value"))
+      out << "  " << j["name"].get<std::string>() << ": 0 in truth; largest |value| " << j["max_abs_value"].get<double>() << "\n";
+    else
+      out << "  " << j["name"].get<std::string>() << ": largest relative drift " << j["max_relative_drift"].get<double>() << "\n";
+  }
   out << "wrote " << (dir / "trajectory.csv").string() << ", summary.json" << plotted << "\n";
   return {0, out.str()};
 }
@@ -357,8 +365,20 @@ auto with_problem(const scene_input& scene, const std::string& command, F&& f) {
     x0 << m.state.psi, m.state.theta, m.state.phi, m.state.psi_dot, m.state.theta_dot, m.state.phi_dot;
     return f(ode::heavy_top_problem<T>{m.A, m.C, m.mass, m.l, m.g}, x0);
   }
-  throw input_error("model: " + command + " knows the models euler_body and heavy_top; '" + scene.model +
-                    "' has no motion yet");
+  if (scene.model == "top_on_cone") {
+    const auto m = top_on_cone_model::prepare<T>(scene.as<top_on_cone_input>());
+    vector_t<T> x0(4);
+    x0 << m.theta, m.phi, m.theta_dot, m.phi_dot;
+    return f(ode::top_on_cone_problem<T>{m.top, m.cone}, x0);
+  }
+  if (scene.model == "rolling_sphere") {
+    const auto m = rolling_sphere_model::prepare<T>(scene.as<rolling_sphere_input>());
+    vector_t<T> x0(6);
+    x0 << m.c(0), m.c(1), m.c(2), m.omega(0), m.omega(1), m.omega(2);
+    return f(ode::rolling_sphere_problem<T>{m.M, m.A, m.a, m.surface, m.F, m.tau}, x0);
+  }
+  throw input_error("model: " + command + " knows the models euler_body, heavy_top, top_on_cone and rolling_sphere; '" +
+                    scene.model + "' has no motion yet");
 }
 }  // namespace motion_detail
 

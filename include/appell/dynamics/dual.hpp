@@ -25,6 +25,8 @@ template <class S> bool structurally_zero(const S& x);
 // of a multi_dual (a multi_dual's derivative pass inside a linearization) finds them.
 template <class T, int N> struct multi_dual;
 template <class T, int N> multi_dual<T, N> pown(const multi_dual<T, N>& x, int n);
+template <class T> struct jet;  // truncated Taylor series (ode/jet.hpp): a dual of jets finds its pown
+template <class T> jet<T> pown(const jet<T>& x, int n);
 
 template <class T>
 struct dual {
@@ -240,18 +242,30 @@ template <class T, int N> struct is_dual<multi_dual<T, N>> : std::true_type {};
 template <class T> struct is_multi_dual : std::false_type {};
 template <class T, int N> struct is_multi_dual<multi_dual<T, N>> : std::true_type {};
 
-/// The base scalar of a (possibly nested) dual type.
+template <class T> struct is_jet : std::false_type {};
+template <class T> struct is_jet<jet<T>> : std::true_type {};
+
+/// The base scalar of a (possibly nested) dual type, or of a jet.
 template <class T> struct base_scalar { using type = T; };
 template <class T> struct base_scalar<dual<T>> { using type = typename base_scalar<T>::type; };
 template <class T, int N> struct base_scalar<multi_dual<T, N>> { using type = typename base_scalar<T>::type; };
+template <class T> struct base_scalar<jet<T>> { using type = typename base_scalar<T>::type; };
 template <class T> using base_scalar_t = typename base_scalar<T>::type;
 
 namespace detail {
-/// The value of a scalar, or of a (nested) dual's base scalar.
+/// The value of a scalar, or of a (nested) dual's base scalar, or a jet's constant term (over
+/// an enclosure's box, the value at every point the series is expanded at).
 template <class S>
 const base_scalar_t<S>& value_of(const S& x) {
   if constexpr (is_dual<S>::value) return value_of(x.v);
+  else if constexpr (is_jet<S>::value) return value_of(x.c[0]);
   else return x;
+}
+/// A base scalar as S (a scalar, or a nested dual or jet of it), wrapped level by level.
+template <class S>
+S from_base(const base_scalar_t<S>& x) {
+  if constexpr (is_dual<S>::value) return S(from_base<std::remove_cvref_t<decltype(std::declval<const S&>().v)>>(x));
+  else return S(x);
 }
 }  // namespace detail
 
@@ -277,11 +291,11 @@ template <class S> bool structurally_one(const S& x) {
 
 /// x^n for scalars and duals alike.
 template <class S> S power(const S& x, int n) {
-  if constexpr (is_dual<S>::value) return pown(x, n);
+  if constexpr (is_dual<S>::value || is_jet<S>::value) return pown(x, n);
   else return appell::pown(x, n);
 }
 template <class S> S square(const S& x) {
-  if constexpr (is_dual<S>::value) return sqr(x);
+  if constexpr (is_dual<S>::value || is_jet<S>::value) return sqr(x);
   else return appell::sqr(x);
 }
 

@@ -192,8 +192,8 @@ S expression::apply(op kind, const S& a, const S& b, const long* integer, const 
     }
     case op::sqrt: {
       const T& d = detail::value_of(a);
-      // sqrt is not differentiable at 0: a dual argument must be > 0
-      if constexpr (is_dual<S>::value)
+      // sqrt is not differentiable at 0: a dual or jet argument must be > 0
+      if constexpr (is_dual<S>::value || is_jet<S>::value)
         domain(certainly_nonpositive(d), !certainly_positive(d), "sqrt of a number <= 0 (its derivative)", d);
       else
         domain(certainly_negative(d), possibly_negative(d), "sqrt of a negative number", d);
@@ -209,8 +209,8 @@ S expression::eval_node(int i, const S* x, const std::vector<base_scalar_t<S>>* 
   using T = base_scalar_t<S>;
   const node& n = nodes_[static_cast<std::size_t>(i)];
   switch (n.kind) {
-    case op::number: return S(constants ? (*constants)[static_cast<std::size_t>(i)] : from_decimal<T>(n.number));
-    case op::pi: return S(constants ? (*constants)[static_cast<std::size_t>(i)] : constant_pi<T>());
+    case op::number: return detail::from_base<S>(constants ? (*constants)[static_cast<std::size_t>(i)] : from_decimal<T>(n.number));
+    case op::pi: return detail::from_base<S>(constants ? (*constants)[static_cast<std::size_t>(i)] : constant_pi<T>());
     case op::variable: return x[n.var];
     case op::div: {  // the denominator first: its check comes before the numerator's
       const S den = eval_node(n.b, x, constants);

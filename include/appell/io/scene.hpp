@@ -65,6 +65,7 @@ struct evaluation {
   std::vector<named_result<T>> derived;
   const named_result<T>& result(const std::string& name) const { return find(results, name); }
   const named_result<T>& check(const std::string& name) const { return find(checks, name); }
+  const named_result<T>& derived_result(const std::string& name) const { return find(derived, name); }
 
  private:
   static const named_result<T>& find(const std::vector<named_result<T>>& group, const std::string& name) {

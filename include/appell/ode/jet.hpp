@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <boost/container/small_vector.hpp>
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -160,8 +161,6 @@ struct jet {
   }
 };
 
-template <class T> struct is_jet : std::false_type {};
-template <class T> struct is_jet<jet<T>> : std::true_type {};
 
 /// s = sin x, c = cos x together: k s_k = sum_j j x_j c_{k-j}, k c_k = -sum_j j x_j s_{k-j}.
 template <class T>
@@ -300,13 +299,16 @@ Eigen::Matrix<T, R, C> coefficient(const Eigen::Matrix<jet<T>, R, C>& m, int k) 
   return r;
 }
 
+namespace detail {
 /// A x = b on jets, order by order: A_0 x_k = b_k - sum_{j=1..k} A_j x_{k-j},
-/// A_0 factorized once: Cholesky for point types; for interval coefficients
-/// the value is a verified solve with A_0 (linalg/solve.hpp) and the higher
-/// orders are products with a verified enclosure of A_0^-1 (its columns
-/// solved once), so every coefficient encloses the exact one.
+/// A_0 factorized once (point types: Cholesky when spd, else LU with partial
+/// pivoting); for interval coefficients the value is a verified solve with A_0
+/// (linalg/solve.hpp) and the higher orders are products with a verified
+/// enclosure of A_0^-1 (its columns solved once), so every coefficient encloses
+/// the exact one.
 template <class T>
-vector_t<jet<T>> solve_spd(const matrix_t<jet<T>>& A, const vector_t<jet<T>>& b) {
+vector_t<jet<T>> jet_solve(const matrix_t<jet<T>>& A, const vector_t<jet<T>>& b, bool spd) {
+  check_square(A, b.rows());
   const Eigen::Index m = A.rows();
   const int n = jet_order();
   int la = 1;
@@ -318,10 +320,18 @@ vector_t<jet<T>> solve_spd(const matrix_t<jet<T>>& A, const vector_t<jet<T>>& b)
   vector_t<jet<T>> x(m);
   for (Eigen::Index i = 0; i < m; ++i) x(i).c.assign(static_cast<std::size_t>(n + 1), T(0));
   std::optional<Eigen::LLT<matrix_t<T>>> llt;
+  std::optional<Eigen::PartialPivLU<matrix_t<T>>> lu;
   matrix_t<T> inverse;  // interval: the columns enclose A^-1 e_j for every A in [A_0]
   if constexpr (!scalar_traits<T>::is_interval) {
-    llt.emplace(A0);
-    if (llt->info() != Eigen::Success) throw certification_error("Cholesky: the matrix is not positive definite");
+    if (spd) {
+      llt.emplace(A0);
+      if (llt->info() != Eigen::Success) throw certification_error("Cholesky: the matrix is not positive definite");
+    } else {
+      lu.emplace(A0);
+      using std::abs;
+      for (Eigen::Index i = 0; i < m; ++i)
+        if (!(abs(lu->matrixLU()(i, i)) > 0)) throw certification_error("LU: the matrix is singular");
+    }
   } else if (n > 0) {
     inverse.resize(m, m);
     for (Eigen::Index j = 0; j < m; ++j) {
@@ -347,11 +357,23 @@ vector_t<jet<T>> solve_spd(const matrix_t<jet<T>>& A, const vector_t<jet<T>>& b)
       // inverse * r_k.  The value (k = 0) keeps the tighter direct verified solve.
       xk = (k == 0 || n == 0) ? verified_solve(A0, r) : vector_t<T>(detail::product(inverse, r));
     } else {
-      xk = llt->solve(r);
+      xk = spd ? vector_t<T>(llt->solve(r)) : vector_t<T>(lu->solve(r));
     }
     for (Eigen::Index i = 0; i < m; ++i) x(i).c[static_cast<std::size_t>(k)] = xk(i);
   }
   return x;
+}
+}  // namespace detail
+
+/// A x = b on jets, A symmetric positive definite (detail::jet_solve).
+template <class T>
+vector_t<jet<T>> solve_spd(const matrix_t<jet<T>>& A, const vector_t<jet<T>>& b) {
+  return detail::jet_solve(A, b, true);
+}
+/// A x = b on jets, A general (detail::jet_solve): Lagrange's saddle-point systems.
+template <class T>
+vector_t<jet<T>> solve(const matrix_t<jet<T>>& A, const vector_t<jet<T>>& b) {
+  return detail::jet_solve(A, b, false);
 }
 
 }  // namespace appell

@@ -6,7 +6,9 @@
 // wrapping control of ode/enclose.hpp).  No scene is implemented twice: the
 // right-hand sides below only arrange the scene's state into x and call it.
 // Each models only what the scene requires (issue 12): Euler's body is omega
-// alone; the top on its pivot is its three Euler angles and their rates.
+// alone; the top on its pivot is its three Euler angles and their rates; the
+// top on the cone theta, phi and their rates (psi = f(theta)); the rolling
+// sphere its centre and omega (a homogeneous sphere's orientation is not needed).
 //
 //   dim, state_names()        the state x
 //   rhs<S>(x)                 x'
@@ -20,6 +22,8 @@
 
 #include "appell/ode/jet.hpp"
 #include "appell/scenes/euler_body.hpp"
+#include "appell/scenes/rolling_sphere.hpp"
+#include "appell/scenes/top_on_cone.hpp"
 #include "appell/scenes/top_on_pivot.hpp"
 
 namespace appell::ode {
@@ -28,6 +32,7 @@ template <class S>
 struct named_values {
   std::string name;
   std::vector<S> values;
+  bool zero_in_truth = false;  ///< an invariant that is 0 along the motion (a constraint's residual): drift absolute
 };
 
 /// Euler's body (paper sec. 3): x = omega = (p, q, r) on the principal axes.
@@ -116,6 +121,108 @@ struct heavy_top_problem {
   }
 };
 
+/// Example I, the heavy top forced onto the cone psi = f(theta): x = (theta, phi, theta', phi').
+template <Scalar T>
+struct top_on_cone_problem {
+  heavy_top<T> top;
+  expression_cone<T> cone;
+  static constexpr int dim = 4;
+  static std::vector<std::string> state_names() { return {"theta", "phi", "theta_dot", "phi_dot"}; }
+
+  template <class S>
+  heavy_top<S> top_in() const {
+    return {S(top.A), S(top.C), S(top.mass), S(top.l), S(top.g)};
+  }
+  template <class S>
+  top_on_cone_state<S> state(const vector_t<S>& x) const {
+    return {cone.psi(x(0)), x(0), x(1), x(2), x(3)};
+  }
+  template <class S>
+  vector_t<S> rhs(const vector_t<S>& x) const {
+    const cotton_result<S> c = top_on_cone_cotton(top_in<S>(), cone, state(x));
+    vector_t<S> d(4);
+    d << x(2), x(3), c.free_accelerations(0), c.free_accelerations(1);
+    return d;
+  }
+  /// psi and psi' (the cone's), the accelerations and H (Cotton's reaction: the couple's moment
+  /// about the vertical), as appell eval gives them.  Not the couple's three components: they
+  /// come from a 3 x 3 solve whose matrix, over a whole step's box, is too wide to certify.
+  template <class S>
+  void results(const vector_t<S>& x, std::vector<named_values<S>>& out) const {
+    const top_on_cone_result<S> r = top_on_cone_motion(top_in<S>(), cone, state(x), false);
+    out.push_back({"psi", {cone.psi(x(0))}});
+    out.push_back({"psi_dot", {cone.fprime(x(0)) * x(2)}});
+    out.push_back({"theta_ddot", {r.theta_ddot}});
+    out.push_back({"phi_ddot", {r.phi_ddot}});
+    out.push_back({"psi_ddot", {r.psi_ddot}});
+    out.push_back({"H", {r.H}});
+  }
+  /// The energy: the cone is fixed and frictionless, so its couple does no work; the top's
+  /// energy is heavy_top_problem's at (psi, theta, phi, f'(theta) theta', theta', phi').
+  template <class S>
+  void invariants(const vector_t<S>& x, std::vector<named_values<S>>& out) const;
+};
+
+/// Example II, the sphere rolling without slipping or pivoting: x = (centre, omega) on the fixed
+/// axes; x' = (omega x a n, omega') from rolling_sphere_motion.
+template <Scalar T>
+struct rolling_sphere_problem {
+  T mass, A, a;
+  rolling_surface<T> surface;
+  vec3<T> force, torque;  ///< total applied force through G (weight included) and couple, fixed axes
+  static constexpr int dim = 6;
+  static std::vector<std::string> state_names() {
+    return {"center_x", "center_y", "center_z", "omega_x", "omega_y", "omega_z"};
+  }
+  template <class S>
+  rolling_sphere_result<S> motion(const vector_t<S>& x, bool checks) const {
+    const rolling_surface<S> surf{surface.type, surface.inside, S(surface.b), S(surface.spin)};
+    const vec3<S> F(S(force(0)), S(force(1)), S(force(2))), tau(S(torque(0)), S(torque(1)), S(torque(2)));
+    return rolling_sphere_motion<S>(S(mass), S(A), S(a), surf, vec3<S>(x(0), x(1), x(2)), vec3<S>(x(3), x(4), x(5)), F,
+                                    tau, checks);
+  }
+  template <class S>
+  vector_t<S> rhs(const vector_t<S>& x) const {
+    const rolling_sphere_result<S> r = motion(x, false);
+    vector_t<S> d(6);
+    d << r.center_velocity(0), r.center_velocity(1), r.center_velocity(2), r.omega_dot(0), r.omega_dot(1), r.omega_dot(2);
+    return d;
+  }
+  /// appell eval's results: the centre's acceleration, omega', the contact force, its normal
+  /// component and the pivoting couple.
+  template <class S>
+  void results(const vector_t<S>& x, std::vector<named_values<S>>& out) const {
+    const rolling_sphere_result<S> r = motion(x, false);
+    out.push_back({"center_ddot", {r.center_ddot(0), r.center_ddot(1), r.center_ddot(2)}});
+    out.push_back({"omega_dot", {r.omega_dot(0), r.omega_dot(1), r.omega_dot(2)}});
+    out.push_back({"contact_force", {r.contact_force(0), r.contact_force(1), r.contact_force(2)}});
+    out.push_back({"normal_force", {r.normal_force}});
+    out.push_back({"pivot_couple", {r.pivot_couple}});
+  }
+  /// The energy M v^2 / 2 + A omega^2 / 2 - F . c (without a couple; the force is constant),
+  /// and the two constraints, 0 along the motion: the centre on the surface of centres (|c| - rho,
+  /// the cylinder's radial distance - rho, c_z - a on the plane) and omega . n.
+  template <class S>
+  void invariants(const vector_t<S>& x, std::vector<named_values<S>>& out) const {
+    using std::sqrt;
+    const vec3<S> c(x(0), x(1), x(2)), w(x(3), x(4), x(5));
+    if (exactly_zero(torque(0)) && exactly_zero(torque(1)) && exactly_zero(torque(2))) {
+      const rolling_sphere_result<S> r = motion(x, false);
+      const vec3<S> F(S(force(0)), S(force(1)), S(force(2)));
+      out.push_back({"energy", {(S(mass) * dot(r.center_velocity, r.center_velocity) + S(A) * dot(w, w)) / S(2) - dot(F, c)}});
+    }
+    if (surface.type == surface_type::plane) {
+      out.push_back({"surface_residual", {S(c(2) - S(a))}, true});
+      out.push_back({"pivot_residual", {w(2)}, true});
+      return;
+    }
+    const vec3<S> radial = surface.type == surface_type::sphere ? c : vec3<S>(c(0), c(1), S(0));
+    const S norm = sqrt(dot(radial, radial));
+    out.push_back({"surface_residual", {S(norm - S(surface.rho(a)))}, true});
+    out.push_back({"pivot_residual", {S(dot(w, radial) / norm)}, true});
+  }
+};
+
 /// The simple pendulum through the generic Gibbs-Appell path: a point mass m on a massless rod
 /// of length l about a fixed point, gravity g; x = (theta, theta'), theta from the downward
 /// vertical.  Not a scene model: the classical benchmark of verified integrators
@@ -170,5 +277,16 @@ struct pendulum_problem {
     out.push_back({"energy", {S(mass) * S(l) * S(l) * x(1) * x(1) / S(2) - S(mass) * S(g) * S(l) * c}});
   }
 };
+
+template <Scalar T>
+template <class S>
+void top_on_cone_problem<T>::invariants(const vector_t<S>& x, std::vector<named_values<S>>& out) const {
+  const heavy_top_problem<T> free_top{top.A, top.C, top.mass, top.l, top.g};
+  vector_t<S> y(6);
+  y << cone.psi(x(0)), x(0), x(1), S(cone.fprime(x(0)) * x(2)), x(2), x(3);
+  std::vector<named_values<S>> all;
+  free_top.invariants(y, all);
+  out.push_back(all.front());  // the energy (the momenta are not conserved: the cone's couple)
+}
 
 }  // namespace appell::ode

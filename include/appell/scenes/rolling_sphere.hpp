@@ -151,11 +151,14 @@ struct rolling_sphere_result {
 };
 
 /// Example II at centre c and rotation omega (fixed axes), with applied force
-/// F_total (weight included) through G and couple tau, on the fixed axes.
+/// F_total (weight included) through G and couple tau, on the fixed axes.  Without
+/// `checks` the Lagrange multipliers and eq. (4) are left out (multipliers empty,
+/// virtual_work_residual 0): the motion over time needs neither (ode/problems.hpp).
 template <Scalar T>
 rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const T& a,
                                                const rolling_surface<T>& surface, const vec3<T>& c,
-                                               const vec3<T>& omega, const vec3<T>& F_total, const vec3<T>& tau) {
+                                               const vec3<T>& omega, const vec3<T>& F_total, const vec3<T>& tau,
+                                               bool checks = true) {
   using std::sqrt;
   rolling_sphere_result<T> r;
   r.axes = surface.frame(c);
@@ -171,7 +174,7 @@ rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const 
   const constrained_motion<T> m = cotton_reactions(sys, change, q, u, t, &adapted_eq);
   r.speeds_dot = m.accelerations;
   r.reactions = m.reactions;
-  r.multipliers = lagrange_multipliers(sys, con, q, u, t).reactions;
+  if (checks) r.multipliers = lagrange_multipliers(sys, con, q, u, t).reactions;
   const vec3<T> v(u(0), u(1), u(2)), wF(u(3), u(4), u(5));
   r.frame_rate = surface.template frame_rate<T>(v, surface.rho(a));
   const vec3<T> aG = vec3<T>(m.accelerations(0), m.accelerations(1), m.accelerations(2)) + cross(r.frame_rate, v);
@@ -186,6 +189,8 @@ rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const 
   r.normal = vec3<T>(r.axes.col(2));
   r.contact_point = c - r.normal * a;
   r.center_velocity = mat_vec(r.axes, v);  // (a q, -a p, 0) on the trihedron: omega x a n
+  r.virtual_work_residual = T(0);
+  if (!checks) return r;
   // eq. (4) in Cotton's speeds (p, q, u_1, v_1, w, r), with the equations cotton_reactions formed there
   const auto adapted = change_speeds(sys, change, 6);
   vector_t<T> vv = vector_t<T>::Zero(6), vdot = vector_t<T>::Zero(6);

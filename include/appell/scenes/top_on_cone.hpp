@@ -174,12 +174,18 @@ struct heavy_top_resal {
 template <Scalar T>
 struct expression_cone {
   compiled_expression<T> f_expr, fprime_expr, fsecond_expr;
-  T psi(const T& theta) const { return f_expr.eval(theta); }
+  template <class S>
+  S psi(const S& theta) const {
+    return f_expr.eval(theta);
+  }
   template <class S>
   S fprime(const S& theta) const {
     return fprime_expr.eval(theta);
   }
-  T fsecond(const T& theta) const { return fsecond_expr.eval(theta); }
+  template <class S>
+  S fsecond(const S& theta) const {
+    return fsecond_expr.eval(theta);
+  }
 };
 
 /// psi' - f'(theta) theta' = 0.
@@ -233,23 +239,42 @@ struct top_on_cone_result {
 /// independent route.  psi need not equal f(theta) for the algebra (the
 /// dynamics does not depend on psi: rotations about the vertical), but a state
 /// of the scene has psi = f(theta).
+/// Cotton's method alone (the accelerations theta'', phi'' and H): what the motion needs
+/// (ode/problems.hpp); top_on_cone_motion adds the couple and the checks.
 template <Scalar T, class Angles, class Cone>
-top_on_cone_result<T> top_on_cone_motion(const heavy_top<T, Angles>& top, const Cone& cone,
-                                         const top_on_cone_state<T>& s) {
-  const T t = T(0);
-  const T fp = cone.fprime(s.theta), fpp = cone.fsecond(s.theta);
+cotton_result<T> top_on_cone_cotton(const heavy_top<T, Angles>& top, const Cone& cone, const top_on_cone_state<T>& s) {
   vector_t<T> q(3);
   q << s.psi, s.theta, s.phi;
   const heavy_top_resal<T, Angles> resal{top.A, top.C, top.mass, top.l, top.g};
   const auto sys = change_speeds(resal, cone_speeds<Cone>{&cone}, 3);
   vector_t<T> v_a(2);
   v_a << s.theta_dot, s.phi_dot;
+  return cotton_reactions(sys, q, v_a, T(0), 1);
+}
+
+/// Without `couple_and_checks` only the accelerations and H are formed (couple, eq. (4) and
+/// Lagrange's check left 0): the motion over time (ode/problems.hpp) encloses them over a whole
+/// step, where the couple's 3 x 3 solve over the step's box need not be certifiable.
+template <Scalar T, class Angles, class Cone>
+top_on_cone_result<T> top_on_cone_motion(const heavy_top<T, Angles>& top, const Cone& cone,
+                                         const top_on_cone_state<T>& s, bool couple_and_checks = true) {
+  const T t = T(0);
+  const T fp = cone.fprime(s.theta), fpp = cone.fsecond(s.theta);
+  vector_t<T> q(3);
+  q << s.psi, s.theta, s.phi;
+  const heavy_top_resal<T, Angles> resal{top.A, top.C, top.mass, top.l, top.g};
+  const auto sys = change_speeds(resal, cone_speeds<Cone>{&cone}, 3);
   top_on_cone_result<T> r;
-  r.cotton = cotton_reactions(sys, q, v_a, t, 1);
+  r.cotton = top_on_cone_cotton(top, cone, s);
   r.theta_ddot = r.cotton.free_accelerations(0);
   r.phi_ddot = r.cotton.free_accelerations(1);
   r.H = r.cotton.reactions(0);
   r.psi_ddot = fpp * s.theta_dot * s.theta_dot + fp * r.theta_ddot;  // d/dt (f'(theta) theta')
+  if (!couple_and_checks) {
+    r.couple = vec3<T>(T(0), T(0), T(0));
+    r.virtual_work_residual = r.lagrange_multiplier = r.theta_ddot_lagrange = T(0);
+    return r;
+  }
   // The couple: J_w^T Gamma = (0, 0, H) in Cotton's speeds (wrench.hpp).
   vector_t<T> v(3), vdot(3), generalized(3);
   v << s.theta_dot, s.phi_dot, T(0);

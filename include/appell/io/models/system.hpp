@@ -7,6 +7,7 @@
 // differentiates and checks everything once, at 256 bits, on exact decimals.
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
@@ -34,6 +35,11 @@ struct system_input : model_input {
   std::vector<int> solved;          ///< speeds computed from the constraints (solve_speeds)
   std::vector<std::string> acceleration_names;  ///< per speed: q_ddot (rates) or u_dot
   std::optional<linearize_input> linearize;     ///< the "linearize" section, if any
+  /// "project": accept a state off the constraints and certify the values at its projection
+  /// onto them (SCENES.md), moved by at most this in q and in u.  The reader replaces q and u
+  /// by the projection, at 256 bits written as 90-digit decimals; the state as given is kept.
+  std::optional<decimal_field> project;
+  std::vector<decimal_field> q_given, u_given;
 };
 
 struct system_model {
@@ -84,6 +90,24 @@ struct system_model {
                                                T(r.reactions(i) - r.multipliers(i))));
     }
     e.checks.insert(e.checks.end(), wrench_checks.begin(), wrench_checks.end());
+    if (m.in->project) {  // the state certified, and how far the projection moved the given one
+      using std::sqrt;
+      const system_definition& d = *m.in->def;
+      T dq2(0), du2(0);
+      for (int i = 0; i < d.vars.coordinates; ++i) {
+        e.derived.push_back(detail::scalar_result(d.names[static_cast<std::size_t>(d.vars.q(i))], T(m.q(i))));
+        const T step = m.q(i) - value<T>(m.in->q_given[static_cast<std::size_t>(i)]);
+        dq2 += step * step;
+      }
+      for (int j = 0; j < d.vars.speeds; ++j) {
+        e.derived.push_back(detail::scalar_result(d.names[static_cast<std::size_t>(d.vars.u(j))], T(m.u(j))));
+        if (std::find(m.in->solved.begin(), m.in->solved.end(), j) != m.in->solved.end()) continue;
+        const T step = m.u(j) - value<T>(m.in->u_given[static_cast<std::size_t>(j)]);
+        du2 += step * step;
+      }
+      e.derived.push_back(detail::scalar_result("coordinates_moved", T(sqrt(dq2))));
+      e.derived.push_back(detail::scalar_result("speeds_moved", T(sqrt(du2))));
+    }
     return e;
   }
 };
