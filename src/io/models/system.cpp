@@ -156,7 +156,6 @@ void require_in_256_bits(bool certainly_true, bool certainly_false, const std::s
 /// x as a 90-digit decimal (the midpoint of its enclosure).
 std::string decimal_90(const mpfi& x) { return mpfi_mid(x).str(90, std::ios_base::scientific); }
 
-
 /// "project" (SCENES.md): the state moved onto the constraints, at 400 bits.  The coordinates
 /// move along the holonomic constraints' gradients taken at the given state,
 /// q = q0 + W(q0) A_h(q0)^T lambda with f(q, t) = 0 (lambda by the chord iteration with
@@ -243,20 +242,24 @@ void project_at_400_bits(system_input& in) {
     u -= A.transpose() * y;
     mids(u);
   }
+  for (int i = 0; i < nq; ++i)
+    if (!is_finite(q(i)))
+      throw input_error("project: the projection onto the holonomic constraints does not converge from the state "
+                        "(too far from them)");
   for (int i = 0; i < nq; ++i) in.q[static_cast<std::size_t>(i)].text = decimal_90(q(i));
   for (int j = 0; j < n; ++j)
     if (std::find(in.solved.begin(), in.solved.end(), j) == in.solved.end())
       in.u[static_cast<std::size_t>(j)].text = decimal_90(u(j));
 }
 
-/// The projected state (decimals) read back at the caller's precision, and the moves against
-/// "project": refused when the coordinates or the speeds move farther than it.
 std::string short_text(const mpfi& x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", approx_double(x));
   return buf;
 }
 
+/// The projected state (decimals) read back at the caller's precision, and the moves against
+/// "project": refused when the coordinates or the speeds move farther than it.
 void check_projection_moves(const system_input& in, vector_t<mpfi>& q, vector_t<mpfi>& u) {
   const system_definition& d = *in.def;
   const int nq = d.vars.coordinates, n = d.vars.speeds;
