@@ -18,6 +18,7 @@
 
 #include <boost/multiprecision/gmp.hpp>
 #include <boost/multiprecision/mpfr.hpp>
+#include <random>
 
 #include "appell/io/models/rolling_sphere.hpp"
 #include "appell/io/models/top_on_cone.hpp"
@@ -191,4 +192,128 @@ BOOST_AUTO_TEST_CASE(the_top_on_its_cone_keeps_its_energy) {
   BOOST_TEST_MESSAGE("top on its cone: " << steps << " steps to T = 1; energy over every step, widest " << widest);
   BOOST_TEST(widest < 1e-9);
   point_runs_inside(scene, &cone_problem<mpfr>, end, "1", 1e-12);
+}
+
+namespace {
+/// A right-hand side whose operations change between the passes of one series: while theta's
+/// series is exactly 0 it multiplies other operands (pass 0), then not (pass 1 on): the memo must
+/// compute the differing operations afresh.
+struct branching_problem {
+  static constexpr int dim = 2;
+  template <class S>
+  vector_t<S> rhs(const vector_t<S>& x) const {
+    vector_t<S> d(2);
+    if (exactly_zero(x(0))) {
+      const S w = x(1) * x(1);
+      d << S(1) + w * w, x(1) * S(3);
+    } else {
+      const S w = x(0) * x(1);
+      d << x(1) / (S(2) + w * w), sin(x(0)) * x(1) - w;
+    }
+    return d;
+  }
+};
+
+/// The series of prob from x0 with and without the memo, bit for bit; returns the memo's counts.
+template <class P, class S>
+std::pair<long, long> series_identical(const P& prob, const vector_t<S>& x0, int p, const std::string& what) {
+  detail::jet_memo<S> stats;
+  const auto with = ode::taylor_series(prob, x0, p, true, &stats);
+  const auto without = ode::taylor_series(prob, x0, p, false);
+  long differ = 0;
+  for (int k = 0; k <= p; ++k)
+    for (Eigen::Index i = 0; i < x0.size(); ++i)
+      if (!detail::identical(with[static_cast<std::size_t>(k)](i), without[static_cast<std::size_t>(k)](i))) ++differ;
+  BOOST_TEST(differ == 0, what << " (" << scalar_traits<S>::name << "): " << differ << " coefficients differ with the memo");
+  return {stats.reused, stats.computed};
+}
+
+template <class S>
+vector_t<S> jittered(const vector_t<S>& x, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> d(-0.05, 0.05);
+  vector_t<S> r = x;
+  for (Eigen::Index i = 0; i < r.size(); ++i) r(i) = r(i) + S(d(rng));
+  return r;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(the_taylor_memo_changes_no_digit_of_any_series) {
+  // taylor_series takes each operation's low coefficients from the previous pass (jet.hpp,
+  // detail::jet_memo).  Against the series computed without it, on every scene's problem, in
+  // point and interval scalars, from 8 random states each: every coefficient bit for bit.  And the
+  // memo must serve: most operations reuse (otherwise it only costs).
+  std::mt19937_64 rng(20261125);
+  long reused = 0, computed = 0;
+  auto tally = [&](std::pair<long, long> c) {
+    reused += c.first;
+    computed += c.second;
+  };
+  auto all = [&]<class S>(std::type_identity<S>, int p) {
+    const evaluation_scope<S> scope;
+    for (int trial = 0; trial < 8; ++trial) {
+      {
+        const ode::euler_body_problem<S> prob{{vec3<S>(S(1), S(2), S(3)), vec3<S>(S(0), S(0), S(0.25))}};
+        tally(series_identical(prob, jittered(vector_t<S>(vector_t<S>::Constant(3, S(1))), rng), p, "euler_body"));
+      }
+      {
+        const ode::heavy_top_problem<S> prob{S(1), S(2), S(1), S(1), S(1)};
+        vector_t<S> x0(6);
+        x0 << S(0), S(1), S(0), S(0.5), S(0), S(5);
+        tally(series_identical(prob, jittered(x0, rng), p, "heavy_top"));
+      }
+      {
+        const ode::pendulum_problem<S> prob{S(1), S(1), S(1)};
+        vector_t<S> x0(2);
+        x0 << S(1), S(0);
+        tally(series_identical(prob, jittered(x0, rng), p, "pendulum"));
+      }
+      for (const char* file : {"rolling_sphere_bowl.json", "rolling_sphere_plane.json", "rolling_sphere_pipe.json"}) {
+        vector_t<S> x0;
+        const scene_input scene = scene_file(file);
+        const auto prob = sphere_problem<S>(scene, x0);
+        vector_t<S> x = x0;
+        for (int i = 3; i < 6; ++i) x(i) = jittered(x0, rng)(i);  // omega only: the centre stays on its surface
+        tally(series_identical(prob, x, p, file));
+      }
+      {
+        vector_t<S> x0;
+        const scene_input scene = scene_file("top_on_cone.json");  // the problem refers to the scene's cone
+        const auto prob = cone_problem<S>(scene, x0);
+        tally(series_identical(prob, jittered(x0, rng), p, "top_on_cone"));
+      }
+      vector_t<S> b(2);
+      b << S(0), S(0.5);
+      tally(series_identical(branching_problem{}, b, p, "branching"));
+    }
+  };
+  all(std::type_identity<double>{}, 20);
+  all(std::type_identity<interval>{}, 24);
+  all(std::type_identity<dd>{}, 30);
+  {
+    const mp_precision_scope bits(200);
+    all(std::type_identity<mpfi>{}, 12);
+  }
+  BOOST_TEST_MESSAGE("taylor memo: " << reused << " operations took their low coefficients from the memo, "
+                                     << computed << " were computed in full");
+  BOOST_TEST(reused > 5 * computed);
+}
+
+BOOST_AUTO_TEST_CASE(the_taylor_memo_changes_no_digit_of_the_variational_series) {
+  // The Jacobians d x_k / d x0 over a box (multi_dual of jets), with and without the memo.
+  const evaluation_scope<interval> scope;
+  const ode::heavy_top_problem<interval> prob{interval(1), interval(2), interval(1), interval(1), interval(1)};
+  vector_t<interval> X(6);
+  X << interval(0), interval(0.99, 1.01), interval(0), interval(0.5), interval(-0.01, 0.01), interval(5);
+  ode::series<interval> c1, c2;
+  std::vector<matrix_t<interval>> D1, D2;
+  ode::taylor_series_jacobian(prob, X, 14, c1, D1, true);
+  ode::taylor_series_jacobian(prob, X, 14, c2, D2, false);
+  long differ = 0;
+  for (std::size_t k = 0; k < c1.size(); ++k)
+    for (int i = 0; i < 6; ++i) {
+      if (!detail::identical(c1[k](i), c2[k](i))) ++differ;
+      for (int j = 0; j < 6; ++j)
+        if (!detail::identical(D1[k](i, j), D2[k](i, j))) ++differ;
+    }
+  BOOST_TEST(differ == 0);
 }

@@ -24,7 +24,11 @@
 
 #include <algorithm>
 #include <boost/container/small_vector.hpp>
+#include <cmath>
 #include <cstddef>
+#include <deque>
+#include <new>
+#include <utility>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -59,11 +63,244 @@ class jet_order_scope {
   int saved_;
 };
 
+namespace detail {
+/// a and b are the same number, bit for bit (a sign of zero included for the native floating
+/// types; an interval's two bounds): an operation repeated on identical operands gives identical
+/// results, which is all the memo below relies on.
+template <class T>
+bool identical(const T& a, const T& b) {
+  if constexpr (std::is_floating_point_v<T>) {
+    return a == b && std::signbit(a) == std::signbit(b);
+  } else if constexpr (std::is_same_v<T, mpfi>) {
+    const mpfi_srcptr x = a.backend().data(), y = b.backend().data();
+    return mpfr_equal_p(&x->left, &y->left) && mpfr_equal_p(&x->right, &y->right) &&
+           mpfr_signbit(&x->left) == mpfr_signbit(&y->left) && mpfr_signbit(&x->right) == mpfr_signbit(&y->right);
+  } else if constexpr (scalar_traits<T>::is_interval) {
+    return identical(scalar_traits<T>::lower(a), scalar_traits<T>::lower(b)) &&
+           identical(scalar_traits<T>::upper(a), scalar_traits<T>::upper(b));
+  } else if constexpr (std::is_same_v<T, dd>) {
+    return a.x[0] == b.x[0] && a.x[1] == b.x[1] && std::signbit(a.x[0]) == std::signbit(b.x[0]);
+  } else {
+    using std::signbit;
+    using boost::multiprecision::signbit;
+    return a == b && signbit(a) == signbit(b);
+  }
+}
+
+/// The memo of one Taylor-series computation (ode/taylor.hpp: the right-hand side evaluated on
+/// jets of order 0, 1, ..., p - 1, each pass one order higher).  Coefficient j of a product,
+/// quotient, sin, cos, sqrt, exp, log or order-by-order solve depends only on the operands'
+/// coefficients 0..j, so a pass may take the previous pass's coefficients 0..n_prev of an
+/// operation's result, provided that operation's operands agree, bit for bit, with the ones the
+/// previous pass gave it on their coefficients 0..n_prev; only the new coefficients are computed:
+/// O(p^2) per operation over the whole series instead of O(p^3).  The operations of a pass are
+/// matched to the previous pass's by their rank; the operands are compared every time, so a pass
+/// whose operations differ from the previous one's (a branch taken the other way) computes the
+/// differing ones in full: the memo can cost time, never change a digit (tests/motion.cpp
+/// compares every series with the memo against the series without it, bit for bit).
+template <class T>
+struct jet_memo {
+  struct entry {
+    int kind = -1;
+    int order = -1;               ///< the jet order of the pass that stored it
+    std::vector<T> in;            ///< the operands' coefficients as used, concatenated
+    std::vector<int> in_len;      ///< each operand's length in `in`
+    std::vector<T> out;           ///< the results' coefficients, concatenated
+    std::vector<int> out_len;
+    std::vector<T> extra;         ///< what an operation keeps besides (a solve: A_0^-1, enclosed)
+  };
+  std::deque<entry> entries;  // a deque: an entry stays where it is while later ones are added
+  std::size_t next = 0;
+  long reused = 0, computed = 0;  ///< operations that took coefficients from the memo, or not
+
+  void begin_pass() { next = 0; }
+  entry& take() {
+    if (next == entries.size()) entries.emplace_back();
+    return entries[next++];
+  }
+};
+template <class T>
+inline thread_local jet_memo<T>* active_jet_memo = nullptr;
+
+/// Installs a memo for the jets over T made in this thread, for a scope.
+template <class T>
+class jet_memo_scope {
+ public:
+  explicit jet_memo_scope(jet_memo<T>* m) : saved_(active_jet_memo<T>) { active_jet_memo<T> = m; }
+  ~jet_memo_scope() { active_jet_memo<T> = saved_; }
+  jet_memo_scope(const jet_memo_scope&) = delete;
+  jet_memo_scope& operator=(const jet_memo_scope&) = delete;
+
+ private:
+  jet_memo<T>* saved_;
+};
+
+/// One operation's dealings with the memo.  `operand(data, len)` for each operand (its
+/// coefficients as the operation uses them, len <= order + 1), then `usable()`: whether the
+/// stored results may be reused, and up to which coefficient (`keep`); `result(i)` the stored
+/// result i; `store_...` after computing.
+template <class T>
+class memo_op {
+ public:
+  memo_op(int kind, int order) : memo_(active_jet_memo<T>), order_(order) {
+    if (!memo_) return;
+    e_ = &memo_->take();
+    keep_ = e_->kind == kind ? std::min(e_->order, order) + 1 : 0;
+    e_->kind = kind;
+  }
+  explicit operator bool() const { return memo_ != nullptr; }
+  /// Compares an operand's coefficients 0..keep-1 with the stored ones; store() records it
+  /// (the operand must live until then).
+  void operand(const T* data, int len) {
+    if (!memo_) return;
+    if (keep_ > 0) {
+      if (operands_.size() >= e_->in_len.size()) {
+        keep_ = 0;
+      } else {
+        const int stored = e_->in_len[operands_.size()];
+        const int a = std::min(len, keep_), b = std::min(stored, keep_);
+        if (a != b) {
+          keep_ = 0;
+        } else {
+          for (int i = 0; i < a; ++i)
+            if (!identical(data[i], e_->in[offset_ + static_cast<std::size_t>(i)])) {
+              keep_ = 0;
+              break;
+            }
+        }
+        offset_ += static_cast<std::size_t>(stored);
+      }
+    }
+    operands_.emplace_back(data, len);
+  }
+  /// Coefficients 0..usable()-1 of every result may be taken from the memo (0: none).
+  int usable() {
+    if (!memo_) return 0;
+    if (operands_.size() != e_->in_len.size()) keep_ = 0;
+    return keep_;
+  }
+  /// Stored result i's coefficients (valid when usable() > 0).
+  const T* result(std::size_t i, int& len) const {
+    std::size_t off = 0;
+    for (std::size_t r = 0; r < i; ++r) off += static_cast<std::size_t>(e_->out_len[r]);
+    len = e_->out_len[i];
+    return e_->out.data() + off;
+  }
+  /// Copies into out[0..) the coefficients of stored result i that may be reused (at most
+  /// len); returns their number (0: none).
+  int reuse(std::size_t i, T* out, int len) {
+    const int keep = usable();
+    if (keep == 0 || i >= e_->out_len.size()) return 0;
+    int stored = 0;
+    const T* r = result(i, stored);
+    const int n = std::min({keep, stored, len});
+    std::copy(r, r + n, out);
+    return n;
+  }
+  std::vector<T>& extra() { return e_->extra; }
+  /// Records this pass's operands and results (call once, after computing).
+  template <class... R>
+  void store(const R&... results) {
+    if (!memo_) return;
+    if (keep_ > 0) ++memo_->reused;
+    else ++memo_->computed;
+    e_->order = order_;
+    e_->in.clear();
+    e_->in_len.clear();
+    for (const auto& [data, len] : operands_) {
+      e_->in.insert(e_->in.end(), data, data + len);
+      e_->in_len.push_back(len);
+    }
+    e_->out.clear();
+    e_->out_len.clear();
+    (append(results), ...);
+  }
+
+  /// store() for a number of results known at run time: fill(append) calls append(c) on each.
+  template <class F>
+  void store_all(F&& fill) {
+    if (!memo_) return;
+    store();
+    fill([this](const auto& c) { append(c); });
+  }
+
+ private:
+  template <class C>
+  void append(const C& c) {
+    e_->out.insert(e_->out.end(), c.begin(), c.end());
+    e_->out_len.push_back(static_cast<int>(c.size()));
+  }
+  jet_memo<T>* memo_;
+  typename jet_memo<T>::entry* e_ = nullptr;
+  int order_;
+  int keep_ = 0;
+  std::size_t offset_ = 0;
+  boost::container::small_vector<std::pair<const T*, int>, 2> operands_;
+};
+
+enum memo_kind : int { memo_mul = 1, memo_div, memo_sin_cos, memo_sqrt, memo_exp, memo_log, memo_solve };
+}  // namespace detail
+
+namespace detail {
+/// Blocks of jet coefficients, per thread: free lists by size class (64 << c bytes), reused
+/// without going back to malloc.  An evaluation on jets makes and drops thousands of short-lived
+/// series (measured: malloc and free took 30% of an enclosure's time).  A block freed in another
+/// thread joins that thread's lists; each thread's blocks go back to the system at its exit.
+class jet_block_pool {
+ public:
+  static constexpr int classes = 26;
+  jet_block_pool() = default;
+  jet_block_pool(const jet_block_pool&) = delete;
+  jet_block_pool& operator=(const jet_block_pool&) = delete;
+  ~jet_block_pool() {
+    for (auto& list : free_)
+      for (void* p : list) ::operator delete(p);
+  }
+  void* get(std::size_t bytes) {
+    std::vector<void*>& list = free_[size_class(bytes)];
+    if (list.empty()) return ::operator new(std::size_t(64) << size_class(bytes));
+    void* p = list.back();
+    list.pop_back();
+    return p;
+  }
+  void put(void* p, std::size_t bytes) { free_[size_class(bytes)].push_back(p); }
+
+ private:
+  static int size_class(std::size_t bytes) {
+    int c = 0;
+    while ((std::size_t(64) << c) < bytes) ++c;
+    if (c >= classes) throw std::bad_alloc();
+    return c;
+  }
+  std::vector<void*> free_[classes];
+};
+inline jet_block_pool& jet_pool() {
+  thread_local jet_block_pool pool;
+  return pool;
+}
+template <class T>
+struct jet_allocator {
+  using value_type = T;
+  jet_allocator() = default;
+  template <class U>
+  jet_allocator(const jet_allocator<U>&) {}  // NOLINT
+  T* allocate(std::size_t n) { return static_cast<T*>(jet_pool().get(n * sizeof(T))); }
+  void deallocate(T* p, std::size_t n) { jet_pool().put(p, n * sizeof(T)); }
+  friend bool operator==(const jet_allocator&, const jet_allocator&) { return true; }
+  friend bool operator!=(const jet_allocator&, const jet_allocator&) { return false; }
+};
+}  // namespace detail
+
 template <class T>
 struct jet {
   /// c[k] = coefficient of t^k; those past c.size() are exact zeros.  A constant keeps its one
   /// coefficient inline (no allocation): most jets of a scene's evaluation are constants.
-  boost::container::small_vector<T, 1> c;
+  ///
+  /// Coefficients of a fixed-size scalar (double, long double, interval, dd, float128) are kept
+  /// inline up to order 7, longer ones in blocks of the thread's pool (detail::jet_block_pool);
+  /// mpfr and mpfi allocate their limbs anyway.
+  static constexpr std::size_t inline_coefficients = scalar_traits<T>::runtime_precision ? 1 : 8;
+  boost::container::small_vector<T, inline_coefficients, detail::jet_allocator<T>> c;
 
   jet() : c(1, T(0)) {}
   jet(const T& v) : c(1, v) {}  // NOLINT: constants convert implicitly
@@ -132,12 +369,17 @@ struct jet {
     const int lr = std::min(la + lb - 1, n + 1);
     jet r;
     r.c.assign(static_cast<std::size_t>(lr), T(0));
-    for (int k = 0; k < lr; ++k) {
+    detail::memo_op<T> memo(detail::memo_mul, n);
+    memo.operand(a.c.data(), la);
+    memo.operand(b.c.data(), lb);
+    const int first = memo.reuse(0, r.c.data(), lr);
+    for (int k = first; k < lr; ++k) {
       T s = T(0);
       const int lo = std::max(0, k - lb + 1), hi = std::min(k, la - 1);
       for (int i = lo; i <= hi; ++i) s += a.c[static_cast<std::size_t>(i)] * b.c[static_cast<std::size_t>(k - i)];
       r.c[static_cast<std::size_t>(k)] = s;
     }
+    memo.store(r.c);
     return r;
   }
   /// q = a / b: q_k = (a_k - sum_{j=1..k} b_j q_{k-j}) / b_0.
@@ -152,11 +394,16 @@ struct jet {
     }
     jet r;
     r.c.assign(static_cast<std::size_t>(n + 1), T(0));
-    for (int k = 0; k <= n; ++k) {
+    detail::memo_op<T> memo(detail::memo_div, n);
+    memo.operand(a.c.data(), std::min(a.size(), n + 1));
+    memo.operand(b.c.data(), lb);
+    const int first = memo.reuse(0, r.c.data(), n + 1);
+    for (int k = first; k <= n; ++k) {
       T s = a[k];
       for (int j = 1; j <= std::min(k, lb - 1); ++j) s -= b.c[static_cast<std::size_t>(j)] * r.c[static_cast<std::size_t>(k - j)];
       r.c[static_cast<std::size_t>(k)] = s / b.c[0];
     }
+    memo.store(r.c);
     return r;
   }
 };
@@ -166,14 +413,21 @@ struct jet {
 template <class T>
 void sin_cos(const jet<T>& x, jet<T>& s, jet<T>& c) {
   const int n = x.size() == 1 ? 0 : jet_order();
-  T s0, c0;
-  sin_cos(x.c[0], s0, c0);
   s.c.assign(static_cast<std::size_t>(n + 1), T(0));
   c.c.assign(static_cast<std::size_t>(n + 1), T(0));
-  s.c[0] = s0;
-  c.c[0] = c0;
-  const int lx = x.size();
-  for (int k = 1; k <= n; ++k) {
+  const int lx = std::min(x.size(), n + 1);
+  detail::memo_op<T> memo(detail::memo_sin_cos, n);
+  memo.operand(x.c.data(), lx);
+  int first = memo.reuse(0, s.c.data(), n + 1);
+  first = std::min(first, memo.reuse(1, c.c.data(), n + 1));
+  if (first == 0) {
+    T s0, c0;
+    sin_cos(x.c[0], s0, c0);
+    s.c[0] = s0;
+    c.c[0] = c0;
+    first = 1;
+  }
+  for (int k = first; k <= n; ++k) {
     T a = T(0), b = T(0);
     for (int j = 1; j <= std::min(k, lx - 1); ++j) {
       const T jx = T(j) * x.c[static_cast<std::size_t>(j)];
@@ -183,6 +437,7 @@ void sin_cos(const jet<T>& x, jet<T>& s, jet<T>& c) {
     s.c[static_cast<std::size_t>(k)] = a / T(k);
     c.c[static_cast<std::size_t>(k)] = -b / T(k);
   }
+  memo.store(s.c, c.c);
 }
 template <class T> jet<T> sin(const jet<T>& x) { jet<T> s, c; sin_cos(x, s, c); return s; }
 template <class T> jet<T> cos(const jet<T>& x) { jet<T> s, c; sin_cos(x, s, c); return c; }
@@ -193,13 +448,20 @@ template <class T> jet<T> sqrt(const jet<T>& x) {
   const int n = std::min(jet_order(), x.size() == 1 ? 0 : jet_order());
   jet<T> r;
   r.c.assign(static_cast<std::size_t>(n + 1), T(0));
-  r.c[0] = sqrt(x.c[0]);
+  detail::memo_op<T> memo(detail::memo_sqrt, n);
+  memo.operand(x.c.data(), std::min(x.size(), n + 1));
+  int first = memo.reuse(0, r.c.data(), n + 1);
+  if (first == 0) {
+    r.c[0] = sqrt(x.c[0]);
+    first = 1;
+  }
   const T two_r0 = T(2) * r.c[0];
-  for (int k = 1; k <= n; ++k) {
+  for (int k = first; k <= n; ++k) {
     T s = x[k];
     for (int j = 1; j < k; ++j) s -= r.c[static_cast<std::size_t>(j)] * r.c[static_cast<std::size_t>(k - j)];
     r.c[static_cast<std::size_t>(k)] = s / two_r0;
   }
+  memo.store(r.c);
   return r;
 }
 /// e = exp(x): k e_k = sum_j j x_j e_{k-j}.
@@ -208,12 +470,19 @@ template <class T> jet<T> exp(const jet<T>& x) {
   const int n = std::min(jet_order(), x.size() == 1 ? 0 : jet_order());
   jet<T> e;
   e.c.assign(static_cast<std::size_t>(n + 1), T(0));
-  e.c[0] = exp(x.c[0]);
-  for (int k = 1; k <= n; ++k) {
+  detail::memo_op<T> memo(detail::memo_exp, n);
+  memo.operand(x.c.data(), std::min(x.size(), n + 1));
+  int first = memo.reuse(0, e.c.data(), n + 1);
+  if (first == 0) {
+    e.c[0] = exp(x.c[0]);
+    first = 1;
+  }
+  for (int k = first; k <= n; ++k) {
     T s = T(0);
     for (int j = 1; j <= std::min(k, x.size() - 1); ++j) s += T(j) * x.c[static_cast<std::size_t>(j)] * e.c[static_cast<std::size_t>(k - j)];
     e.c[static_cast<std::size_t>(k)] = s / T(k);
   }
+  memo.store(e.c);
   return e;
 }
 /// l = log(x): x_0 k l_k = k x_k - sum_{j=1..k-1} j l_j x_{k-j}.
@@ -222,12 +491,19 @@ template <class T> jet<T> log(const jet<T>& x) {
   const int n = std::min(jet_order(), x.size() == 1 ? 0 : jet_order());
   jet<T> l;
   l.c.assign(static_cast<std::size_t>(n + 1), T(0));
-  l.c[0] = log(x.c[0]);
-  for (int k = 1; k <= n; ++k) {
+  detail::memo_op<T> memo(detail::memo_log, n);
+  memo.operand(x.c.data(), std::min(x.size(), n + 1));
+  int first = memo.reuse(0, l.c.data(), n + 1);
+  if (first == 0) {
+    l.c[0] = log(x.c[0]);
+    first = 1;
+  }
+  for (int k = first; k <= n; ++k) {
     T s = T(k) * x[k];
     for (int j = 1; j < k; ++j) s -= T(j) * l.c[static_cast<std::size_t>(j)] * x[k - j];
     l.c[static_cast<std::size_t>(k)] = s / (T(k) * x.c[0]);
   }
+  memo.store(l.c);
   return l;
 }
 /// atan(x) = integral of x' / (1 + x^2).
@@ -319,6 +595,14 @@ vector_t<jet<T>> jet_solve(const matrix_t<jet<T>>& A, const vector_t<jet<T>>& b,
   for (int j = 1; j < la; ++j) Aj[static_cast<std::size_t>(j)] = coefficient(A, j);
   vector_t<jet<T>> x(m);
   for (Eigen::Index i = 0; i < m; ++i) x(i).c.assign(static_cast<std::size_t>(n + 1), T(0));
+  // The memo (a Taylor series in progress): x's coefficients 0..first-1 from the previous pass
+  // when A's and b's agree with its operands; A_0^-1 (interval) with them.
+  memo_op<T> memo(memo_solve + (spd ? 0 : 16), n);
+  for (Eigen::Index i = 0; i < m; ++i)
+    for (Eigen::Index j = 0; j < m; ++j) memo.operand(A(i, j).c.data(), std::min(A(i, j).size(), n + 1));
+  for (Eigen::Index i = 0; i < m; ++i) memo.operand(b(i).c.data(), std::min(b(i).size(), n + 1));
+  int first = n + 1;
+  for (Eigen::Index i = 0; i < m; ++i) first = std::min(first, memo.reuse(static_cast<std::size_t>(i), x(i).c.data(), n + 1));
   std::optional<Eigen::LLT<matrix_t<T>>> llt;
   std::optional<Eigen::PartialPivLU<matrix_t<T>>> lu;
   matrix_t<T> inverse;  // interval: the columns enclose A^-1 e_j for every A in [A_0]
@@ -334,13 +618,24 @@ vector_t<jet<T>> jet_solve(const matrix_t<jet<T>>& A, const vector_t<jet<T>>& b,
     }
   } else if (n > 0) {
     inverse.resize(m, m);
-    for (Eigen::Index j = 0; j < m; ++j) {
-      vector_t<T> e = vector_t<T>::Zero(m);
-      e(j) = T(1);
-      inverse.col(j) = verified_solve(A0, e);
+    std::vector<T>& kept = memo.extra();
+    if (first > 0 && kept.size() == static_cast<std::size_t>(m * m)) {  // the same A_0: the same enclosure
+      for (Eigen::Index i = 0; i < m; ++i)
+        for (Eigen::Index j = 0; j < m; ++j) inverse(i, j) = kept[static_cast<std::size_t>(i * m + j)];
+    } else {
+      for (Eigen::Index j = 0; j < m; ++j) {
+        vector_t<T> e = vector_t<T>::Zero(m);
+        e(j) = T(1);
+        inverse.col(j) = verified_solve(A0, e);
+      }
+      if (memo) {
+        kept.resize(static_cast<std::size_t>(m * m));
+        for (Eigen::Index i = 0; i < m; ++i)
+          for (Eigen::Index j = 0; j < m; ++j) kept[static_cast<std::size_t>(i * m + j)] = inverse(i, j);
+      }
     }
   }
-  for (int k = 0; k <= n; ++k) {
+  for (int k = first; k <= n; ++k) {
     vector_t<T> r(m);
     for (Eigen::Index i = 0; i < m; ++i) {
       T s = b(i)[k];
@@ -360,6 +655,11 @@ vector_t<jet<T>> jet_solve(const matrix_t<jet<T>>& A, const vector_t<jet<T>>& b,
       xk = spd ? vector_t<T>(llt->solve(r)) : vector_t<T>(lu->solve(r));
     }
     for (Eigen::Index i = 0; i < m; ++i) x(i).c[static_cast<std::size_t>(k)] = xk(i);
+  }
+  if (memo) {
+    memo.store_all([&](auto&& append) {
+      for (Eigen::Index i = 0; i < m; ++i) append(x(i).c);
+    });
   }
   return x;
 }
