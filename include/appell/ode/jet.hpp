@@ -618,20 +618,20 @@ vector_t<jet<T>> jet_solve(const matrix_t<jet<T>>& A, const vector_t<jet<T>>& b,
     }
   } else if (n > 0) {
     inverse.resize(m, m);
-    std::vector<T>& kept = memo.extra();
-    if (first > 0 && kept.size() == static_cast<std::size_t>(m * m)) {  // the same A_0: the same enclosure
+    std::vector<T>* kept = memo ? &memo.extra() : nullptr;
+    if (kept && first > 0 && kept->size() == static_cast<std::size_t>(m * m)) {  // the same A_0: the same enclosure
       for (Eigen::Index i = 0; i < m; ++i)
-        for (Eigen::Index j = 0; j < m; ++j) inverse(i, j) = kept[static_cast<std::size_t>(i * m + j)];
+        for (Eigen::Index j = 0; j < m; ++j) inverse(i, j) = (*kept)[static_cast<std::size_t>(i * m + j)];
     } else {
       for (Eigen::Index j = 0; j < m; ++j) {
         vector_t<T> e = vector_t<T>::Zero(m);
         e(j) = T(1);
         inverse.col(j) = verified_solve(A0, e);
       }
-      if (memo) {
-        kept.resize(static_cast<std::size_t>(m * m));
+      if (kept) {
+        kept->resize(static_cast<std::size_t>(m * m));
         for (Eigen::Index i = 0; i < m; ++i)
-          for (Eigen::Index j = 0; j < m; ++j) kept[static_cast<std::size_t>(i * m + j)] = inverse(i, j);
+          for (Eigen::Index j = 0; j < m; ++j) (*kept)[static_cast<std::size_t>(i * m + j)] = inverse(i, j);
       }
     }
   }
