@@ -96,7 +96,7 @@ bool identical(const T& a, const T& b) {
 /// O(p^2) per operation over the whole series instead of O(p^3).  The operations of a pass are
 /// matched to the previous pass's by their rank; the operands are compared every time, so a pass
 /// whose operations differ from the previous one's (a branch taken the other way) computes the
-/// differing ones in full: the memo can cost time, never change a digit (tests/motion.cpp
+/// differing ones in full: the memo can cost time, never change a digit (tests/motion_scenes.cpp
 /// compares every series with the memo against the series without it, bit for bit).
 template <class T>
 struct jet_memo {
@@ -136,9 +136,8 @@ class jet_memo_scope {
 };
 
 /// One operation's dealings with the memo.  `operand(data, len)` for each operand (its
-/// coefficients as the operation uses them, len <= order + 1), then `usable()`: whether the
-/// stored results may be reused, and up to which coefficient (`keep`); `result(i)` the stored
-/// result i; `store_...` after computing.
+/// coefficients as the operation uses them, len <= order + 1), then `reuse(i, ...)`: the stored
+/// result i's coefficients that may be taken; `store` (or `store_all`) after computing.
 template <class T>
 class memo_op {
  public:
@@ -179,13 +178,6 @@ class memo_op {
     if (operands_.size() != e_->in_len.size()) keep_ = 0;
     return keep_;
   }
-  /// Stored result i's coefficients (valid when usable() > 0).
-  const T* result(std::size_t i, int& len) const {
-    std::size_t off = 0;
-    for (std::size_t r = 0; r < i; ++r) off += static_cast<std::size_t>(e_->out_len[r]);
-    len = e_->out_len[i];
-    return e_->out.data() + off;
-  }
   /// Copies into out[0..) the coefficients of stored result i that may be reused (at most
   /// len); returns their number (0: none).
   int reuse(std::size_t i, T* out, int len) {
@@ -225,6 +217,13 @@ class memo_op {
   }
 
  private:
+  /// Stored result i's coefficients.
+  const T* result(std::size_t i, int& len) const {
+    std::size_t off = 0;
+    for (std::size_t r = 0; r < i; ++r) off += static_cast<std::size_t>(e_->out_len[r]);
+    len = e_->out_len[i];
+    return e_->out.data() + off;
+  }
   template <class C>
   void append(const C& c) {
     e_->out.insert(e_->out.end(), c.begin(), c.end());
@@ -238,7 +237,7 @@ class memo_op {
   boost::container::small_vector<std::pair<const T*, int>, 2> operands_;
 };
 
-enum memo_kind : int { memo_mul = 1, memo_div, memo_sin_cos, memo_sqrt, memo_exp, memo_log, memo_solve };
+enum memo_kind : int { memo_mul = 1, memo_div, memo_sin_cos, memo_sqrt, memo_exp, memo_log, memo_solve_spd, memo_solve };
 }  // namespace detail
 
 namespace detail {
@@ -257,8 +256,9 @@ class jet_block_pool {
       for (void* p : list) ::operator delete(p);
   }
   void* get(std::size_t bytes) {
-    std::vector<void*>& list = free_[size_class(bytes)];
-    if (list.empty()) return ::operator new(std::size_t(64) << size_class(bytes));
+    const int c = size_class(bytes);
+    std::vector<void*>& list = free_[c];
+    if (list.empty()) return ::operator new(std::size_t(64) << c);
     void* p = list.back();
     list.pop_back();
     return p;
@@ -442,6 +442,19 @@ void sin_cos(const jet<T>& x, jet<T>& s, jet<T>& c) {
 template <class T> jet<T> sin(const jet<T>& x) { jet<T> s, c; sin_cos(x, s, c); return s; }
 template <class T> jet<T> cos(const jet<T>& x) { jet<T> s, c; sin_cos(x, s, c); return c; }
 template <class T> jet<T> tan(const jet<T>& x) { jet<T> s, c; sin_cos(x, s, c); return s / c; }
+namespace detail {
+/// The start of a one-operand recurrence under the memo: records x, takes r's coefficients
+/// from the previous pass where it may, else r_0 = f(x_0).  Returns the first coefficient to compute.
+template <class T, class F>
+int unary_start(memo_op<T>& memo, const jet<T>& x, jet<T>& r, int n, F&& f) {
+  memo.operand(x.c.data(), std::min(x.size(), n + 1));
+  const int first = memo.reuse(0, r.c.data(), n + 1);
+  if (first > 0) return first;
+  r.c[0] = f(x.c[0]);
+  return 1;
+}
+}  // namespace detail
+
 /// r = sqrt(x): r_0 = sqrt(x_0), r_k = (x_k - sum_{j=1..k-1} r_j r_{k-j}) / (2 r_0).
 template <class T> jet<T> sqrt(const jet<T>& x) {
   using std::sqrt;
@@ -449,12 +462,7 @@ template <class T> jet<T> sqrt(const jet<T>& x) {
   jet<T> r;
   r.c.assign(static_cast<std::size_t>(n + 1), T(0));
   detail::memo_op<T> memo(detail::memo_sqrt, n);
-  memo.operand(x.c.data(), std::min(x.size(), n + 1));
-  int first = memo.reuse(0, r.c.data(), n + 1);
-  if (first == 0) {
-    r.c[0] = sqrt(x.c[0]);
-    first = 1;
-  }
+  const int first = detail::unary_start(memo, x, r, n, [](const T& v) { return sqrt(v); });
   const T two_r0 = T(2) * r.c[0];
   for (int k = first; k <= n; ++k) {
     T s = x[k];
@@ -471,12 +479,7 @@ template <class T> jet<T> exp(const jet<T>& x) {
   jet<T> e;
   e.c.assign(static_cast<std::size_t>(n + 1), T(0));
   detail::memo_op<T> memo(detail::memo_exp, n);
-  memo.operand(x.c.data(), std::min(x.size(), n + 1));
-  int first = memo.reuse(0, e.c.data(), n + 1);
-  if (first == 0) {
-    e.c[0] = exp(x.c[0]);
-    first = 1;
-  }
+  const int first = detail::unary_start(memo, x, e, n, [](const T& v) { return exp(v); });
   for (int k = first; k <= n; ++k) {
     T s = T(0);
     for (int j = 1; j <= std::min(k, x.size() - 1); ++j) s += T(j) * x.c[static_cast<std::size_t>(j)] * e.c[static_cast<std::size_t>(k - j)];
@@ -492,12 +495,7 @@ template <class T> jet<T> log(const jet<T>& x) {
   jet<T> l;
   l.c.assign(static_cast<std::size_t>(n + 1), T(0));
   detail::memo_op<T> memo(detail::memo_log, n);
-  memo.operand(x.c.data(), std::min(x.size(), n + 1));
-  int first = memo.reuse(0, l.c.data(), n + 1);
-  if (first == 0) {
-    l.c[0] = log(x.c[0]);
-    first = 1;
-  }
+  const int first = detail::unary_start(memo, x, l, n, [](const T& v) { return log(v); });
   for (int k = first; k <= n; ++k) {
     T s = T(k) * x[k];
     for (int j = 1; j < k; ++j) s -= T(j) * l.c[static_cast<std::size_t>(j)] * x[k - j];
@@ -597,7 +595,7 @@ vector_t<jet<T>> jet_solve(const matrix_t<jet<T>>& A, const vector_t<jet<T>>& b,
   for (Eigen::Index i = 0; i < m; ++i) x(i).c.assign(static_cast<std::size_t>(n + 1), T(0));
   // The memo (a Taylor series in progress): x's coefficients 0..first-1 from the previous pass
   // when A's and b's agree with its operands; A_0^-1 (interval) with them.
-  memo_op<T> memo(memo_solve + (spd ? 0 : 16), n);
+  memo_op<T> memo(spd ? memo_solve_spd : memo_solve, n);
   for (Eigen::Index i = 0; i < m; ++i)
     for (Eigen::Index j = 0; j < m; ++j) memo.operand(A(i, j).c.data(), std::min(A(i, j).size(), n + 1));
   for (Eigen::Index i = 0; i < m; ++i) memo.operand(b(i).c.data(), std::min(b(i).size(), n + 1));

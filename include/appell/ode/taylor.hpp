@@ -34,7 +34,7 @@ using series = std::vector<vector_t<S>>;  // series[k](i): coefficient k of comp
 
 /// Whether the memo pays in S: it saves arithmetic and costs copies and comparisons.  Measured
 /// (bench/taylor.cpp, appell_bench_taylor): 0.7 to 1.0 times as fast in double and long double,
-/// 1.3 to 1.4 times faster in interval, 1.7 to 2.8 in dd, 2.2 to 4.2 in float128, 3.1 to 5.9 in
+/// 1.3 to 1.5 times faster in interval, 1.7 to 2.8 in dd, 2.2 to 4.2 in float128, 3.1 to 5.9 in
 /// mpfr at 256 bits (order 91).
 template <class S>
 inline constexpr bool jet_memo_pays = !std::is_floating_point_v<S>;
