@@ -7,7 +7,7 @@
 //   the simple pendulum theta'' = -sin theta, theta0 = 1, as a one-body system.
 // Prints one table: appell's width and time, kv's, and the ratios (width: appell / kv, below 1 is
 // tighter; time: appell / kv, the goal is at most 0.5).  Times are this run's, on this machine; kv's
-// are the issue's.  Usage: appell_bench_enclose [--quick] [--order N]
+// are the issue's.  Usage: appell_bench_enclose [--quick] [--order N] [--only PROBLEM[:T]]
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -55,8 +55,10 @@ measured run(const P& prob, const vector_t<interval>& x0, double t_end, int orde
 int main(int argc, char** argv) {
   bool quick = false;
   int order = 24;
+  const char* only = nullptr;  // --only PROBLEM[:T]: that row (rows) alone
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
     else if (!std::strcmp(argv[i], "--order") && i + 1 < argc) order = std::atoi(argv[++i]);
   }
   const evaluation_scope<interval> scope;
@@ -81,6 +83,11 @@ int main(int argc, char** argv) {
   std::string last_key;
   for (const kv_figure& f : figures) {
     if (quick && f.t_end > 10) continue;
+    if (only) {
+      const std::string o = only, name = o.substr(0, o.find(':'));
+      if (name != f.problem) continue;
+      if (o.find(':') != std::string::npos && std::atof(o.c_str() + o.find(':') + 1) != f.t_end) continue;
+    }
     const std::string key = std::string(f.problem) + std::to_string(f.t_end);
     if (key != last_key) {
       if (!std::strcmp(f.problem, "euler_body")) last = run(euler, euler0, f.t_end, order);

@@ -23,6 +23,7 @@
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/taylor.hpp"
 #include "appell/scalar/decimal.hpp"
+#include "affine_check.hpp"
 
 using namespace appell;
 using truth_t = boost::multiprecision::mpfr_float_100;
@@ -328,4 +329,16 @@ BOOST_AUTO_TEST_CASE(pendulum_energy_holds_its_initial_value_and_the_state_its_p
   const std::array<truth_t, 2> exact = ode::pendulum_solution<truth_t>{truth_t(1), truth_t(1)}.at(truth_t("2.5"));
   BOOST_TEST(holds(end(0), exact[0]), to_string(end(0)) << " vs " << exact[0]);
   BOOST_TEST(holds(end(1), exact[1]), to_string(end(1)) << " vs " << exact[1]);
+}
+
+BOOST_AUTO_TEST_CASE(the_affine_set_holds_every_true_point_through_steps_and_merges) {
+  // 1, 3 and 6 components, 300 runs of 40 steps each (tests/affine_check.hpp).
+  const evaluation_scope<interval> scope;
+  for (int n : {1, 3, 6}) {
+    const affine_check::outcome o = affine_check::run<interval>(n, 300, 40, 20261125u + static_cast<unsigned>(n));
+    BOOST_TEST_MESSAGE("affine set, interval, n = " << n << ": " << o.checks << " components checked, " << o.merges
+                                                     << " merges, " << o.misses << " misses, widest " << o.widest);
+    BOOST_TEST(o.misses == 0, o.first_miss);
+    BOOST_TEST(o.merges > 500);
+  }
 }

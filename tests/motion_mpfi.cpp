@@ -11,6 +11,7 @@
 #include "appell/ode/closed_forms.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/scalar/decimal.hpp"
+#include "affine_check.hpp"
 
 using namespace appell;
 using truth_t = boost::multiprecision::mpfr_float_100;
@@ -68,4 +69,17 @@ BOOST_AUTO_TEST_CASE(pendulum_energy_stays_inside_its_initial_value) {
       });
   BOOST_TEST_REQUIRE(st.complete, st.reason);
   BOOST_TEST_MESSAGE("pendulum at 113 bits: energy over " << steps << " steps to T = 10, widest " << widest);
+}
+
+BOOST_AUTO_TEST_CASE(the_affine_set_holds_every_true_point_through_steps_and_merges) {
+  // The interval-product path of the affine set (tests/affine_check.hpp), at 113 bits.
+  const mp_precision_scope precision(113);
+  const evaluation_scope<mpfi> scope;
+  for (int n : {1, 3, 6}) {
+    const affine_check::outcome o = affine_check::run<mpfi>(n, 60, 40, 20261126u + static_cast<unsigned>(n));
+    BOOST_TEST_MESSAGE("affine set, mpfi 113, n = " << n << ": " << o.checks << " components checked, " << o.merges
+                                                     << " merges, " << o.misses << " misses, widest " << o.widest);
+    BOOST_TEST(o.misses == 0, o.first_miss);
+    BOOST_TEST(o.merges > 100);
+  }
 }
