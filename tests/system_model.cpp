@@ -773,8 +773,8 @@ BOOST_AUTO_TEST_CASE(a_sleeping_top_linearizes_to_its_closed_form) {
     // s = i y with A' y^2 + m g l = +- C w y
     const ref_t disc = sqrt(C * C * w * w - 4 * Ap * m * g * l);
     bool found = false;
-    for (const ref_t y : {ref_t((C * w + disc) / (2 * Ap)), ref_t((C * w - disc) / (2 * Ap))})
-      for (const ref_t sign : {ref_t(1), ref_t(-1)}) {
+    for (const ref_t& y : {ref_t((C * w + disc) / (2 * Ap)), ref_t((C * w - disc) / (2 * Ap))})
+      for (const ref_t& sign : {ref_t(1), ref_t(-1)}) {
         const auto bi = bounds_of(e.imaginary_part);
         found = found || (bi.first <= sign * y && sign * y <= bi.second);
       }

@@ -33,7 +33,7 @@ T inertia_virtual_work(const Sys& sys, const vector_t<T>& q, const vector_t<T>& 
     const vec3<T> a = detail::derivative(b.velocity, 0) + cross(s.frame_rate, s.velocity);
     const vec3<T> alpha = detail::derivative(b.omega, 0) + frame_cross_omega(s);
     const vec3<T> dr = detail::derivative(b.velocity, 1), dtheta = detail::derivative(b.omega, 1);
-    const vec3<T> moment = mat_vec(s.inertia, alpha) + cross(s.omega, mat_vec(s.inertia, s.omega));
+    const vec3<T> moment = mat_vec(s.inertia, alpha) + gyroscopic(s.inertia, s.omega);
     work += s.mass * dot(a, dr) + dot(moment, dtheta);
   }
   return work;
