@@ -19,21 +19,22 @@ namespace affine_check {
 
 using truth = boost::multiprecision::mpfr_float_100;
 
+/// The lower (MPFR_RNDD) or upper (MPFR_RNDU) bound of x, rounded outward into truth.
 template <class I>
-truth lower_of(const I& x) {
+truth bound_of(const I& x, mpfr_rnd_t side) {
   appell::mpfr_value a, b;
   appell::scalar_traits<I>::to_mpfr(x, a, b);
   truth r;
-  mpfr_set(r.backend().data(), a, MPFR_RNDD);
+  mpfr_set(r.backend().data(), side == MPFR_RNDD ? a : b, side);
   return r;
 }
 template <class I>
+truth lower_of(const I& x) {
+  return bound_of(x, MPFR_RNDD);
+}
+template <class I>
 truth upper_of(const I& x) {
-  appell::mpfr_value a, b;
-  appell::scalar_traits<I>::to_mpfr(x, a, b);
-  truth r;
-  mpfr_set(r.backend().data(), b, MPFR_RNDU);
-  return r;
+  return bound_of(x, MPFR_RNDU);
 }
 
 struct outcome {

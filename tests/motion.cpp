@@ -31,24 +31,8 @@ using truth_t = boost::multiprecision::mpfr_float_100;
 namespace {
 
 template <class I>
-truth_t lo(const I& x) {
-  mpfr_value a, b;
-  scalar_traits<I>::to_mpfr(x, a, b);
-  truth_t r;
-  mpfr_set(r.backend().data(), a, MPFR_RNDD);
-  return r;
-}
-template <class I>
-truth_t hi(const I& x) {
-  mpfr_value a, b;
-  scalar_traits<I>::to_mpfr(x, a, b);
-  truth_t r;
-  mpfr_set(r.backend().data(), b, MPFR_RNDU);
-  return r;
-}
-template <class I>
 bool holds(const I& x, const truth_t& v) {
-  return lo(x) <= v && v <= hi(x);
+  return affine_check::lower_of(x) <= v && v <= affine_check::upper_of(x);
 }
 
 std::string decimal_on_grid(std::mt19937_64& rng, int lo_thousandths, int hi_thousandths) {
@@ -191,7 +175,7 @@ BOOST_AUTO_TEST_CASE(euler_body_enclosure_holds_the_elliptic_solution) {
                                                  end = s.end;
                                                  ++steps;
                                                  // over every step: the solution at the step's start lies in it
-                                                 const std::array<truth_t, 3> w0 = truth.at(lo(s.t0));
+                                                 const std::array<truth_t, 3> w0 = truth.at(affine_check::lower_of(s.t0));
                                                  for (int i = 0; i < 3; ++i) BOOST_TEST(holds(s.over(i), w0[static_cast<std::size_t>(i)]));
                                                });
     BOOST_TEST_REQUIRE(st.complete, st.reason);
