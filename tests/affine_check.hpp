@@ -101,7 +101,7 @@ outcome run(int n, int runs, int steps, std::uint64_t seed) {
         xn[static_cast<std::size_t>(i)] = s;
       }
       const Eigen::Index before = set.C.cols();
-      set.step(J, zr, xhn, max_cols);
+      set.step(J, vector_t<I>(zr - xhn), max_cols);
       if (set.C.cols() < before + n) ++out.merges;
       const vector_t<I> box = set.box(xhn);
       for (int i = 0; i < n; ++i) {

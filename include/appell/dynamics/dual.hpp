@@ -26,6 +26,8 @@ template <class S> bool structurally_zero(const S& x);
 template <class T, int N> struct multi_dual;
 template <class T, int N> multi_dual<T, N> pown(const multi_dual<T, N>& x, int n);
 template <class T> struct jet;  // truncated Taylor series (ode/jet.hpp): a dual of jets finds its pown
+template <class T, int N> struct slope;  // slopes (dynamics/slope.hpp): a multi_dual of slopes finds their pown
+template <class T, int N> slope<T, N> pown(const slope<T, N>& x, int n);
 template <class T> jet<T> pown(const jet<T>& x, int n);
 
 template <class T>

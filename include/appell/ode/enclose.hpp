@@ -10,8 +10,10 @@
 //     iteration from Y with x_p(B) := 0, inflated.
 //  2. Step end: the flow is T(x) + (remainder), T(x) = sum_{k<p} x_k(x) h^k;
 //     the remainder lies in R = x_p(B) h^p (Lagrange's form, coefficient p of
-//     the solution at some state of B).  By the mean-value theorem
-//        x_{j+1} in T(xh_j) + J (x_j - xh_j) + R,  J = sum_{k<p} d x_k/d x0 (X_j) h^k,
+//     the solution at some state of B).  By the slopes of T about xh_j over X_j
+//     (dynamics/slope.hpp; they lie inside the Jacobian over X_j, the mean-value
+//     form, and have half its spread on a quadratic right-hand side)
+//        x_{j+1} in T(xh_j) + J (x_j - xh_j) + R,  J = sum_{k<p} slope of x_k about xh_j over X_j h^k,
 //     and with S = J A_j:  X_{j+1} = T(xh_j) + R + S r_j  (the box), and the
 //     parallelepiped  xh_{j+1} + A_{j+1} r_{j+1},  r_{j+1} =
 //     (A_{j+1}^-1 S) r_j + A_{j+1}^-1 (T(xh_j) + R - xh_{j+1}); A^-1 enclosed by
@@ -184,9 +186,9 @@ bound_t<I> mag(const I& x) {
 
 /// The set of states as an affine form (affine arithmetic, as in Kashiwagi's kv):
 ///   x in xh + C e,  e in [-1, 1]^N,  C an exact point matrix (n x N, in the bound type).
-/// A step maps it, by the mean-value form x' in zr + J (x - xh), to
+/// A step maps it, by the slope form x' in zr + J (x - xh), to
 ///   xh' + G e + diag(d) e',  e' in [-1, 1]^n new symbols,
-/// with G a point matrix near J C and d_i >= sum_c |J* C - G|_ic + |zr_i - xh'_i| for every
+/// with G a point matrix near J C and d_i >= sum_c |J* C - G|_ic + |dz_i| for every
 /// J* in J.  The step's own errors become symbols that later steps' Jacobians carry as
 /// columns, never wrapped into a box and turned back (the loss of the QR frame).  Beyond
 /// max_cols symbols the smaller half is merged into a parallelotope (condense).
@@ -214,7 +216,8 @@ struct affine_set {
       }
   }
 
-  void step(const matrix_t<I>& J, const vector_t<I>& zr, const vector_t<I>& xhn, Eigen::Index max_cols) {
+  /// dz: an enclosure of zr - xh' (the step's own error about the new centre).
+  void step(const matrix_t<I>& J, const vector_t<I>& dz, Eigen::Index max_cols) {
     const Eigen::Index n = C.rows(), N = C.cols();
     Eigen::Matrix<B, Eigen::Dynamic, Eigen::Dynamic> Cn(n, N + n);
     Cn.setZero();
@@ -251,7 +254,7 @@ struct affine_set {
       }
     }
     for (Eigen::Index i = 0; i < n; ++i) {
-      const I di = d[static_cast<std::size_t>(i)] + thin_of<I>(mag<I>(I(zr(i) - xhn(i))));
+      const I di = d[static_cast<std::size_t>(i)] + thin_of<I>(mag<I>(dz(i)));
       Cn(i, N + i) = upper(di);
       sums[static_cast<std::size_t>(i)] += thin_of<I>(Cn(i, N + i));
     }
@@ -358,15 +361,20 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // Jacobians of the first q only (see the step end).
     const series<I> cX = taylor_series(prob, X, p - 1);
     const int q = std::min(p - 1, std::max(6, p / 2));
-    series<I> cXq;
     std::vector<matrix_t<I>> DX;
-    taylor_series_jacobian(prob, X, q, cXq, DX);
+    {
+      // The slopes about xh over X (hull with xh: the midpoint of the last step's enclosure
+      // need not lie in the intersection of its boxes).
+      vector_t<I> Xs(n);
+      for (int i = 0; i < n; ++i) Xs(i) = detail::hull2(X(i), xh(i));
+      taylor_series_slopes(prob, xh, Xs, q, DX);
+    }
     // The step: from the last coefficients at the centre, times what the last steps learned
     // (h_factor), then shrunk until the a priori enclosure holds and the remainder x_p(B) h^p is
     // within the tolerance (over a wide B the interval coefficient x_p(B) is overestimated).
     double scale = 1;
     for (int i = 0; i < n; ++i) scale = std::max(scale, std::fabs(approx_double(xh(i))));
-    const double remainder_tol = 4 * tol * scale;
+    const double remainder_tol = 1 * tol * scale;
     double hd = step_from_coefficients(cc, tol) * h_factor;
     if (h_next > 0) hd = std::min(hd, 2 * h_next);
     bool accepted = false, shrunk = false;
@@ -459,18 +467,25 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     const I hp = pown(h, p);
     vector_t<I> R(n);
     for (int i = 0; i < n; ++i) R(i) = cpB(i) * hp;
-    // T(x) = T_q(x) + H(x), H(x) = sum_{q<k<p} x_k(x) h^k: the mean-value form on T_q only
-    // (J = sum_{k<=q} d x_k/d x0 (X) h^k), and H over X as it stands, H(X) from the coefficients
+    // T(x) = T_q(x) + H(x), H(x) = sum_{q<k<p} x_k(x) h^k: the slope form on T_q only
+    // (J = sum_{k<=q} S_k h^k, S_k the slope of x_k about xh over X), and H over X as it stands, H(X) from the coefficients
     // over X: its width, about width(X) |d x_k/dx0| h^k for k > q, is negligible, and the
     // Jacobians cost O(q^3) instead of O(p^3).
     matrix_t<I> J = DX[static_cast<std::size_t>(q)];
     for (int k = q - 1; k >= 0; --k) J = matrix_t<I>(J * h + DX[static_cast<std::size_t>(k)]);
-    const vector_t<I> z = horner(series<I>(cc.begin(), cc.begin() + q + 1), h, 0, q);  // T_q(xh)
+    // zr = xh + rest, rest = (T_q(xh) - xh) + H(X) + R: the motion from the point xh lies in zr.
+    // The step's error about the new centre xhn is kept as dz = (xh - xhn) + rest, not zr - xhn:
+    // xh - xhn is exact (or one rounding of a tiny number), so dz is about as wide as rest, where
+    // zr - xhn carries zr's own rounding, an ulp of the state on each side (measured: it was 1 to 2
+    // ulps of every step's error on Euler's body, the error the enclosure then carries to T).
+    const vector_t<I> tail = horner(series<I>(cc.begin(), cc.begin() + q + 1), h, 1, q);  // T_q(xh) - xh
     const vector_t<I> H = q < p - 1 ? horner(cX, h, q + 1, p - 1) : vector_t<I>(vector_t<I>::Zero(n));
-    vector_t<I> zr = z + H + R, Xn(n), xhn(n);
+    const vector_t<I> rest = tail + H + R;
+    vector_t<I> zr = xh + rest, Xn(n), xhn(n), dzr(n);
     for (int i = 0; i < n; ++i) {
       Xn(i) = zr(i);
       xhn(i) = detail::thin_of<I>(scalar_traits<I>::mid(zr(i)));
+      dzr(i) = (xh(i) - xhn(i)) + rest(i);
     }
     bool first_frame = true;
     for (detail::frame<I>& f : frames) {
@@ -482,10 +497,10 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
       }
       first_frame = false;
       const matrix_t<I> An = detail::next_frame_matrix(S, f.r, f.qr);
-      // A^-1 S and A^-1 (zr - xhn), each by verified solves with the exact point matrix An.
+      // A^-1 S and A^-1 (zr - xhn) (as dzr), each by verified solves with the exact point matrix An.
       matrix_t<I> AiS(n, n);
       for (int j = 0; j < n; ++j) AiS.col(j) = verified_solve(An, vector_t<I>(S.col(j)));
-      const vector_t<I> dz = verified_solve(An, vector_t<I>(zr - xhn));
+      const vector_t<I> dz = verified_solve(An, dzr);
       f.A = An;
       f.r = appell::detail::product(AiS, f.r) + dz;
     }
@@ -493,7 +508,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
       const vector_t<I> par = xhn + appell::detail::product(f.A, f.r);
       for (int i = 0; i < n; ++i) Xn(i) = appell::detail::intersect(Xn(i), par(i));
     }
-    affine.step(J, zr, xhn, Eigen::Index(n) * affine_symbols_per_component);
+    affine.step(J, dzr, Eigen::Index(n) * affine_symbols_per_component);
     {
       const vector_t<I> aff = affine.box(xhn);
       for (int i = 0; i < n; ++i) Xn(i) = appell::detail::intersect(Xn(i), aff(i));

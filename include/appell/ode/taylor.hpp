@@ -24,6 +24,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "appell/dynamics/slope.hpp"
 #include "appell/ode/jet.hpp"
 #include "appell/ode/problems.hpp"
 
@@ -99,6 +100,53 @@ void taylor_series_jacobian(const P& prob, const vector_t<I>& X0, int p, series<
     const I kp1(k + 1);
     for (int i = 0; i < n; ++i) {
       c[static_cast<std::size_t>(k + 1)](i) = F(i).v[k] / kp1;
+      for (int j = 0; j < n; ++j) D[static_cast<std::size_t>(k + 1)](i, j) = F(i).d[static_cast<std::size_t>(j)][k] / kp1;
+    }
+  }
+}
+
+/// The slopes of the coefficients over the box X0 about its point xh (dynamics/slope.hpp): for
+/// every x in X0 and k = 0 .. p, x_k(x) - x_k(xh) = S* (x - xh) for some S* in D[k].  The right-hand
+/// side on slope<jet<I>, dim>: the recursion of taylor_series_jacobian, with each quantity carried
+/// over the box, at the centre and by its slopes.  xh must lie in X0 (enclose passes their hull).
+/// D[k] lies inside the Jacobian d x_k / d x0 (X0) and has about half its width where the
+/// right-hand side is quadratic (Euler's equations).
+template <class P, class I>
+void taylor_series_slopes(const P& prob, const vector_t<I>& xh, const vector_t<I>& X0, int p,
+                          std::vector<matrix_t<I>>& D, bool memo = true) {
+  constexpr int n = P::dim;
+  using SL = slope<jet<I>, n>;
+  series<I> cv(static_cast<std::size_t>(p + 1), vector_t<I>(n)), cc(static_cast<std::size_t>(p + 1), vector_t<I>(n));
+  D.assign(static_cast<std::size_t>(p + 1), matrix_t<I>(n, n));
+  cv[0] = X0;
+  cc[0] = xh;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) D[0](i, j) = I(i == j ? 1 : 0);
+  vector_t<SL> X(n);
+  detail::jet_memo<I> m;
+  const detail::jet_memo_scope<I> scope(memo ? &m : nullptr);
+  auto jet_of = [](const series<I>& s, int k, auto&& entry) {
+    std::vector<I> a(static_cast<std::size_t>(k + 1));
+    for (int j = 0; j <= k; ++j) a[static_cast<std::size_t>(j)] = entry(s[static_cast<std::size_t>(j)]);
+    return jet<I>(std::move(a));
+  };
+  for (int k = 0; k < p; ++k) {
+    const jet_order_scope order(k);
+    m.begin_pass();
+    for (int i = 0; i < n; ++i) {
+      X(i).v = jet_of(cv, k, [&](const vector_t<I>& x) { return x(i); });
+      X(i).c = jet_of(cc, k, [&](const vector_t<I>& x) { return x(i); });
+      for (int j = 0; j < n; ++j) {
+        std::vector<I> d(static_cast<std::size_t>(k + 1));
+        for (int l = 0; l <= k; ++l) d[static_cast<std::size_t>(l)] = D[static_cast<std::size_t>(l)](i, j);
+        X(i).d[static_cast<std::size_t>(j)] = jet<I>(std::move(d));
+      }
+    }
+    const vector_t<SL> F = prob.template rhs<SL>(X);
+    const I kp1(k + 1);
+    for (int i = 0; i < n; ++i) {
+      cv[static_cast<std::size_t>(k + 1)](i) = F(i).v[k] / kp1;
+      cc[static_cast<std::size_t>(k + 1)](i) = F(i).c[k] / kp1;
       for (int j = 0; j < n; ++j) D[static_cast<std::size_t>(k + 1)](i, j) = F(i).d[static_cast<std::size_t>(j)][k] / kp1;
     }
   }

@@ -1,0 +1,187 @@
+// Slopes of the Taylor coefficients (dynamics/slope.hpp, ode::taylor_series_slopes), the matrix
+// appell enclose steps with, against true differences computed in MPFR at 332 bits:
+//   - on random boxes X and centres xh in X, at random points x of X (corners included), every
+//     coefficient's difference x_k(x) - x_k(xh) lies in S_k (x - xh), on five problems through
+//     the generic path: Euler's body (quadratic), the heavy top and the pendulum (sines, a solve),
+//     Example I's cone (an expression), the sphere in a bowl (Cotton's elimination);
+//   - each slope is no wider than the Jacobian over X (the mean-value form it replaces), and on
+//     Euler's body, whose right-hand side is quadratic, about half as wide.
+#define BOOST_TEST_MODULE slopes
+#include <boost/test/unit_test.hpp>
+
+#include <random>
+
+#include "appell/io/models/rolling_sphere.hpp"
+#include "appell/io/models/top_on_cone.hpp"
+#include "appell/io/scene.hpp"
+#include "appell/ode/problems.hpp"
+#include "appell/ode/taylor.hpp"
+
+using namespace appell;
+
+namespace {
+
+constexpr unsigned truth_bits = 332;
+
+mpfr lower_m(const interval& x) { return mpfr(x.lower()); }  // exact: a double at 332 bits
+mpfr upper_m(const interval& x) { return mpfr(x.upper()); }
+
+scene_input scene_file(const std::string& file) {
+  return read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
+}
+
+struct tally {
+  long checks = 0, misses = 0;
+  double slope_width = 0, jacobian_width = 0;  ///< summed over k >= 1
+  long wider = 0;                              ///< entries where the slope is wider than the Jacobian
+  long on_bound = 0;                           ///< differences beyond a bound by the truth's error only
+  double attained = 0;                         ///< the largest such excess, relative
+  std::string first_miss;
+};
+
+/// `trials` random boxes around the state x0 of the problem made by make<T>() (T = interval,
+/// and mpfr for the truth), each with `points` random points.
+template <class Make>
+tally check(Make&& make, const std::vector<double>& x0, const std::vector<double>& scale, int q, int trials,
+            int points, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u01(0, 1), sym(-1, 1);
+  const int n = static_cast<int>(x0.size());
+  tally t;
+  const auto prob_i = make(std::type_identity<interval>{});
+  for (int trial = 0; trial < trials; ++trial) {
+    // X: around x0 moved by up to 10% of the scale, radii 10^-1 .. 10^-7 of the scale.
+    vector_t<interval> X(n), xh(n);
+    std::vector<double> lo(static_cast<std::size_t>(n)), hi(static_cast<std::size_t>(n)), h(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+      const std::size_t s = static_cast<std::size_t>(i);
+      const double c = x0[s] + 0.1 * scale[s] * sym(rng);
+      const double r = scale[s] * std::pow(10.0, -1 - 6 * u01(rng));
+      lo[s] = c - r;
+      hi[s] = c + r;
+      h[s] = lo[s] + (hi[s] - lo[s]) * u01(rng);  // the centre: anywhere in X
+      X(i) = interval(lo[s], hi[s]);
+      xh(i) = interval(h[s]);
+    }
+    std::vector<matrix_t<interval>> S, D;
+    ode::series<interval> c;
+    {
+      const evaluation_scope<interval> scope;
+      ode::taylor_series_slopes(prob_i, xh, X, q, S);
+      ode::taylor_series_jacobian(prob_i, X, q, c, D);
+    }
+    for (int k = 1; k <= q; ++k)
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          const double ws = boost::numeric::width(S[static_cast<std::size_t>(k)](i, j));
+          const double wd = boost::numeric::width(D[static_cast<std::size_t>(k)](i, j));
+          t.slope_width += ws;
+          t.jacobian_width += wd;
+          if (ws > wd * (1 + 1e-9) + 1e-300) ++t.wider;
+        }
+    const mp_precision_scope bits(truth_bits);
+    const auto prob_m = make(std::type_identity<mpfr>{});
+    vector_t<mpfr> xm(n);
+    for (int i = 0; i < n; ++i) xm(i) = mpfr(h[static_cast<std::size_t>(i)]);
+    const ode::series<mpfr> at_centre = ode::taylor_series(prob_m, xm, q, false);
+    for (int pt = 0; pt < points; ++pt) {
+      vector_t<mpfr> x(n);
+      std::vector<mpfr> delta(static_cast<std::size_t>(n));
+      for (int i = 0; i < n; ++i) {
+        const std::size_t s = static_cast<std::size_t>(i);
+        // points 0 and 1: opposite corners; the others inside
+        const double v = pt == 0 ? lo[s] : pt == 1 ? hi[s] : lo[s] + (hi[s] - lo[s]) * u01(rng);
+        x(i) = mpfr(v);
+        delta[s] = x(i) - xm(i);  // exact at 332 bits
+      }
+      const ode::series<mpfr> at_x = ode::taylor_series(prob_m, x, q, false);
+      for (int k = 0; k <= q; ++k)
+        for (int i = 0; i < n; ++i) {
+          const mpfr diff = at_x[static_cast<std::size_t>(k)](i) - at_centre[static_cast<std::size_t>(k)](i);
+          mpfr low = 0, up = 0;
+          for (int j = 0; j < n; ++j) {
+            const interval& s = S[static_cast<std::size_t>(k)](i, j);
+            const mpfr& d = delta[static_cast<std::size_t>(j)];
+            const mpfr a = lower_m(s) * d, b = upper_m(s) * d;
+            low += a < b ? a : b;
+            up += a < b ? b : a;
+          }
+          ++t.checks;
+          // The truth's own error: each coefficient at 332 bits is within about 2^-300 of its scale
+          // (q passes of a few dozen roundings each); a bound the slope attains exactly (a
+          // quadratic at a corner of X) may then be crossed by that much, never by an ulp of double.
+          const mpfr margin = ldexp(mpfr(1), -290) * (abs(low) + abs(up) + abs(at_x[static_cast<std::size_t>(k)](i)) +
+                                                      abs(at_centre[static_cast<std::size_t>(k)](i)) + 1);
+          if (!(low - margin <= diff && diff <= up + margin) && t.misses++ == 0)
+            t.first_miss = "trial " + std::to_string(trial) + " point " + std::to_string(pt) + " x_" +
+                           std::to_string(k) + "[" + std::to_string(i) + "]: " + diff.str(25) + " outside [" +
+                           low.str(25) + ", " + up.str(25) + "]";
+          if (!(low <= diff && diff <= up)) {
+            const mpfr excess = diff < low ? mpfr(low - diff) : mpfr(diff - up);
+            const double rel = static_cast<double>(excess / (abs(diff) + 1e-300));
+            t.attained = std::max(t.attained, rel);
+            ++t.on_bound;
+          }
+        }
+    }
+  }
+  return t;
+}
+
+void report(const char* name, const tally& t) {
+  BOOST_TEST_MESSAGE(name << ": " << t.checks << " differences checked, " << t.misses << " misses (" << t.on_bound
+                          << " on a bound, by at most " << t.attained << " relative); slope / Jacobian width "
+                          << t.slope_width / t.jacobian_width << ", " << t.wider << " entries wider than the Jacobian");
+  BOOST_TEST(t.misses == 0, name << ": " << t.first_miss);
+  BOOST_TEST(t.checks > 0);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(slopes_of_euler_s_body_hold_true_differences_with_half_the_jacobian_s_width) {
+  auto make = []<class T>(std::type_identity<T>) {
+    return ode::euler_body_problem<T>{euler_body<T>{vec3<T>(T(1), T(2), T(3)), vec3<T>(T(0), T(0), T(0))}};
+  };
+  const tally t = check(make, {1, 1, 1}, {1, 1, 1}, 10, 60, 6, 20261125u);
+  report("euler_body", t);
+  // Quadratic: to first order in the box's radius the slope has half the Jacobian's width.
+  BOOST_TEST(t.slope_width <= 0.55 * t.jacobian_width);
+  BOOST_TEST(t.wider == 0);
+}
+
+BOOST_AUTO_TEST_CASE(slopes_of_the_heavy_top_and_the_pendulum_hold_true_differences) {
+  auto top = []<class T>(std::type_identity<T>) { return ode::heavy_top_problem<T>{T(1), T(2), T(1), T(1), T(1)}; };
+  const tally a = check(top, {0, 1, 0, 0.5, 0, 5}, {1, 1, 1, 1, 1, 5}, 8, 30, 5, 20261126u);
+  report("heavy_top", a);
+  BOOST_TEST(a.slope_width < a.jacobian_width);
+  auto pendulum = []<class T>(std::type_identity<T>) { return ode::pendulum_problem<T>{T(1), T(1), T(1)}; };
+  const tally b = check(pendulum, {1, 0}, {1, 1}, 10, 60, 6, 20261127u);
+  report("pendulum", b);
+  BOOST_TEST(b.slope_width < b.jacobian_width);
+}
+
+BOOST_AUTO_TEST_CASE(slopes_of_example_one_and_the_sphere_in_a_bowl_hold_true_differences) {
+  const scene_input cone_scene = scene_file("top_on_cone.json");
+  auto cone = [&]<class T>(std::type_identity<T>) {
+    const auto m = top_on_cone_model::prepare<T>(cone_scene.as<top_on_cone_input>());
+    return ode::top_on_cone_problem<T>{m.top, m.cone};
+  };
+  const tally a = check(cone, {0.7, 0.3, 1.2, 40}, {1, 1, 1, 10}, 6, 12, 4, 20261128u);
+  report("top_on_cone", a);
+  BOOST_TEST(a.slope_width < a.jacobian_width);
+  const scene_input bowl = scene_file("rolling_sphere_bowl.json");
+  std::vector<double> x0;
+  auto sphere = [&]<class T>(std::type_identity<T>) {
+    const auto m = rolling_sphere_model::prepare<T>(bowl.as<rolling_sphere_input>());
+    return ode::rolling_sphere_problem<T>{m.M, m.A, m.a, m.surface, m.F, m.tau};
+  };
+  {
+    const auto m = rolling_sphere_model::prepare<double>(bowl.as<rolling_sphere_input>());
+    x0 = {m.c(0), m.c(1), m.c(2), m.omega(0), m.omega(1), m.omega(2)};
+  }
+  std::vector<double> scale(6);
+  for (int i = 0; i < 6; ++i) scale[static_cast<std::size_t>(i)] = 1e-2 * std::max(1.0, std::fabs(x0[static_cast<std::size_t>(i)]));
+  const tally b = check(sphere, x0, scale, 6, 12, 4, 20261129u);
+  report("rolling_sphere (bowl)", b);
+  BOOST_TEST(b.slope_width < b.jacobian_width);
+}
