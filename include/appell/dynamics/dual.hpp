@@ -222,20 +222,25 @@ template <class T, int N> multi_dual<T, N> sqr(const multi_dual<T, N>& x) {
 /// as the value (linearize.hpp differentiates the motion so).  It is not itself a
 /// set: its bounds and predicates are those of its value, and the linear solves
 /// go to the overloads in linalg/dual_solve.hpp.
-template <class T, int N>
-  requires Scalar<T>
-struct scalar_traits<multi_dual<T, N>> {
-  static constexpr const char* name = "dual";
+/// The traits of a scalar that carries derivative parts beside a value `v` (multi_dual, slope):
+/// not a set; bounds and predicates those of the value.
+template <class D, class T>
+struct derivative_carrier_traits {
   static constexpr bool is_interval = false;
   static constexpr bool is_rigorous = scalar_traits<T>::is_rigorous;
   static constexpr bool runtime_precision = scalar_traits<T>::runtime_precision;
   static constexpr bool needs_upward_rounding = scalar_traits<T>::needs_upward_rounding;
   using bound_type = bound_t<T>;
   static unsigned precision_bits() { return scalar_traits<T>::precision_bits(); }
-  static bound_type lower(const multi_dual<T, N>& x) { return scalar_traits<T>::lower(x.v); }
-  static bound_type upper(const multi_dual<T, N>& x) { return scalar_traits<T>::upper(x.v); }
-  static bound_type mid(const multi_dual<T, N>& x) { return scalar_traits<T>::mid(x.v); }
-  static bound_type width(const multi_dual<T, N>& x) { return scalar_traits<T>::width(x.v); }
+  static bound_type lower(const D& x) { return scalar_traits<T>::lower(x.v); }
+  static bound_type upper(const D& x) { return scalar_traits<T>::upper(x.v); }
+  static bound_type mid(const D& x) { return scalar_traits<T>::mid(x.v); }
+  static bound_type width(const D& x) { return scalar_traits<T>::width(x.v); }
+};
+template <class T, int N>
+  requires Scalar<T>
+struct scalar_traits<multi_dual<T, N>> : derivative_carrier_traits<multi_dual<T, N>, T> {
+  static constexpr const char* name = "dual";
 };
 
 template <class T> struct is_dual : std::false_type {};

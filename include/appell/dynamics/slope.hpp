@@ -173,18 +173,8 @@ template <class T, int N> slope<T, N> pown(const slope<T, N>& x, int n) {  // n 
 /// those of its box value, and the linear solves go to linalg/dual_solve.hpp.
 template <class T, int N>
   requires Scalar<T>
-struct scalar_traits<slope<T, N>> {
+struct scalar_traits<slope<T, N>> : derivative_carrier_traits<slope<T, N>, T> {
   static constexpr const char* name = "slope";
-  static constexpr bool is_interval = false;
-  static constexpr bool is_rigorous = scalar_traits<T>::is_rigorous;
-  static constexpr bool runtime_precision = scalar_traits<T>::runtime_precision;
-  static constexpr bool needs_upward_rounding = scalar_traits<T>::needs_upward_rounding;
-  using bound_type = bound_t<T>;
-  static unsigned precision_bits() { return scalar_traits<T>::precision_bits(); }
-  static bound_type lower(const slope<T, N>& x) { return scalar_traits<T>::lower(x.v); }
-  static bound_type upper(const slope<T, N>& x) { return scalar_traits<T>::upper(x.v); }
-  static bound_type mid(const slope<T, N>& x) { return scalar_traits<T>::mid(x.v); }
-  static bound_type width(const slope<T, N>& x) { return scalar_traits<T>::width(x.v); }
 };
 
 // A slope is treated as a multi_dual wherever the library asks (structurally_zero, value_of,

@@ -26,6 +26,31 @@
 namespace appell {
 
 namespace detail {
+/// The derivative parts d_k of the solution of A y = b: A_m^-1 (b_k - A_k y), each into r(i).d[k]
+/// (multi_dual: A_m the value's matrix and y the value; slope: A_m the box's matrix and y the
+/// centre's solution).  A direction in which A and b are exactly constant is skipped (0).
+template <class X, class T, class Solve>
+void solve_derivatives(const matrix_t<X>& A, const vector_t<X>& b, const matrix_t<T>& Am, const vector_t<T>& y,
+                       vector_t<X>& r, Solve&& value_solve) {
+  const Eigen::Index n = A.rows();
+  for (std::size_t k = 0; k < b(0).d.size(); ++k) {
+    bool constant = true;
+    vector_t<T> rhs(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      T x = b(i).d[k];
+      constant = constant && structurally_zero(x);
+      for (Eigen::Index j = 0; j < n; ++j) {
+        if (structurally_zero(A(i, j).d[k])) continue;
+        constant = false;
+        x -= A(i, j).d[k] * y(j);
+      }
+      rhs(i) = x;
+    }
+    if (constant) continue;
+    const vector_t<T> yk = value_solve(Am, rhs);
+    for (Eigen::Index i = 0; i < n; ++i) r(i).d[k] = yk(i);
+  }
+}
 template <class T, int N, class Solve>
 vector_t<multi_dual<T, N>> dual_solve(const matrix_t<multi_dual<T, N>>& A, const vector_t<multi_dual<T, N>>& b,
                                       Solve&& value_solve) {
@@ -40,23 +65,7 @@ vector_t<multi_dual<T, N>> dual_solve(const matrix_t<multi_dual<T, N>>& A, const
   const vector_t<T> y = value_solve(Av, bv);
   vector_t<multi_dual<T, N>> r(n);
   for (Eigen::Index i = 0; i < n; ++i) r(i) = multi_dual<T, N>(y(i));
-  for (std::size_t k = 0; k < static_cast<std::size_t>(N); ++k) {
-    bool constant = true;
-    vector_t<T> rhs(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      T x = b(i).d[k];
-      constant = constant && structurally_zero(x);
-      for (Eigen::Index j = 0; j < n; ++j) {
-        if (structurally_zero(A(i, j).d[k])) continue;
-        constant = false;
-        x -= A(i, j).d[k] * y(j);
-      }
-      rhs(i) = x;
-    }
-    if (constant) continue;
-    const vector_t<T> yk = value_solve(Av, rhs);
-    for (Eigen::Index i = 0; i < n; ++i) r(i).d[k] = yk(i);
-  }
+  solve_derivatives(A, b, Av, y, r, value_solve);
   return r;
 }
 
@@ -77,23 +86,7 @@ vector_t<slope<T, N>> slope_solve(const matrix_t<slope<T, N>>& A, const vector_t
   const vector_t<T> yv = value_solve(Av, bv), yc = value_solve(Ac, bc);
   vector_t<slope<T, N>> r(n);
   for (Eigen::Index i = 0; i < n; ++i) r(i) = slope<T, N>(yv(i), yc(i));
-  for (std::size_t k = 0; k < static_cast<std::size_t>(N); ++k) {
-    bool constant = true;
-    vector_t<T> rhs(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      T x = b(i).d[k];
-      constant = constant && structurally_zero(x);
-      for (Eigen::Index j = 0; j < n; ++j) {
-        if (structurally_zero(A(i, j).d[k])) continue;
-        constant = false;
-        x -= A(i, j).d[k] * yc(j);
-      }
-      rhs(i) = x;
-    }
-    if (constant) continue;
-    const vector_t<T> yk = value_solve(Av, rhs);
-    for (Eigen::Index i = 0; i < n; ++i) r(i).d[k] = yk(i);
-  }
+  solve_derivatives(A, b, Av, yc, r, value_solve);
   return r;
 }
 }  // namespace detail

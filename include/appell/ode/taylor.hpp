@@ -69,6 +69,16 @@ series<S> taylor_series(const P& prob, const vector_t<S>& x0, int p, bool memo =
   return c;
 }
 
+/// Row i of the matrices D[0..k] as n jets of order k: out[j] = sum_m D[m](i, j) t^m.
+template <class I, class Out>
+void derivative_jets(const std::vector<matrix_t<I>>& D, int i, int k, Out& out) {
+  for (std::size_t j = 0; j < out.size(); ++j) {
+    std::vector<I> d(static_cast<std::size_t>(k + 1));
+    for (int m = 0; m <= k; ++m) d[static_cast<std::size_t>(m)] = D[static_cast<std::size_t>(m)](i, static_cast<Eigen::Index>(j));
+    out[j] = jet<I>(std::move(d));
+  }
+}
+
 /// Coefficients over the box X and their Jacobians d x_k / d x0 (dim x dim), k = 0 .. p.
 template <class P, class I>
 void taylor_series_jacobian(const P& prob, const vector_t<I>& X0, int p, series<I>& c, std::vector<matrix_t<I>>& D,
@@ -90,11 +100,7 @@ void taylor_series_jacobian(const P& prob, const vector_t<I>& X0, int p, series<
       std::vector<I> v(static_cast<std::size_t>(k + 1));
       for (int m = 0; m <= k; ++m) v[static_cast<std::size_t>(m)] = c[static_cast<std::size_t>(m)](i);
       X(i).v = jet<I>(std::move(v));
-      for (int j = 0; j < n; ++j) {
-        std::vector<I> d(static_cast<std::size_t>(k + 1));
-        for (int m = 0; m <= k; ++m) d[static_cast<std::size_t>(m)] = D[static_cast<std::size_t>(m)](i, j);
-        X(i).d[static_cast<std::size_t>(j)] = jet<I>(std::move(d));
-      }
+      derivative_jets(D, i, k, X(i).d);
     }
     const vector_t<MD> F = prob.template rhs<MD>(X);
     const I kp1(k + 1);
@@ -136,11 +142,7 @@ void taylor_series_slopes(const P& prob, const vector_t<I>& xh, const vector_t<I
     for (int i = 0; i < n; ++i) {
       X(i).v = jet_of(cv, k, [&](const vector_t<I>& x) { return x(i); });
       X(i).c = jet_of(cc, k, [&](const vector_t<I>& x) { return x(i); });
-      for (int j = 0; j < n; ++j) {
-        std::vector<I> d(static_cast<std::size_t>(k + 1));
-        for (int l = 0; l <= k; ++l) d[static_cast<std::size_t>(l)] = D[static_cast<std::size_t>(l)](i, j);
-        X(i).d[static_cast<std::size_t>(j)] = jet<I>(std::move(d));
-      }
+      derivative_jets(D, i, k, X(i).d);
     }
     const vector_t<SL> F = prob.template rhs<SL>(X);
     const I kp1(k + 1);
