@@ -216,12 +216,6 @@ template <class T, int N> multi_dual<T, N> sqr(const multi_dual<T, N>& x) {
   return multi_dual<T, N>::chain(sqr(x.v), T(2) * x.v, x);
 }
 
-/// multi_dual<T, N> over a scalar T is itself a scalar of the generic path: the
-/// whole pipeline (Appell's equations, Cotton's reactions, the solves) runs on it
-/// and carries N derivatives of every result along, each enclosed as rigorously
-/// as the value (linearize.hpp differentiates the motion so).  It is not itself a
-/// set: its bounds and predicates are those of its value, and the linear solves
-/// go to the overloads in linalg/dual_solve.hpp.
 /// The traits of a scalar that carries derivative parts beside a value `v` (multi_dual, slope):
 /// not a set; bounds and predicates those of the value.
 template <class D, class T>
@@ -237,6 +231,13 @@ struct derivative_carrier_traits {
   static bound_type mid(const D& x) { return scalar_traits<T>::mid(x.v); }
   static bound_type width(const D& x) { return scalar_traits<T>::width(x.v); }
 };
+
+/// multi_dual<T, N> over a scalar T is itself a scalar of the generic path: the
+/// whole pipeline (Appell's equations, Cotton's reactions, the solves) runs on it
+/// and carries N derivatives of every result along, each enclosed as rigorously
+/// as the value (linearize.hpp differentiates the motion so).  It is not itself a
+/// set: its bounds and predicates are those of its value, and the linear solves
+/// go to the overloads in linalg/dual_solve.hpp.
 template <class T, int N>
   requires Scalar<T>
 struct scalar_traits<multi_dual<T, N>> : derivative_carrier_traits<multi_dual<T, N>, T> {

@@ -472,9 +472,9 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     vector_t<I> R(n);
     for (int i = 0; i < n; ++i) R(i) = cpB(i) * hp;
     // T(x) = T_q(x) + H(x), H(x) = sum_{q<k<p} x_k(x) h^k: the slope form on T_q only
-    // (J = sum_{k<=q} S_k h^k, S_k the slope of x_k about xh over X), and H over X as it stands, H(X) from the coefficients
-    // over X: its width, about width(X) |d x_k/dx0| h^k for k > q, is negligible, and the
-    // Jacobians cost O(q^3) instead of O(p^3).
+    // (J = sum_{k<=q} S_k h^k, S_k the slope of x_k about xh over X), and H over X as it stands,
+    // H(X) from the coefficients over X: its width, about width(X) |d x_k/dx0| h^k for k > q, is
+    // negligible, and the slopes cost O(q^3) instead of O(p^3).
     matrix_t<I> J = DX[static_cast<std::size_t>(q)];
     for (int k = q - 1; k >= 0; --k) J = matrix_t<I>(J * h + DX[static_cast<std::size_t>(k)]);
     // zr = xh + rest, rest = (T_q(xh) - xh) + H(X) + R: the motion from the point xh lies in zr.
@@ -492,16 +492,11 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
       // nearer (its dz the smaller): within half an ulp of the set's centre, where mid(zr) is
       // up to one ulp off (zr's bounds each rounded outward).
       const I around = xh(i) + detail::thin_of<I>(scalar_traits<I>::mid(rest(i)));
-      bool first = true;
-      for (const bound_t<I>& candidate : {lower(around), upper(around)}) {
-        const I c = detail::thin_of<I>(candidate);
-        const I d = (xh(i) - c) + rest(i);
-        if (first || detail::mag<I>(d) < detail::mag<I>(dzr(i))) {
-          xhn(i) = c;
-          dzr(i) = d;
-        }
-        first = false;
-      }
+      const I lo = detail::thin_of<I>(lower(around)), hi = detail::thin_of<I>(upper(around));
+      const I dlo = (xh(i) - lo) + rest(i), dhi = (xh(i) - hi) + rest(i);
+      const bool take_hi = detail::mag<I>(dhi) < detail::mag<I>(dlo);
+      xhn(i) = take_hi ? hi : lo;
+      dzr(i) = take_hi ? dhi : dlo;
     }
     bool first_frame = true;
     for (detail::frame<I>& f : frames) {

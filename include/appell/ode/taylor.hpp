@@ -40,6 +40,14 @@ using series = std::vector<vector_t<S>>;  // series[k](i): coefficient k of comp
 template <class S>
 inline constexpr bool jet_memo_pays = !std::is_floating_point_v<S>;
 
+/// Component i of the coefficients c[0..k] as a jet of order k: sum_m c[m](i) t^m.
+template <class S>
+jet<S> component_jet(const series<S>& c, Eigen::Index i, int k) {
+  std::vector<S> a(static_cast<std::size_t>(k + 1));
+  for (int m = 0; m <= k; ++m) a[static_cast<std::size_t>(m)] = c[static_cast<std::size_t>(m)](i);
+  return jet<S>(std::move(a));
+}
+
 /// Coefficients 0 .. p of the solution through x0.  Pass k evaluates the right-hand side on jets
 /// of order k; with `memo` each operation takes its coefficients 0..k-1 from pass k - 1 and
 /// computes only coefficient k (jet.hpp, detail::jet_memo): the same numbers, bit for bit, in
@@ -58,11 +66,7 @@ series<S> taylor_series(const P& prob, const vector_t<S>& x0, int p, bool memo =
   for (int k = 0; k < p; ++k) {
     const jet_order_scope order(k);
     m.begin_pass();
-    for (Eigen::Index i = 0; i < n; ++i) {
-      std::vector<S> ci(static_cast<std::size_t>(k + 1));
-      for (int j = 0; j <= k; ++j) ci[static_cast<std::size_t>(j)] = c[static_cast<std::size_t>(j)](i);
-      X(i) = jet<S>(std::move(ci));
-    }
+    for (Eigen::Index i = 0; i < n; ++i) X(i) = component_jet(c, i, k);
     const vector_t<jet<S>> F = prob.template rhs<jet<S>>(X);
     for (Eigen::Index i = 0; i < n; ++i) c[static_cast<std::size_t>(k + 1)](i) = F(i)[k] / S(k + 1);
   }
@@ -97,9 +101,7 @@ void taylor_series_jacobian(const P& prob, const vector_t<I>& X0, int p, series<
     const jet_order_scope order(k);
     m.begin_pass();
     for (int i = 0; i < n; ++i) {
-      std::vector<I> v(static_cast<std::size_t>(k + 1));
-      for (int m = 0; m <= k; ++m) v[static_cast<std::size_t>(m)] = c[static_cast<std::size_t>(m)](i);
-      X(i).v = jet<I>(std::move(v));
+      X(i).v = component_jet(c, i, k);
       derivative_jets(D, i, k, X(i).d);
     }
     const vector_t<MD> F = prob.template rhs<MD>(X);
@@ -131,17 +133,12 @@ void taylor_series_slopes(const P& prob, const vector_t<I>& xh, const vector_t<I
   vector_t<SL> X(n);
   detail::jet_memo<I> m;
   const detail::jet_memo_scope<I> scope(memo ? &m : nullptr);
-  auto jet_of = [](const series<I>& s, int k, auto&& entry) {
-    std::vector<I> a(static_cast<std::size_t>(k + 1));
-    for (int j = 0; j <= k; ++j) a[static_cast<std::size_t>(j)] = entry(s[static_cast<std::size_t>(j)]);
-    return jet<I>(std::move(a));
-  };
   for (int k = 0; k < p; ++k) {
     const jet_order_scope order(k);
     m.begin_pass();
     for (int i = 0; i < n; ++i) {
-      X(i).v = jet_of(cv, k, [&](const vector_t<I>& x) { return x(i); });
-      X(i).c = jet_of(cc, k, [&](const vector_t<I>& x) { return x(i); });
+      X(i).v = component_jet(cv, i, k);
+      X(i).c = component_jet(cc, i, k);
       derivative_jets(D, i, k, X(i).d);
     }
     const vector_t<SL> F = prob.template rhs<SL>(X);
