@@ -317,3 +317,100 @@ BOOST_AUTO_TEST_CASE(the_taylor_memo_changes_no_digit_of_the_variational_series)
     }
   BOOST_TEST(differ == 0);
 }
+
+namespace {
+/// a and b the same number bit for bit; on jets, every coefficient.
+template <class S>
+bool same_bits(const S& a, const S& b) {
+  if constexpr (requires { a.c; a.size(); }) {
+    if (a.size() != b.size()) return false;
+    for (int k = 0; k < a.size(); ++k)
+      if (!detail::identical(a[k], b[k])) return false;
+    return true;
+  } else {
+    return detail::identical(a, b);
+  }
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(the_right_hand_sides_leave_the_reactions_out_and_change_no_digit) {
+  // The motion's right-hand sides form the free speeds' columns only (cotton_free_accelerations,
+  // cotton_free_motion: 4 directions instead of 7 on the top on its pivot, 3 instead of 4 on the
+  // cone, 3 instead of 7 for the sphere).  Against the accelerations of the full Cotton's method
+  // (what appell eval reports), from random states, in point, interval and jet scalars: bit for bit.
+  std::mt19937_64 rng(20261126);
+  long compared = 0, differ = 0;
+  auto check = [&](const auto& a, const auto& b, const std::string& what) {
+    for (Eigen::Index i = 0; i < a.size(); ++i) {
+      ++compared;
+      if (!same_bits(a(i), b(i))) {
+        ++differ;
+        BOOST_TEST_MESSAGE(what << ": component " << i << " differs");
+      }
+    }
+  };
+  auto all = [&]<class S>(std::type_identity<S>) {
+    using B = base_scalar_t<S>;
+    const evaluation_scope<B> scope;
+    auto lift = [](const vector_t<B>& x) {
+      vector_t<S> y(x.size());
+      for (Eigen::Index i = 0; i < x.size(); ++i) {
+        if constexpr (std::is_same_v<S, B>) {
+          y(i) = x(i);
+        } else {  // a jet: the state plus a random-looking series
+          std::vector<B> c{x(i)};
+          for (int k = 1; k <= jet_order(); ++k) c.push_back(B(0.1 * (k + i)) / B(k * k + 1));
+          y(i) = S(c);
+        }
+      }
+      return y;
+    };
+    for (int trial = 0; trial < 10; ++trial) {
+      {
+        const ode::heavy_top_problem<B> prob{B(1), B(2), B(1), B(1), B(1)};
+        vector_t<B> x0(6);
+        x0 << B(0), B(1), B(0), B(0.5), B(0), B(5);
+        const vector_t<S> x = lift(jittered(x0, rng));
+        const vector_t<S> full =
+            top_on_pivot_cotton(S(1), S(2), S(1), S(1), S(1), top_on_pivot_state<S>{x(0), x(1), x(2), x(3), x(4), x(5)})
+                .free_accelerations;
+        check(vector_t<S>(prob.template rhs<S>(x).tail(3)), full, "heavy_top");
+      }
+      {
+        vector_t<B> x0;
+        const scene_input scene = scene_file("top_on_cone.json");
+        const auto prob = cone_problem<B>(scene, x0);
+        const vector_t<S> x = lift(jittered(x0, rng));
+        const vector_t<S> full = top_on_cone_cotton(prob.template top_in<S>(), prob.cone, prob.state(x)).free_accelerations;
+        check(vector_t<S>(prob.template rhs<S>(x).tail(2)), full, "top_on_cone");
+      }
+      for (const char* file : {"rolling_sphere_bowl.json", "rolling_sphere_plane.json", "rolling_sphere_pipe.json"}) {
+        vector_t<B> x0;
+        const scene_input scene = scene_file(file);
+        const auto prob = sphere_problem<B>(scene, x0);
+        vector_t<B> xb = x0;
+        for (int i = 3; i < 6; ++i) xb(i) = jittered(x0, rng)(i);
+        const vector_t<S> x = lift(xb);
+        const auto with = prob.template motion<S>(x, false, true), without = prob.template motion<S>(x, false, false);
+        check(with.center_velocity, without.center_velocity, file);
+        check(with.omega_dot, without.omega_dot, file);
+        check(with.center_ddot, without.center_ddot, file);
+      }
+    }
+  };
+  all(std::type_identity<double>{});
+  all(std::type_identity<interval>{});
+  all(std::type_identity<dd>{});
+  {
+    const mp_precision_scope bits(200);
+    all(std::type_identity<mpfi>{});
+  }
+  {
+    const jet_order_scope order(6);
+    all(std::type_identity<jet<interval>>{});
+    all(std::type_identity<jet<double>>{});
+  }
+  BOOST_TEST_MESSAGE("right-hand sides without reactions: " << compared << " values compared, " << differ << " differ");
+  BOOST_TEST(compared == 6 * 10 * (3 + 2 + 3 * 9));  // 6 scalars, 10 states, 32 values each
+  BOOST_TEST(differ == 0);
+}

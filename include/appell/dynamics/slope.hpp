@@ -42,12 +42,12 @@ struct slope {
   T c;                 ///< at the centre
   std::array<T, N> d;  ///< slopes along the N variables
 
-  slope() : v(0), c(0) { d.fill(T(0)); }
-  slope(const T& value) : v(value), c(value) { d.fill(T(0)); }  // NOLINT: constants convert implicitly
+  slope() : v(0), c(0) { zero_fill(d); }
+  slope(const T& value) : v(value), c(value) { zero_fill(d); }  // NOLINT: constants convert implicitly
   template <class X>
     requires std::is_arithmetic_v<X>
-  slope(X n) : v(T(n)), c(T(n)) { d.fill(T(0)); }  // NOLINT
-  slope(const T& box, const T& centre) : v(box), c(centre) { d.fill(T(0)); }
+  slope(X n) : v(T(n)), c(T(n)) { zero_fill(d); }  // NOLINT
+  slope(T box, T centre) : v(std::move(box)), c(std::move(centre)) { zero_fill(d); }  // by value: temporaries move in
 
   slope& operator+=(const slope& o) { v += o.v; c += o.c; for (int i = 0; i < N; ++i) d[i] += o.d[i]; return *this; }
   slope& operator-=(const slope& o) { v -= o.v; c -= o.c; for (int i = 0; i < N; ++i) d[i] -= o.d[i]; return *this; }

@@ -41,15 +41,15 @@ namespace appell {
 template <class S>
 struct body_state {
   S mass = S(0);
-  mat3<S> inertia = mat3<S>::Zero();  ///< central inertia tensor, components on F
-  vec3<S> velocity = vec3<S>::Zero();  ///< of the centre of mass, on F
-  vec3<S> omega = vec3<S>::Zero();     ///< angular velocity of the body, on F
-  vec3<S> frame_rate = vec3<S>::Zero();  ///< angular velocity of F (0: F is fixed)
+  mat3<S> inertia = zero_matrix<mat3<S>>();  ///< central inertia tensor, components on F
+  vec3<S> velocity = zero_matrix<vec3<S>>();  ///< of the centre of mass, on F
+  vec3<S> omega = zero_matrix<vec3<S>>();     ///< angular velocity of the body, on F
+  vec3<S> frame_rate = zero_matrix<vec3<S>>();  ///< angular velocity of F (0: F is fixed)
   /// F is the body's own frame (frame_rate is omega itself): frame_rate x omega is then exactly 0,
   /// not an interval cross product of omega with itself (whose width is not 0).
   bool frame_is_body = false;
-  vec3<S> force = vec3<S>::Zero();     ///< applied force through G, on F
-  vec3<S> couple = vec3<S>::Zero();    ///< applied couple, on F
+  vec3<S> force = zero_matrix<vec3<S>>();     ///< applied force through G, on F
+  vec3<S> couple = zero_matrix<vec3<S>>();    ///< applied couple, on F
 };
 
 template <class Sys, class T>
@@ -154,9 +154,9 @@ vec3<T> derivative(const vec3<multi_dual<T, N>>& x, int slot) {
 /// numbers, bit for bit (tests/generic_path.cpp).  N >= k + 1 takes one evaluation.
 template <int N, class T, class Sys>
 std::vector<body_kinematics<T>> differentiate_kinematics_in_slots(const Sys& sys, const vector_t<T>& q,
-                                                                  const vector_t<T>& u, const T& t) {
+                                                                  const vector_t<T>& u, const T& t, int cols = -1) {
   using D = multi_dual<T, N>;
-  const int k = sys.speeds();
+  const int k = cols < 0 ? sys.speeds() : cols;  // the columns of J differentiated: speeds 0 .. k - 1
   const vector_t<T> qd = sys.template qdot<T>(q, u, t);
   std::vector<body_kinematics<T>> out;
   std::vector<body_state<D>> d;
@@ -170,7 +170,7 @@ std::vector<body_kinematics<T>> differentiate_kinematics_in_slots(const Sys& sys
     }
     for (Eigen::Index i = 0; i < u.size(); ++i) {
       us(i) = D(u(i));
-      if (i >= first && i < first + N) us(i).d[static_cast<std::size_t>(i - first)] = T(1);
+      if (i >= first && i < first + N && i < k) us(i).d[static_cast<std::size_t>(i - first)] = T(1);
     }
     D ts(t);
     if (has_c) ts.d[c_slot] = T(1);
@@ -316,6 +316,19 @@ appell_equations<T> assemble(const std::vector<body_kinematics<T>>& bodies, int 
 template <Scalar T, class Sys>
 appell_equations<T> gibbs_appell(const Sys& sys, const vector_t<T>& q, const vector_t<T>& u, const T& t) {
   return assemble(differentiate_kinematics(sys, q, u, t), sys.speeds());
+}
+
+/// The first `cols` rows and columns of Appell's equations at (q, u, t): M's leading block, and
+/// b and Q's leading rows, the same numbers bit for bit as gibbs_appell's (each derivative slot
+/// repeats the same operations), with only speeds 0 .. cols - 1 varied, in one evaluation on
+/// multi_dual<T, Slots> when cols < Slots.  What the motion of a constrained system needs when
+/// its reactions are not asked for (reactions/cotton.hpp: cotton_free_accelerations): the
+/// constrained speeds' columns cost derivative slots in every quantity of the kinematics.
+template <int Slots, Scalar T, class Sys>
+appell_equations<T> gibbs_appell_leading(const Sys& sys, const vector_t<T>& q, const vector_t<T>& u, const T& t,
+                                         int cols) {
+  if (cols < 0 || cols > sys.speeds()) throw std::invalid_argument("gibbs_appell_leading: cols out of range");
+  return assemble(detail::differentiate_kinematics_in_slots<Slots>(sys, q, u, t, cols), cols);
 }
 
 }  // namespace appell

@@ -91,9 +91,11 @@ struct heavy_top_problem {
   }
   template <class S>
   vector_t<S> rhs(const vector_t<S>& x) const {
-    const cotton_result<S> c = cotton(x);
+    // The accelerations alone (no pivot force): 4 directions differentiated instead of 7.
+    const vector_t<S> a = top_on_pivot_accelerations(S(A), S(C), S(mass), S(l), S(g),
+                                                     top_on_pivot_state<S>{x(0), x(1), x(2), x(3), x(4), x(5)});
     vector_t<S> d(6);
-    d << x(3), x(4), x(5), c.free_accelerations(0), c.free_accelerations(1), c.free_accelerations(2);
+    d << x(3), x(4), x(5), a(0), a(1), a(2);
     return d;
   }
   template <class S>
@@ -139,9 +141,9 @@ struct top_on_cone_problem {
   }
   template <class S>
   vector_t<S> rhs(const vector_t<S>& x) const {
-    const cotton_result<S> c = top_on_cone_cotton(top_in<S>(), cone, state(x));
+    const vector_t<S> a = top_on_cone_accelerations(top_in<S>(), cone, state(x));  // without H
     vector_t<S> d(4);
-    d << x(2), x(3), c.free_accelerations(0), c.free_accelerations(1);
+    d << x(2), x(3), a(0), a(1);
     return d;
   }
   /// psi and psi' (the cone's), the accelerations and H (Cotton's reaction: the couple's moment
@@ -175,15 +177,15 @@ struct rolling_sphere_problem {
     return {"center_x", "center_y", "center_z", "omega_x", "omega_y", "omega_z"};
   }
   template <class S>
-  rolling_sphere_result<S> motion(const vector_t<S>& x, bool checks) const {
+  rolling_sphere_result<S> motion(const vector_t<S>& x, bool checks, bool reactions = true) const {
     const rolling_surface<S> surf{surface.type, surface.inside, S(surface.b), S(surface.spin)};
     const vec3<S> F(S(force(0)), S(force(1)), S(force(2))), tau(S(torque(0)), S(torque(1)), S(torque(2)));
     return rolling_sphere_motion<S>(S(mass), S(A), S(a), surf, vec3<S>(x(0), x(1), x(2)), vec3<S>(x(3), x(4), x(5)), F,
-                                    tau, checks);
+                                    tau, checks, reactions);
   }
   template <class S>
   vector_t<S> rhs(const vector_t<S>& x) const {
-    const rolling_sphere_result<S> r = motion(x, false);
+    const rolling_sphere_result<S> r = motion(x, false, false);  // no reaction: 3 directions, not 7
     vector_t<S> d(6);
     d << r.center_velocity(0), r.center_velocity(1), r.center_velocity(2), r.omega_dot(0), r.omega_dot(1), r.omega_dot(2);
     return d;
@@ -207,7 +209,7 @@ struct rolling_sphere_problem {
     using std::sqrt;
     const vec3<S> c(x(0), x(1), x(2)), w(x(3), x(4), x(5));
     if (exactly_zero(torque(0)) && exactly_zero(torque(1)) && exactly_zero(torque(2))) {
-      const rolling_sphere_result<S> r = motion(x, false);
+      const rolling_sphere_result<S> r = motion(x, false, false);
       const vec3<S> F(S(force(0)), S(force(1)), S(force(2)));
       out.push_back({"energy", {(S(mass) * dot(r.center_velocity, r.center_velocity) + S(A) * dot(w, w)) / S(2) - dot(F, c)}});
     }

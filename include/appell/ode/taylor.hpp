@@ -118,10 +118,11 @@ void taylor_series_jacobian(const P& prob, const vector_t<I>& X0, int p, series<
 /// side on slope<jet<I>, dim>: the recursion of taylor_series_jacobian, with each quantity carried
 /// over the box, at the centre and by its slopes.  xh must lie in X0 (enclose passes their hull).
 /// D[k] lies inside the Jacobian d x_k / d x0 (X0) and has about half its width where the
-/// right-hand side is quadratic (Euler's equations).
+/// right-hand side is quadratic (Euler's equations).  `centre`, if given, receives the coefficients
+/// at xh, k = 0 .. p (the slopes' centre values: the evaluation computes them anyway).
 template <class P, class I>
 void taylor_series_slopes(const P& prob, const vector_t<I>& xh, const vector_t<I>& X0, int p,
-                          std::vector<matrix_t<I>>& D, bool memo = true) {
+                          std::vector<matrix_t<I>>& D, bool memo = true, series<I>* centre = nullptr) {
   constexpr int n = P::dim;
   using SL = slope<jet<I>, n>;
   series<I> cv(static_cast<std::size_t>(p + 1), vector_t<I>(n)), cc(static_cast<std::size_t>(p + 1), vector_t<I>(n));
@@ -149,6 +150,7 @@ void taylor_series_slopes(const P& prob, const vector_t<I>& xh, const vector_t<I
       for (int j = 0; j < n; ++j) D[static_cast<std::size_t>(k + 1)](i, j) = F(i).d[static_cast<std::size_t>(j)][k] / kp1;
     }
   }
+  if (centre) *centre = std::move(cc);
 }
 
 /// sum_k c_k tau^k, k = first .. last (Horner).

@@ -44,12 +44,45 @@ cotton_result<T> cotton_reactions(const Sys& sys, const vector_t<T>& q, const ve
   return r;
 }
 
+/// cotton_reactions' free accelerations v_a' alone, the same numbers bit for bit, without the
+/// reactions: only the free speeds' columns of the equations are formed (gibbs_appell_leading,
+/// one evaluation on multi_dual<T, Slots>, Slots >= k + 1).  For the motion (ode/problems.hpp),
+/// whose right-hand side needs no reaction: the heavy top on its pivot differentiates 4
+/// directions instead of 7.
+template <int Slots, Scalar T, class Sys>
+vector_t<T> cotton_free_accelerations(const Sys& sys, const vector_t<T>& q, const vector_t<T>& v_a, const T& t, int s) {
+  const int k = static_cast<int>(v_a.size()), n = k + s;
+  if (sys.speeds() != n) throw std::invalid_argument("cotton_free_accelerations: k + s differs from the system's speeds");
+  vector_t<T> v = vector_t<T>::Zero(n);
+  v.head(k) = v_a;  // (12): v_c = 0
+  const appell_equations<T> e = gibbs_appell_leading<Slots>(sys, q, v, t, k);
+  return solve_spd(e.M, vector_t<T>(e.Q - e.b));
+}
+
 /// Result in the original speeds u of a system with constraints A u = a.
 template <Scalar T>
 struct constrained_motion {
   vector_t<T> accelerations;  ///< u', consistent with the constraints
   vector_t<T> reactions;      ///< Q'_c (Cotton) or lambda (Lagrange), one per constraint
 };
+
+namespace detail {
+/// u' = d/dt u(q, v, t) with v' = (v_a', 0): one dual pass through the change of speeds.
+template <Scalar T, class Adapted, class Change>
+vector_t<T> original_accelerations(const Adapted& adapted, const Change& change, const vector_t<T>& q,
+                                   const vector_t<T>& v_a, const vector_t<T>& v_a_dot, const T& t) {
+  const int n = adapted.speeds(), k = static_cast<int>(v_a.size());
+  vector_t<T> v = vector_t<T>::Zero(n), vdot = vector_t<T>::Zero(n);
+  v.head(k) = v_a;
+  vdot.head(k) = v_a_dot;
+  const vector_t<T> qd = adapted.template qdot<T>(q, v, t);
+  const vector_t<dual<T>> ud = change.template apply<dual<T>>(detail::seeded<T>(q, &qd), detail::seeded<T>(v, &vdot),
+                                                              dual<T>(t, T(1)));
+  vector_t<T> udot(n);
+  for (int i = 0; i < n; ++i) udot(i) = ud(i).d;
+  return udot;
+}
+}  // namespace detail
 
 /// Cotton's method in given adapted speeds (adapted_change): u' in the original
 /// speeds, and the reactions Q'_c.  If adapted_equations is given it receives the
@@ -64,17 +97,21 @@ constrained_motion<T> cotton_reactions(const Sys& sys, const adapted_change<Cons
   vector_t<T> v_a(k);
   for (int i = 0; i < k; ++i) v_a(i) = u(change.free_columns[static_cast<std::size_t>(i)]);
   const cotton_result<T> c = cotton_reactions(adapted, q, v_a, t, s);
-  // u' = d/dt u(q, v, t) with v' = (v_a', 0): one dual pass through the change.
-  vector_t<T> v = vector_t<T>::Zero(n), vdot = vector_t<T>::Zero(n);
-  v.head(k) = v_a;
-  vdot.head(k) = c.free_accelerations;
-  const vector_t<T> qd = adapted.template qdot<T>(q, v, t);
-  const vector_t<dual<T>> ud = change.template apply<dual<T>>(detail::seeded<T>(q, &qd), detail::seeded<T>(v, &vdot),
-                                                              dual<T>(t, T(1)));
-  vector_t<T> udot(n);
-  for (int i = 0; i < n; ++i) udot(i) = ud(i).d;
   if (adapted_equations) *adapted_equations = c.equations;
-  return {udot, c.reactions};
+  return {detail::original_accelerations(adapted, change, q, v_a, c.free_accelerations, t), c.reactions};
+}
+
+/// cotton_reactions' u' alone, the same numbers bit for bit, without the reactions (empty): the
+/// free speeds' columns only (cotton_free_accelerations), for the motion's right-hand side.
+template <int Slots, Scalar T, class Sys, class Constraint>
+vector_t<T> cotton_free_motion(const Sys& sys, const adapted_change<Constraint>& change, const vector_t<T>& q,
+                               const vector_t<T>& u, const T& t) {
+  const int n = sys.speeds(), s = change.con.count(), k = n - s;
+  const auto adapted = change_speeds(sys, change, n);
+  vector_t<T> v_a(k);
+  for (int i = 0; i < k; ++i) v_a(i) = u(change.free_columns[static_cast<std::size_t>(i)]);
+  const vector_t<T> free_acc = cotton_free_accelerations<Slots>(adapted, q, v_a, t, s);
+  return detail::original_accelerations(adapted, change, q, v_a, free_acc, t);
 }
 
 /// Cotton's method for constraints given as A(q,t) u = a(q,t); the library

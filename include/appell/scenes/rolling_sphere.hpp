@@ -153,12 +153,16 @@ struct rolling_sphere_result {
 /// Example II at centre c and rotation omega (fixed axes), with applied force
 /// F_total (weight included) through G and couple tau, on the fixed axes.  Without
 /// `checks` the Lagrange multipliers and eq. (4) are left out (multipliers empty,
-/// virtual_work_residual 0): the motion over time needs neither (ode/problems.hpp).
+/// virtual_work_residual 0): the motion over time needs neither (ode/problems.hpp).  Without
+/// `reactions` (which needs `checks` off) the contact force and the pivoting couple are left 0 too:
+/// the free speeds' columns alone are formed (cotton_free_motion), the accelerations the same bit
+/// for bit; the motion's right-hand side.
 template <Scalar T>
 rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const T& a,
                                                const rolling_surface<T>& surface, const vec3<T>& c,
                                                const vec3<T>& omega, const vec3<T>& F_total, const vec3<T>& tau,
-                                               bool checks = true) {
+                                               bool checks = true, bool reactions = true) {
+  if (checks && !reactions) throw std::invalid_argument("rolling_sphere_motion: the checks need the reactions");
   using std::sqrt;
   rolling_sphere_result<T> r;
   r.axes = surface.frame(c);
@@ -171,7 +175,9 @@ rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const 
   const rolling_constraint<T> con{a};
   const auto change = adapt_speeds_keeping(con, 6, {3, 4});  // eq. (23): free speeds p, q
   appell_equations<T> adapted_eq;  // Cotton's speeds (p, q, u_1, v_1, w, r), for eq. (4) below
-  const constrained_motion<T> m = cotton_reactions(sys, change, q, u, t, &adapted_eq);
+  const constrained_motion<T> m =
+      reactions ? cotton_reactions(sys, change, q, u, t, &adapted_eq)
+                : constrained_motion<T>{cotton_free_motion<3>(sys, change, q, u, t), vector_t<T>::Zero(4)};
   r.speeds_dot = m.accelerations;
   r.reactions = m.reactions;
   if (checks) r.multipliers = lagrange_multipliers(sys, con, q, u, t).reactions;

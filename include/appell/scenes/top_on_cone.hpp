@@ -252,6 +252,19 @@ cotton_result<T> top_on_cone_cotton(const heavy_top<T, Angles>& top, const Cone&
   return cotton_reactions(sys, q, v_a, T(0), 1);
 }
 
+/// top_on_cone_cotton's (theta'', phi'') alone, bit for bit, without H: the right-hand side of
+/// the motion (ode/problems.hpp).
+template <Scalar T, class Angles, class Cone>
+vector_t<T> top_on_cone_accelerations(const heavy_top<T, Angles>& top, const Cone& cone, const top_on_cone_state<T>& s) {
+  vector_t<T> q(3);
+  q << s.psi, s.theta, s.phi;
+  const heavy_top_resal<T, Angles> resal{top.A, top.C, top.mass, top.l, top.g};
+  const auto sys = change_speeds(resal, cone_speeds<Cone>{&cone}, 3);
+  vector_t<T> v_a(2);
+  v_a << s.theta_dot, s.phi_dot;
+  return cotton_free_accelerations<3>(sys, q, v_a, T(0), 1);
+}
+
 /// Without `couple_and_checks` only the accelerations and H are formed (couple, eq. (4) and
 /// Lagrange's check left 0): the motion over time (ode/problems.hpp) encloses them over a whole
 /// step, where the couple's 3 x 3 solve over the step's box need not be certifiable.

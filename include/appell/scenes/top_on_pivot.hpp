@@ -122,6 +122,18 @@ cotton_result<T> top_on_pivot_cotton(const T& A, const T& C, const T& mass, cons
   return cotton_reactions(sys, q, v_a, T(0), 3);
 }
 
+/// top_on_pivot_cotton's (psi'', theta'', phi'') alone, bit for bit, without the pivot force:
+/// the right-hand side of the motion (ode/problems.hpp), which needs no reaction.
+template <Scalar T>
+vector_t<T> top_on_pivot_accelerations(const T& A, const T& C, const T& mass, const T& l, const T& g,
+                                       const top_on_pivot_state<T>& s) {
+  const free_top_resal<T> sys{A, C, mass, l, g};
+  vector_t<T> q(6), v_a(3);
+  q << s.psi, s.theta, s.phi, T(0), T(0), T(0);
+  v_a << s.psi_dot, s.theta_dot, s.phi_dot;
+  return cotton_free_accelerations<4>(sys, q, v_a, T(0), 3);
+}
+
 /// The heavy top on its pivot: Cotton's method from the free body, and the
 /// Lagrange multipliers of the free body on the fixed axes as the check.
 template <Scalar T>
