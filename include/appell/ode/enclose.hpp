@@ -26,7 +26,7 @@
 //     an affine form x in xh_j + C_j e, e in [-1, 1]^N (detail::affine_set, as
 //     Kashiwagi's kv), keeps each step's error zr - xh_{j+1} and the width of
 //     J C_j as new symbols, carried by later Jacobians without wrapping; beyond
-//     300 symbols per component the smaller half is merged into a
+//     3000 symbols per component the smaller half is merged into a
 //     parallelotope.  Measured (bench/enclose_vs_kv.cpp): 1.2 to 18 times
 //     tighter than the two frames alone on Euler's body, the heavy top and the
 //     pendulum.  The box kept is the intersection of the box, of both
@@ -157,31 +157,34 @@ bound_t<I> mag(const I& x) {
 /// For the affine set's step in interval<double>: with J in [Jm - Jr, Jm + Jr] and a point
 /// matrix C, G = RU(Jm C) and, for row i, e_i >= sum_c (|G - J* C|)_ic for every J* in J:
 /// G - Jm C <= RU(Jm C) + RU((-Jm) C) and |Jm C - J* C| <= |Jr| |C|; abs_sum_i >= sum_c |G_ic|.  Products by
-/// rump_products (transposed: C^T Jm^T), every operation rounded up in one scope; 2 n^2 N
+/// the sums of rump_products, fused over the columns of C, every operation rounded up in one scope; 2 n^2 N
 /// double operations where interval products would take n^2 N interval ones.
 [[gnu::noinline]] inline void affine_product_up(const Eigen::MatrixXd& Jm, const Eigen::MatrixXd& Jr,
                                                 const Eigen::MatrixXd& C, Eigen::MatrixXd& G, Eigen::VectorXd& e,
                                                 Eigen::VectorXd& abs_sum) {
+  // rump_products' three sums (linalg/solve.hpp), fused, column by column of C: no N x n
+  // temporaries (five of them, 0.6 MB a step at 16000 symbols, cost more than the products).
   const Eigen::Index n = C.rows(), N = C.cols();
-  Eigen::MatrixXd up(N, n), neg_down(N, n), rad(N, n);
-  const Eigen::MatrixXd Ct = C.transpose(), Jmt = Jm.transpose(), Jrt = Jr.transpose();
+  G.resize(n, N);
   e.setZero(n);
   abs_sum.setZero(n);
   {
     const upward_rounding mode;
-    appell::detail::rump_products(Ct, Jmt, Jrt, up, neg_down, rad);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      double s = 0, a = 0;
-      for (Eigen::Index c = 0; c < N; ++c) {
-        s += interval_arith::opaque(up(c, i) + neg_down(c, i)) + rad(c, i);
-        a += std::fabs(up(c, i));
+    for (Eigen::Index c = 0; c < N; ++c)
+      for (Eigen::Index i = 0; i < n; ++i) {
+        double u = 0, d = 0, r = 0;  // RU(Jm C), RU((-Jm) C) = -RD(Jm C), RU(Jr |C|): each rounded up
+        for (Eigen::Index k = 0; k < n; ++k) {
+          const double a = C(k, c);
+          u += a * Jm(i, k);
+          d += (-a) * Jm(i, k);
+          r += std::abs(a) * Jr(i, k);
+        }
+        G(i, c) = u;
+        e(i) += interval_arith::opaque(u + d) + r;
+        abs_sum(i) += std::fabs(u);
       }
-      e(i) = s;
-      abs_sum(i) = a;
-    }
-    asm volatile("" : : "r"(e.data()), "r"(abs_sum.data()) : "memory");
+    asm volatile("" : : "r"(G.data()), "r"(e.data()), "r"(abs_sum.data()) : "memory");
   }
-  G = up.transpose();
 }
 
 /// The set of states as an affine form (affine arithmetic, as in Kashiwagi's kv):
@@ -327,8 +330,11 @@ struct affine_set {
 };
 }  // namespace detail
 
-/// How many affine symbols a step keeps, per state component (enclose's affine set).
-inline constexpr int affine_symbols_per_component = 300;
+/// How many affine symbols a step keeps, per state component (enclose's affine set).  Measured
+/// (appell_bench_enclose, the heavy top to T = 100, 2801 steps): 300 gave 3.85 times kv's width,
+/// 1000 2.88, 3000 (no merge in that run) 1.88, at 20.2, 21.3 and 21 s; the pendulum to T = 1000
+/// and Euler's body to T = 1000 kept their widths within 1% and took 4% and 7% longer.
+inline constexpr int affine_symbols_per_component = 3000;
 
 /// Encloses the motion of prob from the box x0 over [0, t_end]; calls `emit` for every step.
 template <class P, class I>
