@@ -241,28 +241,35 @@ struct top_on_cone_result {
 /// of the scene has psi = f(theta).
 /// Cotton's method alone (the accelerations theta'', phi'' and H): what the motion needs
 /// (ode/problems.hpp); top_on_cone_motion adds the couple and the checks.
-template <Scalar T, class Angles, class Cone>
-cotton_result<T> top_on_cone_cotton(const heavy_top<T, Angles>& top, const Cone& cone, const top_on_cone_state<T>& s) {
+namespace detail {
+/// f(sys, q, v_a): the top in Cotton's speeds on the cone (theta', phi' free, the cone's speed
+/// constrained), at state s.
+template <Scalar T, class Angles, class Cone, class F>
+auto on_cone_speeds(const heavy_top<T, Angles>& top, const Cone& cone, const top_on_cone_state<T>& s, F&& f) {
   vector_t<T> q(3);
   q << s.psi, s.theta, s.phi;
   const heavy_top_resal<T, Angles> resal{top.A, top.C, top.mass, top.l, top.g};
   const auto sys = change_speeds(resal, cone_speeds<Cone>{&cone}, 3);
   vector_t<T> v_a(2);
   v_a << s.theta_dot, s.phi_dot;
-  return cotton_reactions(sys, q, v_a, T(0), 1);
+  return f(sys, q, v_a);
+}
+}  // namespace detail
+
+template <Scalar T, class Angles, class Cone>
+cotton_result<T> top_on_cone_cotton(const heavy_top<T, Angles>& top, const Cone& cone, const top_on_cone_state<T>& s) {
+  return detail::on_cone_speeds(top, cone, s, [](const auto& sys, const vector_t<T>& q, const vector_t<T>& v_a) {
+    return cotton_reactions(sys, q, v_a, T(0), 1);
+  });
 }
 
 /// top_on_cone_cotton's (theta'', phi'') alone, bit for bit, without H: the right-hand side of
 /// the motion (ode/problems.hpp).
 template <Scalar T, class Angles, class Cone>
 vector_t<T> top_on_cone_accelerations(const heavy_top<T, Angles>& top, const Cone& cone, const top_on_cone_state<T>& s) {
-  vector_t<T> q(3);
-  q << s.psi, s.theta, s.phi;
-  const heavy_top_resal<T, Angles> resal{top.A, top.C, top.mass, top.l, top.g};
-  const auto sys = change_speeds(resal, cone_speeds<Cone>{&cone}, 3);
-  vector_t<T> v_a(2);
-  v_a << s.theta_dot, s.phi_dot;
-  return cotton_free_accelerations<3>(sys, q, v_a, T(0), 1);
+  return detail::on_cone_speeds(top, cone, s, [](const auto& sys, const vector_t<T>& q, const vector_t<T>& v_a) {
+    return cotton_free_accelerations<3>(sys, q, v_a, T(0), 1);
+  });
 }
 
 /// Without `couple_and_checks` only the accelerations and H are formed (couple, eq. (4) and

@@ -109,6 +109,22 @@ struct top_on_pivot_result {
   T psi_ddot_lagrange, theta_ddot_lagrange, phi_ddot_lagrange;
 };
 
+namespace detail {
+/// The free top's positions (Euler angles, then the pivot at the origin) and its free speeds.
+template <Scalar T>
+vector_t<T> pivot_positions(const top_on_pivot_state<T>& s) {
+  vector_t<T> q(6);
+  q << s.psi, s.theta, s.phi, T(0), T(0), T(0);
+  return q;
+}
+template <Scalar T>
+vector_t<T> pivot_free_speeds(const top_on_pivot_state<T>& s) {
+  vector_t<T> v_a(3);
+  v_a << s.psi_dot, s.theta_dot, s.phi_dot;
+  return v_a;
+}
+}  // namespace detail
+
 /// Cotton's method on the free top with the pivot as its last three speeds:
 /// (psi'', theta'', phi'') and the pivot force (fixed axes).  What `appell eval`
 /// reports, and what `appell simulate` / `enclose` run on jets.
@@ -116,10 +132,7 @@ template <Scalar T>
 cotton_result<T> top_on_pivot_cotton(const T& A, const T& C, const T& mass, const T& l, const T& g,
                                      const top_on_pivot_state<T>& s) {
   const free_top_resal<T> sys{A, C, mass, l, g};
-  vector_t<T> q(6), v_a(3);
-  q << s.psi, s.theta, s.phi, T(0), T(0), T(0);
-  v_a << s.psi_dot, s.theta_dot, s.phi_dot;
-  return cotton_reactions(sys, q, v_a, T(0), 3);
+  return cotton_reactions(sys, detail::pivot_positions(s), detail::pivot_free_speeds(s), T(0), 3);
 }
 
 /// top_on_pivot_cotton's (psi'', theta'', phi'') alone, bit for bit, without the pivot force:
@@ -128,10 +141,7 @@ template <Scalar T>
 vector_t<T> top_on_pivot_accelerations(const T& A, const T& C, const T& mass, const T& l, const T& g,
                                        const top_on_pivot_state<T>& s) {
   const free_top_resal<T> sys{A, C, mass, l, g};
-  vector_t<T> q(6), v_a(3);
-  q << s.psi, s.theta, s.phi, T(0), T(0), T(0);
-  v_a << s.psi_dot, s.theta_dot, s.phi_dot;
-  return cotton_free_accelerations<4>(sys, q, v_a, T(0), 3);
+  return cotton_free_accelerations<4>(sys, detail::pivot_positions(s), detail::pivot_free_speeds(s), T(0), 3);
 }
 
 /// The heavy top on its pivot: Cotton's method from the free body, and the
@@ -143,9 +153,7 @@ top_on_pivot_result<T> top_on_pivot_motion(const T& A, const T& C, const T& mass
   top_on_pivot_result<T> r;
   {
     const free_top_resal<T> sys{A, C, mass, l, g};
-    vector_t<T> q(6), v_a(3);
-    q << s.psi, s.theta, s.phi, T(0), T(0), T(0);
-    v_a << s.psi_dot, s.theta_dot, s.phi_dot;
+    const vector_t<T> q = detail::pivot_positions(s), v_a = detail::pivot_free_speeds(s);
     const cotton_result<T> c = top_on_pivot_cotton(A, C, mass, l, g, s);
     r.psi_ddot = c.free_accelerations(0);
     r.theta_ddot = c.free_accelerations(1);
