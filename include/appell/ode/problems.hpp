@@ -85,15 +85,17 @@ struct heavy_top_problem {
     return {"psi", "theta", "phi", "psi_dot", "theta_dot", "phi_dot"};
   }
   template <class S>
+  static top_on_pivot_state<S> state(const vector_t<S>& x) {
+    return {x(0), x(1), x(2), x(3), x(4), x(5)};
+  }
+  template <class S>
   cotton_result<S> cotton(const vector_t<S>& x) const {
-    return top_on_pivot_cotton(S(A), S(C), S(mass), S(l), S(g),
-                               top_on_pivot_state<S>{x(0), x(1), x(2), x(3), x(4), x(5)});
+    return top_on_pivot_cotton(S(A), S(C), S(mass), S(l), S(g), state(x));
   }
   template <class S>
   vector_t<S> rhs(const vector_t<S>& x) const {
     // The accelerations alone (no pivot force): 4 directions differentiated instead of 7.
-    const vector_t<S> a = top_on_pivot_accelerations(S(A), S(C), S(mass), S(l), S(g),
-                                                     top_on_pivot_state<S>{x(0), x(1), x(2), x(3), x(4), x(5)});
+    const vector_t<S> a = top_on_pivot_accelerations(S(A), S(C), S(mass), S(l), S(g), state(x));
     vector_t<S> d(6);
     d << x(3), x(4), x(5), a(0), a(1), a(2);
     return d;

@@ -177,7 +177,7 @@ rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const 
   appell_equations<T> adapted_eq;  // Cotton's speeds (p, q, u_1, v_1, w, r), for eq. (4) below
   const constrained_motion<T> m =
       reactions ? cotton_reactions(sys, change, q, u, t, &adapted_eq)
-                : constrained_motion<T>{cotton_free_motion<3>(sys, change, q, u, t), vector_t<T>::Zero(4)};
+                : constrained_motion<T>{cotton_free_motion<3>(sys, change, q, u, t), vector_t<T>::Zero(con.count())};
   r.speeds_dot = m.accelerations;
   r.reactions = m.reactions;
   if (checks) r.multipliers = lagrange_multipliers(sys, con, q, u, t).reactions;

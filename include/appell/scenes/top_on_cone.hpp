@@ -239,8 +239,6 @@ struct top_on_cone_result {
 /// independent route.  psi need not equal f(theta) for the algebra (the
 /// dynamics does not depend on psi: rotations about the vertical), but a state
 /// of the scene has psi = f(theta).
-/// Cotton's method alone (the accelerations theta'', phi'' and H): what the motion needs
-/// (ode/problems.hpp); top_on_cone_motion adds the couple and the checks.
 namespace detail {
 /// f(sys, q, v_a): the top in Cotton's speeds on the cone (theta', phi' free, the cone's speed
 /// constrained), at state s.
@@ -256,6 +254,8 @@ auto on_cone_speeds(const heavy_top<T, Angles>& top, const Cone& cone, const top
 }
 }  // namespace detail
 
+/// Cotton's method alone (the accelerations theta'', phi'' and H): what the motion's results
+/// need (ode/problems.hpp); top_on_cone_motion adds the couple and the checks.
 template <Scalar T, class Angles, class Cone>
 cotton_result<T> top_on_cone_cotton(const heavy_top<T, Angles>& top, const Cone& cone, const top_on_cone_state<T>& s) {
   return detail::on_cone_speeds(top, cone, s, [](const auto& sys, const vector_t<T>& q, const vector_t<T>& v_a) {

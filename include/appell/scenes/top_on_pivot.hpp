@@ -127,7 +127,8 @@ vector_t<T> pivot_free_speeds(const top_on_pivot_state<T>& s) {
 
 /// Cotton's method on the free top with the pivot as its last three speeds:
 /// (psi'', theta'', phi'') and the pivot force (fixed axes).  What `appell eval`
-/// reports, and what `appell simulate` / `enclose` run on jets.
+/// reports, and what `appell simulate` / `enclose` report along the motion (their
+/// right-hand side is top_on_pivot_accelerations, below).
 template <Scalar T>
 cotton_result<T> top_on_pivot_cotton(const T& A, const T& C, const T& mass, const T& l, const T& g,
                                      const top_on_pivot_state<T>& s) {
