@@ -4,13 +4,15 @@
 //   Euler's body, moments (1, 2, 3), omega0 = (1, 1, 1): largest state width at T;
 //   the heavy symmetric top (A = 1 about O, C = 2, m g l = 1, theta0 = 1, precession 0.5,
 //   spin 5, the rest 0): largest state width, and its energy's width over the steps;
-//   the simple pendulum theta'' = -sin theta, theta0 = 1, as a one-body system.
+//   the simple pendulum theta'' = -sin theta, theta0 = 1, as a one-body system on its rod's
+//   turning axes (ode::pendulum_problem; the fixed axes are a diagnostic row).
 // Prints one table: appell's width and time, kv's, and the ratios (width: appell / kv, below 1 is
 // tighter; time: appell / kv, the goal is at most 0.5).  Times are this run's, on this machine; kv's
-// are the issue's.  A full run (no option) then prints a diagnostic table: Euler's equations and
-// the pendulum written by hand, as kv's problems are, through the same enclose (what the method
-// does without the generic path's rounding).
-// Usage: appell_bench_enclose [--quick] [--order N] [--only PROBLEM[:T]]
+// are the issue's.  A full run (no option, or --only diagnostics) then prints a diagnostic table:
+// Euler's equations, the pendulum and the heavy top (Lagrange's equations) written by hand, as kv's
+// problems are, through the same enclose (what the method does without the generic path's
+// rounding and dependency), and the pendulum through the generic path on the fixed axes.
+// Usage: appell_bench_enclose [--quick] [--order N] [--only PROBLEM[:T] | --only diagnostics]
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -86,6 +88,31 @@ struct pendulum_by_hand {
   void invariants(const vector_t<S>&, std::vector<ode::named_values<S>>&) const {}
 };
 
+/// Diagnostic only: the heavy top by Lagrange's equations in Euler angles, written out by hand
+/// (A = 1 about O, C = 2, m g l = 1), as kv's problem is: with the spin r = phi' + psi' cos theta,
+///   A theta'' = A psi'^2 sin cos - C r psi' sin + m g l sin,
+///   psi'' = (C r theta' - 2 A psi' theta' cos) / (A sin),   phi'' = -psi'' cos + psi' theta' sin.
+struct heavy_top_by_hand {
+  static constexpr int dim = 6;
+  template <class S>
+  vector_t<S> rhs(const vector_t<S>& x) const {
+    using std::sin, std::cos;
+    const S s = sin(x(1)), c = cos(x(1));
+    const S r = x(5) + x(3) * c;
+    const S th2 = x(3) * x(3) * s * c - S(2) * r * x(3) * s + s;
+    const S ps2 = (S(2) * r * x(4) - S(2) * x(3) * x(4) * c) / s;
+    vector_t<S> f(6);
+    f << x(3), x(4), x(5), ps2, th2, x(3) * x(4) * s - ps2 * c;
+    return f;
+  }
+  template <class S>
+  void results(const vector_t<S>&, std::vector<ode::named_values<S>>&) const {}
+  template <class S>
+  void invariants(const vector_t<S>& x, std::vector<ode::named_values<S>>& out) const {
+    ode::heavy_top_problem<S>{S(1), S(2), S(1), S(1), S(1)}.invariants(x, out);
+  }
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -143,7 +170,8 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
     if (!last.complete) std::printf("  (INCOMPLETE: the enclosure stopped before T)\n");
   }
-  if (!quick && !only) {
+  const bool diagnostics = !quick && (!only || !std::strcmp(only, "diagnostics"));
+  if (diagnostics) {
     std::printf("\nDiagnostic (not a scene): the equations written by hand, as kv's problems, through the same enclose\n");
     std::printf("| problem | T | appell width | kv width | width ratio | appell s | steps |\n|---|---|---|---|---|---|---|\n");
     for (double T : {10.0, 100.0, 1000.0}) {
@@ -156,6 +184,22 @@ int main(int argc, char** argv) {
       const measured m = run(pendulum_by_hand{}, pend0, T, order);
       const double kv = T == 10 ? 1.5e-14 : 9.5e-11;
       std::printf("| pendulum_by_hand | %g | %.2e | %.2e | %.2f | %.3g | %ld |\n", T, m.width, kv, m.width / kv, m.seconds, m.steps);
+      std::fflush(stdout);
+    }
+    for (double T : {10.0, 100.0}) {
+      const measured m = run(heavy_top_by_hand{}, top0, T, order);
+      const double kv = T == 10 ? 3.7e-12 : 3.5e-10;
+      std::printf("| heavy_top_by_hand | %g | %.2e | %.2e | %.2f | %.3g | %ld |\n", T, m.width, kv, m.width / kv, m.seconds, m.steps);
+      if (T == 10) std::printf("| heavy_top_by_hand energy | %g | %.2e | %.2e | %.2f | %.3g | %ld |\n", T, m.energy_width, 6.2e-11, m.energy_width / 6.2e-11, m.seconds, m.steps);
+      std::fflush(stdout);
+    }
+    // The same pendulum through the generic path on the fixed axes: M = m l^2 (cos^2 + sin^2).
+    ode::pendulum_problem<interval> fixed = pendulum;
+    fixed.rod_axes = false;
+    for (double T : {10.0, 1000.0}) {
+      const measured m = run(fixed, pend0, T, order);
+      const double kv = T == 10 ? 1.5e-14 : 9.5e-11;
+      std::printf("| pendulum_fixed_axes | %g | %.2e | %.2e | %.2f | %.3g | %ld |\n", T, m.width, kv, m.width / kv, m.seconds, m.steps);
       std::fflush(stdout);
     }
   }
