@@ -18,6 +18,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <random>
 #include <set>
 
 #include "appell/io/models/euler_body.hpp"
@@ -106,7 +107,49 @@ void agree(const closed_form::top_result<double>& c, const top_on_cone_result<do
   for (int i = 0; i < 3; ++i) expect_close("couple", c.couple(i), g.couple(i), g.couple.norm() + 1);
 }
 
-enum class path { closed, generic, eval };
+enum class path { closed, generic, eval, solve };
+
+/// Euler's body only: the solve of Appell's equations M u' = Q - b alone (M, b, Q formed once),
+/// the one the generic path's u' comes from.  appell eval's output must stay byte-identical, so
+/// this solve (Cholesky in point types, verified in interval) is part of any generic path: its
+/// time is a floor under the generic column.
+template <Scalar T>
+void solve_alone(benchmark::State& state, const euler_body_model::prepared<T>& m) {
+  const appell_equations<T> eq = euler_body_equations(m.body, m.omega);
+  for (auto _ : state) benchmark::DoNotOptimize(eq.accelerations());
+}
+template <Scalar T, class M>
+void solve_alone(benchmark::State&, const M&) {}
+
+/// Double only: the same M solved by Eigen's fixed-size 3 x 3 Cholesky (no heap), and how many
+/// of its results differ in the last bit from the dynamic-size one the path runs (random SPD).
+void solve_fixed_size(benchmark::State& state) {
+  const scene_input scene = load("euler_body.json");
+  const auto m = euler_body_model::prepare<double>(scene.as<euler_body_input>());
+  const appell_equations<double> eq = euler_body_equations(m.body, m.omega);
+  const Eigen::Matrix3d M = eq.M;
+  const Eigen::Vector3d r = eq.Q - eq.b;
+  for (auto _ : state) {
+    const Eigen::Vector3d x = M.llt().solve(r);
+    benchmark::DoNotOptimize(x);
+  }
+}
+long fixed_size_differences(long& compared) {
+  std::mt19937_64 rng(20261126u);
+  std::uniform_real_distribution<double> u(-1, 1);
+  long differ = 0;
+  compared = 0;
+  for (int k = 0; k < 100000; ++k) {
+    Eigen::Matrix3d A;
+    for (int i = 0; i < 9; ++i) A.data()[i] = u(rng);
+    const Eigen::Matrix3d S = A * A.transpose() + 0.1 * Eigen::Matrix3d::Identity();
+    const Eigen::Vector3d b(u(rng), u(rng), u(rng));
+    const Eigen::Vector3d x = S.llt().solve(b);
+    const vector_t<double> y = solve_spd(matrix_t<double>(S), vector_t<double>(b));
+    for (int i = 0; i < 3; ++i, ++compared) differ += x(i) != y(i);
+  }
+  return differ;
+}
 
 void bench(benchmark::State& state, std::string scalar, const char* file, path which) {
   const scene_input scene = load(file);
@@ -120,6 +163,8 @@ void bench(benchmark::State& state, std::string scalar, const char* file, path w
     with_model<T>(scene, [&](const auto& m) {
       if (which == path::closed)
         for (auto _ : state) benchmark::DoNotOptimize(closed(m));
+      else if (which == path::solve)
+        solve_alone<T>(state, m);
       else
         for (auto _ : state) benchmark::DoNotOptimize(generic(m));
     });
@@ -150,6 +195,23 @@ class ratio_reporter : public median_reporter {
                   << std::setprecision(1) << std::setw(12) << c << std::setw(12) << g << std::setw(17) << ratio(g)
                   << std::setw(14) << ratio(e) << "\n";
       }
+    std::cout << "\nthe floor on Euler's body: the solve of M u' = Q - b alone (M, b, Q given), which a\n"
+              << "byte-identical generic path must run, against the whole closed form\n";
+    for (const char* scalar : scalars) {
+      const std::string key = std::string(scalar) + "/euler_body.json/";
+      const double c = ns(key + "closed"), f = ns(key + "solve");
+      if (c > 0 && f > 0)
+        std::cout << "  " << std::left << std::setw(10) << scalar << std::right << std::fixed << std::setprecision(1)
+                  << "solve " << f << " ns = " << f / c << " x the closed form (goal for the whole path: 10)\n";
+    }
+    const double c = ns("double/euler_body.json/closed"), f = ns("double/euler_body.json/solve_fixed_size");
+    if (c > 0 && f > 0) {
+      long compared = 0;
+      const long differ = fixed_size_differences(compared);
+      std::cout << "  double    Eigen's fixed-size 3 x 3 Cholesky, no heap: " << f << " ns = " << f / c
+                << " x the closed form; its results differ in the last bit from the path's on " << differ << " of "
+                << compared << " random SPD components (byte-identical output rules it out)\n";
+    }
   }
 };
 
@@ -168,6 +230,13 @@ int main(int argc, char** argv) {
                                  std::pair{"eval", path::eval}})
         benchmark::RegisterBenchmark((std::string(scalar) + "/" + s + "/" + name).c_str(), bench, std::string(scalar),
                                      s, which);
+    if (scene.model == euler_body_model::name) {
+      benchmark::RegisterBenchmark((std::string("double/") + s + "/solve_fixed_size").c_str(), solve_fixed_size);
+    }
+    if (scene.model == euler_body_model::name)
+      for (const char* scalar : scalars)
+        benchmark::RegisterBenchmark((std::string(scalar) + "/" + s + "/solve").c_str(), bench, std::string(scalar), s,
+                                     path::solve);
   }
   benchmark::Initialize(&argc, argv);
   ratio_reporter reporter;

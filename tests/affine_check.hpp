@@ -4,7 +4,10 @@
 // merges forced often (a small max_cols) on every other run.  After every step the set's box
 // must hold x'.  In one dimension the box is the set itself, and the runs take the largest x'
 // each step allows (x0 at the top of X0, J* at its bound on the side of x - xh, z at the top of
-// zr): the true point then lies on the set's upper bound, and any term left out misses.
+// zr): the true point then lies at (or, through the set's shift, within a rounding of) the
+// set's upper bound, and a term left out misses.  Every other step the new centre is taken off
+// zr's midpoint, by up to 512 times more on odd components, so that the set's shift is off 0,
+// of mixed magnitudes, and must be carried by the next step's J.
 // Included by tests/motion.cpp (interval<double>: the double mid-rad product) and
 // tests/motion_mpfi.cpp (MPFI: the interval product).
 #pragma once
@@ -93,7 +96,7 @@ outcome run(int n, int runs, int steps, std::uint64_t seed) {
         // The new centre off zr's midpoint (every other step), as enclose's can be by up to half an
         // ulp of the state: dz = zr - xhn is then off 0, and the set's shift (its centre less xhn),
         // carried by the next steps' J, must be where the set is.
-        const double off = k % 2 ? 0.0 : sym(rng) * std::max(w, std::ldexp(1.0, -40));
+        const double off = k % 2 ? 0.0 : sym(rng) * std::max(w, std::ldexp(1.0, -40)) * (i % 2 ? 512 : 1);
         xhn(i) = ode::detail::thin_of<I>(scalar_traits<I>::mid(I(zr(i) + I(off))));
       }
       // The true step x' = z + J* (x - xh).

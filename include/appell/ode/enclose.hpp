@@ -23,9 +23,11 @@
 //     factorization of mid(S) (columns ordered by length: Lohner's method),
 //     and A_{j+1} = mid(S) itself (the parallelepiped method; replaced by the
 //     Q when mid(S) has condition number above 1e8).  A third representation,
-//     an affine form x in xh_j + C_j e, e in [-1, 1]^N (detail::affine_set, as
-//     Kashiwagi's kv), keeps each step's error zr - xh_{j+1} and the width of
-//     J C_j as new symbols, carried by later Jacobians without wrapping; beyond
+//     an affine form x in xh_j + shift_j + C_j e, e in [-1, 1]^N, shift_j a
+//     point (detail::affine_set, as Kashiwagi's kv), keeps each step's error
+//     (zr - xh_{j+1}) + J shift_j about its midpoint (the new shift) and the
+//     width of J C_j as new symbols, carried by later Jacobians without
+//     wrapping; beyond
 //     3000 symbols per component the smaller half is merged into a
 //     parallelotope.  Measured (bench/enclose_vs_kv.cpp): 1.2 to 18 times
 //     tighter than the two frames alone on Euler's body, the heavy top and the
