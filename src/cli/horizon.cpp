@@ -7,7 +7,7 @@
 //     very time each scalar reached (its t, converted exactly);
 //   - the heavy top: its nutation (theta, theta') in Jacobi elliptic functions (psi and phi would
 //     need elliptic integrals of the third kind: not compared);
-//   - any other scene: simulate in mpfr at 256 bits (order 91, tolerance 2^-256), at the same
+//   - any other scene: simulate in mpfr at 256 bits (its default order, 60, tolerance 2^-257), at the same
 //     output indices.
 // The error at t is max_i |x_i - ref_i| / max(1, |ref_i|).  Brouwer's law, the goal line, is the
 // round-off of a careful integrator accumulating as a random walk: eps sqrt(n(t)), n(t) the

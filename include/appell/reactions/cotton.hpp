@@ -27,13 +27,24 @@ struct cotton_result {
   appell_equations<T> equations;   ///< of the unconstrained system, at v_c = 0
 };
 
+namespace detail {
+/// The speeds (v_a, 0) of Cotton's method, eq. (12): v_c = 0; `who` names the caller when k + s
+/// is not the system's number of speeds.
+template <Scalar T, class Sys>
+vector_t<T> cotton_speeds(const Sys& sys, const vector_t<T>& v_a, int s, const char* who) {
+  const int k = static_cast<int>(v_a.size()), n = k + s;
+  if (sys.speeds() != n) throw std::invalid_argument(std::string(who) + ": k + s differs from the system's speeds");
+  vector_t<T> v = vector_t<T>::Zero(n);
+  v.head(k) = v_a;
+  return v;
+}
+}  // namespace detail
+
 /// The last s speeds of `sys` are constrained to 0; v_a holds the other k.
 template <Scalar T, class Sys>
 cotton_result<T> cotton_reactions(const Sys& sys, const vector_t<T>& q, const vector_t<T>& v_a, const T& t, int s) {
-  const int k = static_cast<int>(v_a.size()), n = k + s;
-  if (sys.speeds() != n) throw std::invalid_argument("cotton_reactions: k + s differs from the system's speeds");
-  vector_t<T> v = vector_t<T>::Zero(n);
-  v.head(k) = v_a;  // (12): v_c = 0
+  const int k = static_cast<int>(v_a.size());
+  const vector_t<T> v = detail::cotton_speeds(sys, v_a, s, "cotton_reactions");
   cotton_result<T> r{vector_t<T>(), vector_t<T>(), gibbs_appell(sys, q, v, t)};
   const appell_equations<T>& e = r.equations;
   const matrix_t<T> Maa = e.M.topLeftCorner(k, k);
@@ -51,10 +62,8 @@ cotton_result<T> cotton_reactions(const Sys& sys, const vector_t<T>& q, const ve
 /// directions instead of 7.
 template <int Slots, Scalar T, class Sys>
 vector_t<T> cotton_free_accelerations(const Sys& sys, const vector_t<T>& q, const vector_t<T>& v_a, const T& t, int s) {
-  const int k = static_cast<int>(v_a.size()), n = k + s;
-  if (sys.speeds() != n) throw std::invalid_argument("cotton_free_accelerations: k + s differs from the system's speeds");
-  vector_t<T> v = vector_t<T>::Zero(n);
-  v.head(k) = v_a;  // (12): v_c = 0
+  const int k = static_cast<int>(v_a.size());
+  const vector_t<T> v = detail::cotton_speeds(sys, v_a, s, "cotton_free_accelerations");
   const appell_equations<T> e = gibbs_appell_leading<Slots>(sys, q, v, t, k);
   return solve_spd(e.M, vector_t<T>(e.Q - e.b));
 }
@@ -82,6 +91,14 @@ vector_t<T> original_accelerations(const Adapted& adapted, const Change& change,
   for (int i = 0; i < n; ++i) udot(i) = ud(i).d;
   return udot;
 }
+/// The free speeds v_a: u's components on the change's free columns.
+template <Scalar T, class Constraint>
+vector_t<T> free_speeds(const adapted_change<Constraint>& change, const vector_t<T>& u) {
+  const auto k = static_cast<Eigen::Index>(change.free_columns.size());
+  vector_t<T> v_a(k);
+  for (Eigen::Index i = 0; i < k; ++i) v_a(i) = u(change.free_columns[static_cast<std::size_t>(i)]);
+  return v_a;
+}
 }  // namespace detail
 
 /// Cotton's method in given adapted speeds (adapted_change): u' in the original
@@ -92,10 +109,9 @@ template <Scalar T, class Sys, class Constraint>
 constrained_motion<T> cotton_reactions(const Sys& sys, const adapted_change<Constraint>& change,
                                        const vector_t<T>& q, const vector_t<T>& u, const T& t,
                                        appell_equations<T>* adapted_equations = nullptr) {
-  const int n = sys.speeds(), s = change.con.count(), k = n - s;
+  const int n = sys.speeds(), s = change.con.count();
   const auto adapted = change_speeds(sys, change, n);
-  vector_t<T> v_a(k);
-  for (int i = 0; i < k; ++i) v_a(i) = u(change.free_columns[static_cast<std::size_t>(i)]);
+  const vector_t<T> v_a = detail::free_speeds(change, u);
   const cotton_result<T> c = cotton_reactions(adapted, q, v_a, t, s);
   if (adapted_equations) *adapted_equations = c.equations;
   return {detail::original_accelerations(adapted, change, q, v_a, c.free_accelerations, t), c.reactions};
@@ -106,10 +122,9 @@ constrained_motion<T> cotton_reactions(const Sys& sys, const adapted_change<Cons
 template <int Slots, Scalar T, class Sys, class Constraint>
 vector_t<T> cotton_free_motion(const Sys& sys, const adapted_change<Constraint>& change, const vector_t<T>& q,
                                const vector_t<T>& u, const T& t) {
-  const int n = sys.speeds(), s = change.con.count(), k = n - s;
+  const int n = sys.speeds(), s = change.con.count();
   const auto adapted = change_speeds(sys, change, n);
-  vector_t<T> v_a(k);
-  for (int i = 0; i < k; ++i) v_a(i) = u(change.free_columns[static_cast<std::size_t>(i)]);
+  const vector_t<T> v_a = detail::free_speeds(change, u);
   const vector_t<T> free_acc = cotton_free_accelerations<Slots>(adapted, q, v_a, t, s);
   return detail::original_accelerations(adapted, change, q, v_a, free_acc, t);
 }
