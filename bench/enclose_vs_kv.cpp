@@ -11,7 +11,8 @@
 // are the issue's.  A full run (no option, or --only diagnostics) then prints a diagnostic table:
 // Euler's equations, the pendulum and the heavy top (Lagrange's equations) written by hand, as kv's
 // problems are, through the same enclose (what the method does without the generic path's
-// rounding and dependency), and the pendulum through the generic path on the fixed axes.
+// rounding and dependency), the heavy top through the generic path in quasi-velocities (checked
+// against the scene's own enclosure), and the pendulum through the generic path on the fixed axes.
 // Usage: appell_bench_enclose [--quick] [--order N] [--only PROBLEM[:T] | --only diagnostics]
 #include <chrono>
 #include <cstdio>
@@ -113,6 +114,68 @@ struct heavy_top_by_hand {
   }
 };
 
+/// Diagnostic only: the same heavy top through the generic path in quasi-velocities (Appell's own
+/// choice, paper sec. 5): p = (theta', psi' sin theta, psi' cos theta + phi'), the angular velocity
+/// on Resal's trihedron.  Then M = diag(A, A, C), constant: no 3 x 3 solve of M(theta) over the box.
+/// x = (psi, theta, phi, p1, p2, p3); the state at T is converted back to Euler rates at the end.
+struct heavy_top_quasi {
+  static constexpr int dim = 6;
+  struct system {
+    static constexpr int max_speeds = 3;
+    int speeds() const { return 3; }
+    template <class S>
+    vector_t<S> qdot(const vector_t<S>& q, const vector_t<S>& u, const S&) const {
+      using std::sin, std::cos;
+      S st, ct;
+      sin_cos(q(1), st, ct);
+      vector_t<S> d(3);
+      d << u(1) / st, u(0), u(2) - u(1) * ct / st;
+      return d;
+    }
+    template <class S>
+    void bodies(const vector_t<S>& q, const vector_t<S>& u, const S&, std::vector<body_state<S>>& out) const {
+      S st, ct;
+      sin_cos(q(1), st, ct);
+      body_state<S> b;  // A = 1 about O, C = 2, m = g = l = 1
+      b.mass = S(1);
+      b.frame_rate = vec3<S>(u(0), u(1), u(1) * ct / st);
+      b.omega = vec3<S>(u(0), u(1), u(2));
+      b.velocity = vec3<S>(u(1), -u(0), S(0));  // omega x (0, 0, l)
+      b.inertia(0, 0) = S(0);                   // central: A - m l^2
+      b.inertia(1, 1) = S(0);
+      b.inertia(2, 2) = S(2);
+      b.force = vec3<S>(S(0), -st, -ct);
+      out.push_back(b);
+    }
+  };
+  template <class S>
+  vector_t<S> rhs(const vector_t<S>& x) const {
+    const vector_t<S> q = x.head(3), u = x.tail(3);
+    const system sys;
+    const vector_t<S> qd = sys.qdot(q, u, S(0));
+    const vector_t<S> a = gibbs_appell(sys, q, u, S(0)).accelerations();
+    vector_t<S> f(6);
+    f << qd(0), qd(1), qd(2), a(0), a(1), a(2);
+    return f;
+  }
+  template <class S>
+  void results(const vector_t<S>&, std::vector<ode::named_values<S>>&) const {}
+  /// Energy 1/2 (A (p1^2 + p2^2) + C p3^2) + m g l cos theta.
+  template <class S>
+  void invariants(const vector_t<S>& x, std::vector<ode::named_values<S>>& out) const {
+    using std::cos;
+    out.push_back({"energy", {(x(3) * x(3) + x(4) * x(4) + S(2) * x(5) * x(5)) / S(2) + cos(x(1))}});
+  }
+  /// Euler angles and rates from x.
+  static vector_t<interval> euler_state(const vector_t<interval>& x) {
+    using std::sin, std::cos;
+    const interval st = sin(x(1)), ct = cos(x(1));
+    vector_t<interval> y(6);
+    y << x(0), x(1), x(2), x(4) / st, x(3), x(5) - x(4) * ct / st;
+    return y;
+  }
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -192,6 +255,42 @@ int main(int argc, char** argv) {
       std::printf("| heavy_top_by_hand | %g | %.2e | %.2e | %.2f | %.3g | %ld |\n", T, m.width, kv, m.width / kv, m.seconds, m.steps);
       if (T == 10) std::printf("| heavy_top_by_hand energy | %g | %.2e | %.2e | %.2f | %.3g | %ld |\n", T, m.energy_width, 6.2e-11, m.energy_width / 6.2e-11, m.seconds, m.steps);
       std::fflush(stdout);
+    }
+    {
+      vector_t<interval> x0(6);
+      const interval one(1);
+      x0 << interval(0), one, interval(0), interval(0), interval(0.5) * sin(one), interval(5) + interval(0.5) * cos(one);
+      for (double T : {10.0, 100.0}) {
+        measured m;
+        vector_t<interval> end;
+        const auto start = std::chrono::steady_clock::now();
+        const ode::enclose_stats st = ode::enclose(heavy_top_quasi{}, x0, interval(T), order, std::ldexp(1.0, -53), 1.0, 2,
+                                                   [&](const ode::enclosed_step<interval>& s) {
+                                                     end = s.end;
+                                                     for (const auto& inv : s.invariants)
+                                                       m.energy_width = std::max(m.energy_width, boost::numeric::width(inv.values[0]));
+                                                   });
+        m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        m.width = ode::detail::max_width(heavy_top_quasi::euler_state(end));
+        const double kv = T == 10 ? 3.7e-12 : 3.5e-10;
+        if (T == 10) {  // a consistency check: the scene's own enclosure at T must meet this one
+          vector_t<interval> scene_end;
+          ode::enclose(top, top0, interval(T), order, std::ldexp(1.0, -53), 1.0, 2,
+                       [&](const ode::enclosed_step<interval>& s) { scene_end = s.end; });
+          const vector_t<interval> y = heavy_top_quasi::euler_state(end);
+          for (int i = 0; i < 6; ++i)
+            if (!boost::numeric::overlap(y(i), scene_end(i))) {
+              std::printf("heavy_top_quasi_velocities: component %d misses the scene's enclosure\n", i);
+              return 4;
+            }
+        }
+        std::printf("| heavy_top_quasi_velocities | %g | %.2e | %.2e | %.2f | %.3g | %ld |%s\n", T, m.width, kv, m.width / kv,
+                    m.seconds, st.steps, st.complete ? "" : " (INCOMPLETE)");
+        if (T == 10)
+          std::printf("| heavy_top_quasi_velocities energy | %g | %.2e | %.2e | %.2f | %.3g | %ld |\n", T, m.energy_width, 6.2e-11,
+                      m.energy_width / 6.2e-11, m.seconds, st.steps);
+        std::fflush(stdout);
+      }
     }
     // The same pendulum through the generic path on the fixed axes: M = m l^2 (cos^2 + sin^2).
     ode::pendulum_problem<interval> fixed = pendulum;
