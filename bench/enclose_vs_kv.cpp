@@ -37,23 +37,36 @@ struct measured {
   double width = 0, energy_width = 0, seconds = 0;
   long steps = 0;
   bool complete = false;
+  vector_t<interval> end;  ///< the state enclosed at the last step's end (in the reported variables)
 };
 
+/// enclose(prob) from x0 to t_end; `report` maps a step's end box to the variables whose widths
+/// are measured (identity: the problem's own state).
 template <class P>
-measured run(const P& prob, const vector_t<interval>& x0, double t_end, int order) {
+measured run(const P& prob, const vector_t<interval>& x0, double t_end, int order,
+             vector_t<interval> (*report)(const vector_t<interval>&) = nullptr) {
   measured m;
   const auto start = std::chrono::steady_clock::now();
   const ode::enclose_stats st = ode::enclose(prob, x0, interval(t_end), order, std::ldexp(1.0, -53), 1.0, 2,
                                              [&](const ode::enclosed_step<interval>& s) {
-                                               m.width = ode::detail::max_width(s.end);
+                                               m.end = s.end;
                                                for (const auto& inv : s.invariants)
                                                  if (inv.name == "energy")
                                                    m.energy_width = std::max(m.energy_width, boost::numeric::width(inv.values[0]));
                                              });
   m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (report) m.end = report(m.end);
+  m.width = ode::detail::max_width(m.end);
   m.steps = st.steps;
   m.complete = st.complete;
   return m;
+}
+
+/// One row of the diagnostic table.
+void diagnostic_row(const char* problem, double T, double width, double kv, const measured& m) {
+  std::printf("| %s | %g | %.2e | %.2e | %.2f | %.3g | %ld |%s\n", problem, T, width, kv, width / kv, m.seconds, m.steps,
+              m.complete ? "" : " (INCOMPLETE)");
+  std::fflush(stdout);
 }
 
 /// Diagnostic only: Euler's equations written out by hand, (B - C) q r / A, ..., as kv's
@@ -239,57 +252,33 @@ int main(int argc, char** argv) {
     std::printf("| problem | T | appell width | kv width | width ratio | appell s | steps |\n|---|---|---|---|---|---|---|\n");
     for (double T : {10.0, 100.0, 1000.0}) {
       const measured m = run(euler_by_hand{}, euler0, T, order);
-      const double kv = T == 10 ? 7.3e-14 : T == 100 ? 9.3e-12 : 1.1e-9;
-      std::printf("| euler_by_hand | %g | %.2e | %.2e | %.2f | %.3g | %ld |\n", T, m.width, kv, m.width / kv, m.seconds, m.steps);
-      std::fflush(stdout);
+      diagnostic_row("euler_by_hand", T, m.width, T == 10 ? 7.3e-14 : T == 100 ? 9.3e-12 : 1.1e-9, m);
     }
     for (double T : {10.0, 1000.0}) {
       const measured m = run(pendulum_by_hand{}, pend0, T, order);
-      const double kv = T == 10 ? 1.5e-14 : 9.5e-11;
-      std::printf("| pendulum_by_hand | %g | %.2e | %.2e | %.2f | %.3g | %ld |\n", T, m.width, kv, m.width / kv, m.seconds, m.steps);
-      std::fflush(stdout);
+      diagnostic_row("pendulum_by_hand", T, m.width, T == 10 ? 1.5e-14 : 9.5e-11, m);
     }
     for (double T : {10.0, 100.0}) {
       const measured m = run(heavy_top_by_hand{}, top0, T, order);
-      const double kv = T == 10 ? 3.7e-12 : 3.5e-10;
-      std::printf("| heavy_top_by_hand | %g | %.2e | %.2e | %.2f | %.3g | %ld |\n", T, m.width, kv, m.width / kv, m.seconds, m.steps);
-      if (T == 10) std::printf("| heavy_top_by_hand energy | %g | %.2e | %.2e | %.2f | %.3g | %ld |\n", T, m.energy_width, 6.2e-11, m.energy_width / 6.2e-11, m.seconds, m.steps);
-      std::fflush(stdout);
+      diagnostic_row("heavy_top_by_hand", T, m.width, T == 10 ? 3.7e-12 : 3.5e-10, m);
+      if (T == 10) diagnostic_row("heavy_top_by_hand energy", T, m.energy_width, 6.2e-11, m);
     }
     {
       vector_t<interval> x0(6);
       const interval one(1);
       x0 << interval(0), one, interval(0), interval(0), interval(0.5) * sin(one), interval(5) + interval(0.5) * cos(one);
       for (double T : {10.0, 100.0}) {
-        measured m;
-        vector_t<interval> end;
-        const auto start = std::chrono::steady_clock::now();
-        const ode::enclose_stats st = ode::enclose(heavy_top_quasi{}, x0, interval(T), order, std::ldexp(1.0, -53), 1.0, 2,
-                                                   [&](const ode::enclosed_step<interval>& s) {
-                                                     end = s.end;
-                                                     for (const auto& inv : s.invariants)
-                                                       m.energy_width = std::max(m.energy_width, boost::numeric::width(inv.values[0]));
-                                                   });
-        m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        m.width = ode::detail::max_width(heavy_top_quasi::euler_state(end));
-        const double kv = T == 10 ? 3.7e-12 : 3.5e-10;
+        const measured m = run(heavy_top_quasi{}, x0, T, order, &heavy_top_quasi::euler_state);
         if (T == 10) {  // a consistency check: the scene's own enclosure at T must meet this one
-          vector_t<interval> scene_end;
-          ode::enclose(top, top0, interval(T), order, std::ldexp(1.0, -53), 1.0, 2,
-                       [&](const ode::enclosed_step<interval>& s) { scene_end = s.end; });
-          const vector_t<interval> y = heavy_top_quasi::euler_state(end);
+          const vector_t<interval> scene_end = run(top, top0, T, order).end;
           for (int i = 0; i < 6; ++i)
-            if (!boost::numeric::overlap(y(i), scene_end(i))) {
+            if (!boost::numeric::overlap(m.end(i), scene_end(i))) {
               std::printf("heavy_top_quasi_velocities: component %d misses the scene's enclosure\n", i);
               return 4;
             }
         }
-        std::printf("| heavy_top_quasi_velocities | %g | %.2e | %.2e | %.2f | %.3g | %ld |%s\n", T, m.width, kv, m.width / kv,
-                    m.seconds, st.steps, st.complete ? "" : " (INCOMPLETE)");
-        if (T == 10)
-          std::printf("| heavy_top_quasi_velocities energy | %g | %.2e | %.2e | %.2f | %.3g | %ld |\n", T, m.energy_width, 6.2e-11,
-                      m.energy_width / 6.2e-11, m.seconds, st.steps);
-        std::fflush(stdout);
+        diagnostic_row("heavy_top_quasi_velocities", T, m.width, T == 10 ? 3.7e-12 : 3.5e-10, m);
+        if (T == 10) diagnostic_row("heavy_top_quasi_velocities energy", T, m.energy_width, 6.2e-11, m);
       }
     }
     // The same pendulum through the generic path on the fixed axes: M = m l^2 (cos^2 + sin^2).
@@ -297,9 +286,7 @@ int main(int argc, char** argv) {
     fixed.rod_axes = false;
     for (double T : {10.0, 1000.0}) {
       const measured m = run(fixed, pend0, T, order);
-      const double kv = T == 10 ? 1.5e-14 : 9.5e-11;
-      std::printf("| pendulum_fixed_axes | %g | %.2e | %.2e | %.2f | %.3g | %ld |\n", T, m.width, kv, m.width / kv, m.seconds, m.steps);
-      std::fflush(stdout);
+      diagnostic_row("pendulum_fixed_axes", T, m.width, T == 10 ? 1.5e-14 : 9.5e-11, m);
     }
   }
   return 0;

@@ -230,13 +230,12 @@ int main(int argc, char** argv) {
                                  std::pair{"eval", path::eval}})
         benchmark::RegisterBenchmark((std::string(scalar) + "/" + s + "/" + name).c_str(), bench, std::string(scalar),
                                      s, which);
-    if (scene.model == euler_body_model::name) {
-      benchmark::RegisterBenchmark((std::string("double/") + s + "/solve_fixed_size").c_str(), solve_fixed_size);
-    }
-    if (scene.model == euler_body_model::name)
+    if (scene.model == euler_body_model::name) {  // the floor (the ratio reporter's last lines)
       for (const char* scalar : scalars)
         benchmark::RegisterBenchmark((std::string(scalar) + "/" + s + "/solve").c_str(), bench, std::string(scalar), s,
                                      path::solve);
+      benchmark::RegisterBenchmark((std::string("double/") + s + "/solve_fixed_size").c_str(), solve_fixed_size);
+    }
   }
   benchmark::Initialize(&argc, argv);
   ratio_reporter reporter;

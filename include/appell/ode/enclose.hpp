@@ -195,8 +195,9 @@ bound_t<I> mag(const I& x) {
 /// A step maps it, by the slope form x' in zr + J (x - xh), to
 ///   xh' + shift' + G e + diag(d) e',  e' in [-1, 1]^n new symbols,
 /// with g = (zr - xh') + J shift enclosed, shift' = mid(g), G a point matrix near J C and
-/// d_i >= sum_c |J* C - G|_ic + |g_i - shift'_i| for every J* in J.  The step's own errors become symbols that later steps' Jacobians carry as
-/// columns, never wrapped into a box and turned back (the loss of the QR frame).  Beyond
+/// d_i >= sum_c |J* C - G|_ic + |g_i - shift'_i| for every J* in J.  The step's own errors
+/// become symbols that later steps' Jacobians carry as columns, never wrapped into a box and
+/// turned back (the loss of the QR frame).  Beyond
 /// max_cols symbols the smaller half is merged into a parallelotope (condense).
 template <class I>
 struct affine_set {
@@ -243,9 +244,10 @@ struct affine_set {
 
   /// dz: an enclosure of zr - xh' (the step's own error about the new centre).  The new set is
   /// xh' + (dz + J shift) + J C e: its shift the midpoint of dz + J shift, the rest a new symbol.
+  /// (enclose computes J shift once more, to choose xh' near the new centre: n^2 products.)
   void step(const matrix_t<I>& J, const vector_t<I>& dz, Eigen::Index max_cols) {
     const Eigen::Index n = C.rows(), N = C.cols();
-    const vector_t<I> g = vector_t<I>(dz + shift_image(J));
+    const vector_t<I> centre = vector_t<I>(dz + shift_image(J));  // the new set's centre, less xh
     Eigen::Matrix<B, Eigen::Dynamic, Eigen::Dynamic> Cn(n, N + n);
     Cn.setZero();
     std::vector<I> d(static_cast<std::size_t>(n));
@@ -281,9 +283,9 @@ struct affine_set {
       }
     }
     for (Eigen::Index i = 0; i < n; ++i) {
-      const B m = scalar_traits<I>::mid(g(i));
+      const B m = scalar_traits<I>::mid(centre(i));
       shift[static_cast<std::size_t>(i)] = m;
-      const I di = d[static_cast<std::size_t>(i)] + thin_of<I>(mag<I>(I(g(i) - thin_of<I>(m))));
+      const I di = d[static_cast<std::size_t>(i)] + thin_of<I>(mag<I>(I(centre(i) - thin_of<I>(m))));
       Cn(i, N + i) = upper(di);
       sums[static_cast<std::size_t>(i)] += thin_of<I>(Cn(i, N + i));
     }
