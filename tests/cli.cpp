@@ -3,11 +3,14 @@
 #define BOOST_TEST_MODULE cli
 #include <boost/test/unit_test.hpp>
 
+#include <mpfr.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <random>
 #include <vector>
 #include <fstream>
@@ -809,8 +812,20 @@ BOOST_AUTO_TEST_CASE(simulate_and_enclose_refuse_bad_input_naming_the_flag) {
   expect_bad_input("enclose " + good_scene + " --t-end 1 --scalar double --out " + out, "--scalar");
   expect_bad_input("enclose " + good_scene + " --t-end 1 --every 0.1 --out " + out, "--every");
   expect_bad_input("enclose " + good_scene + " --t-end 1 --bits 113 --out " + out, "--bits");
-  expect_bad_input("simulate " + std::string(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk.json") + " --t-end 1 --out " + out,
-                   "model");
+  // A system whose motion's state is too large for enclose (14 components: seven coordinates and
+  // their rates) is refused naming enclose; simulate runs it.
+  std::string big = "{\"model\": \"system\", \"coordinates\": [\"q1\", \"q2\", \"q3\", \"q4\", \"q5\", \"q6\", \"q7\"], "
+                    "\"bodies\": {";
+  for (int i = 1; i <= 7; ++i)
+    big += std::string(i > 1 ? ", " : "") + "\"b" + std::to_string(i) + "\": {\"mass\": \"1\", \"center\": [\"q" +
+           std::to_string(i) + "\", \"0\", \"0\"]}";
+  big += "}, \"state\": {";
+  for (int i = 1; i <= 7; ++i)
+    big += std::string(i > 1 ? ", " : "") + "\"q" + std::to_string(i) + "\": \"0\", \"q" + std::to_string(i) + "_dot\": \"1\"";
+  big += "}}";
+  const std::string big_scene = scene_file("fourteen", big);
+  expect_bad_input("enclose " + big_scene + " --t-end 1 --out " + out, "enclose");
+  BOOST_TEST(run("simulate " + big_scene + " --t-end 1 --quiet --out " + out + "_big").status == 0);
   // A state the scene refuses is refused as by eval (theta = 0: the Euler angles are singular).
   expect_bad_input("simulate " +
                        scene_file("top_upright", "{\"model\": \"heavy_top\", \"top\": {\"A\": \"0.08\", \"C\": \"0.02\", "
@@ -908,9 +923,110 @@ BOOST_AUTO_TEST_CASE(reference_along_a_trajectory_takes_the_states_of_the_motion
     ++n;
   }
   BOOST_TEST(n == 11);
+  // A constrained system without solve_speeds: its states could not name the speeds they leave out.
   expect_bad_input("reference " + std::string(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk.json") +
-                       " --trajectory 2 --every 0.5 --out " + out, "--trajectory");
+                       " --trajectory 2 --every 0.5 --out " + out, "solve_speeds");
   expect_bad_input("reference " + scene + " --trajectory 2 --out " + out, "--every");
   expect_bad_input("reference " + scene + " --trajectory 2 --every 3 --out " + out, "--every");
   expect_bad_input("reference " + scene + " --trajectory -2 --every 1 --out " + out, "--trajectory");
+}
+
+namespace {
+/// The last row of an enclose's steps.csv, by column name.
+std::map<std::string, std::string> last_step(const std::string& dir) {
+  const auto rows = csv_rows(dir + "/steps.csv");
+  std::map<std::string, std::string> m;
+  if (rows.size() < 2) return m;
+  for (std::size_t i = 0; i < rows[0].size() && i < rows.back().size(); ++i) m[rows[0][i]] = rows.back()[i];
+  return m;
+}
+/// Whether [lo1, hi1] and [lo2, hi2] (decimals) meet, compared exactly (as rationals in MPFR at 400 bits).
+bool meet(const std::string& lo1, const std::string& hi1, const std::string& lo2, const std::string& hi2) {
+  auto less_eq = [](const std::string& a, const std::string& b) {
+    mpfr_t x, y;
+    mpfr_init2(x, 400);
+    mpfr_init2(y, 400);
+    mpfr_set_str(x, a.c_str(), 10, MPFR_RNDN);
+    mpfr_set_str(y, b.c_str(), 10, MPFR_RNDN);
+    const bool r = mpfr_lessequal_p(x, y);
+    mpfr_clear(x);
+    mpfr_clear(y);
+    return r;
+  };
+  return less_eq(lo1, hi2) && less_eq(lo2, hi1);
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(system_files_move_as_their_dedicated_models) {
+  // The paper's scenes as system files (one generic path) and as their dedicated models: the
+  // enclosures at T meet in every component they share (a system file's own coordinates and
+  // speeds are named as the scene's).  Mutation: the heavy top's system file with l = 0.21
+  // instead of 0.2 gives enclosures that do not meet.
+  struct pair_ {
+    std::string model, system, T;
+    std::vector<std::pair<std::string, std::string>> shared;  // model column, system column
+  };
+  const std::vector<pair_> pairs = {
+      {"euler_body.json", "system_euler_body.json", "5", {{"p", "p"}, {"q", "q"}, {"r", "r"}}},
+      {"heavy_top.json", "system_heavy_top.json", "1",
+       {{"psi", "psi"}, {"theta", "theta"}, {"phi", "phi"}, {"psi_dot", "psi_dot"}, {"theta_dot", "theta_dot"}, {"phi_dot", "phi_dot"}}},
+      {"top_on_cone.json", "system_top_on_cone.json", "0.5",
+       {{"theta", "theta"}, {"phi", "phi"}, {"theta_dot", "theta_dot"}, {"phi_dot", "phi_dot"}}}};
+  for (const auto& p : pairs) {
+    const std::string a = (work / ("pair_model_" + p.model)).string(), b = (work / ("pair_system_" + p.system)).string();
+    const outcome ra = run("enclose " APPELL_SOURCE_DIR "/data/scenes/" + p.model + " --t-end " + p.T + " --quiet --out " + a);
+    const outcome rb = run("enclose " APPELL_SOURCE_DIR "/data/scenes/" + p.system + " --t-end " + p.T + " --quiet --out " + b);
+    BOOST_TEST_REQUIRE(ra.status == 0, ra.err);
+    BOOST_TEST_REQUIRE(rb.status == 0, rb.err);
+    const auto ea = last_step(a), eb = last_step(b);
+    for (const auto& [ca, cb] : p.shared) {
+      BOOST_TEST_REQUIRE(ea.count(ca + "_lo") == 1u, p.model << " has no " << ca);
+      BOOST_TEST_REQUIRE(eb.count(cb + "_lo") == 1u, p.system << " has no " << cb);
+      BOOST_TEST(meet(ea.at(ca + "_lo"), ea.at(ca + "_hi"), eb.at(cb + "_lo"), eb.at(cb + "_hi")),
+                 p.model << " " << ca << " [" << ea.at(ca + "_lo") << ", " << ea.at(ca + "_hi") << "] vs " << p.system << " ["
+                         << eb.at(cb + "_lo") << ", " << eb.at(cb + "_hi") << "]");
+    }
+  }
+  std::string mutated = slurp(APPELL_SOURCE_DIR "/data/scenes/system_heavy_top.json");
+  mutated.replace(mutated.find("\"l\": \"0.2\""), 10, "\"l\": \"0.21\"");
+  // the state's x, y, z follow l: the pivot's constraints are refused unless projected
+  mutated.replace(mutated.find("\"state\": {"), 10, "\"project\": \"1\", \"state\": {");
+  const std::string c = (work / "pair_mutant").string();
+  const outcome rc = run("enclose " + scene_file("mutant_top", mutated) + " --t-end 1 --quiet --out " + c);
+  BOOST_TEST_REQUIRE(rc.status == 0, rc.err);
+  const auto ea = last_step((work / "pair_model_heavy_top.json").string()), ec = last_step(c);
+  BOOST_TEST(!meet(ea.at("theta_lo"), ea.at("theta_hi"), ec.at("theta_lo"), ec.at("theta_hi")));
+}
+
+BOOST_AUTO_TEST_CASE(a_system_file_moves_with_its_reactions_and_invariants) {
+  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/system_chaplygin_sleigh.json";
+  const std::string e = (work / "sleigh_enclose").string(), s = (work / "sleigh_simulate").string();
+  std::filesystem::remove_all(e);
+  std::filesystem::remove_all(s);
+  const outcome re = run("enclose " + scene + " --t-end 2 --quiet --out " + e);
+  BOOST_TEST_REQUIRE(re.status == 0, re.err);
+  const auto rows = csv_rows(e + "/steps.csv");
+  BOOST_TEST_REQUIRE(rows.size() > 2u);
+  const std::vector<std::string>& h = rows[0];
+  for (const std::string col : {"x_lo", "theta_hi", "u_lo", "w_hi", "u_dot_lo", "v_dot_lo", "v_lo", "knife_reaction_lo",
+                                "knife_reaction_hi", "energy_lo"})
+    BOOST_TEST((std::find(h.begin(), h.end(), col) != h.end()), "steps.csv lacks " << col);
+  BOOST_TEST((std::find(h.begin(), h.end(), "v_over_lo") == h.end()));  // v is solved, not a state component
+  const outcome rs = run("simulate " + scene + " --t-end 2 --quiet --out " + s);
+  BOOST_TEST_REQUIRE(rs.status == 0, rs.err);
+  const std::string summary = slurp(s + "/summary.json");
+  BOOST_TEST(summary.find("\"energy\"") != std::string::npos);
+  // a holonomic constraint's drift is reported as the largest |residual| (the bead's wire)
+  const outcome rw = run("simulate " APPELL_SOURCE_DIR "/data/scenes/system_bead_on_rotating_wire.json --t-end 1 --quiet --out " + s + "_wire");
+  BOOST_TEST_REQUIRE(rw.status == 0, rw.err);
+  const std::string ws = slurp(s + "_wire/summary.json");
+  BOOST_TEST(ws.find("\"wire_residual\"") != std::string::npos);
+  BOOST_TEST(ws.find("\"max_abs_value\"") != std::string::npos);
+  // horizon and reference --trajectory run a system file too (solve_speeds given)
+  const outcome rt = run("reference " + scene + " --trajectory 1 --every 0.5 --scalar interval --out " + s + "_ref");
+  BOOST_TEST_REQUIRE(rt.status == 0, rt.err);
+  const auto ref = csv_rows(s + "_ref/reference.csv");
+  BOOST_TEST(ref.size() > 3u);
+  const outcome rh = run("horizon " + scene + " --t-end 1 --every 0.5 --scalars double --quiet --out " + s + "_horizon");
+  BOOST_TEST_REQUIRE(rh.status == 0, rh.err);
 }

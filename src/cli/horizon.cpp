@@ -2,11 +2,9 @@
 //
 // Each point scalar integrates the scene with `simulate`'s defaults (order and tolerance from its
 // precision); its state at t = 0, DT, 2 DT, ... is compared with a reference at 256 bits:
-//   - Euler's free body with I1 < I2 < I3 and omega(0) = (a, 0, c), M^2 > 2 E I2: the closed form
-//     in Jacobi elliptic functions (ode/closed_forms.hpp; Boost.Math in MPFR at 256 bits), at the
-//     very time each scalar reached (its t, converted exactly);
-//   - the heavy top: its nutation (theta, theta') in Jacobi elliptic functions (psi and phi would
-//     need elliptic integrals of the third kind: not compared);
+//   - the model's closed form where it knows one (io/model_motion.hpp: Euler's free body in
+//     Jacobi elliptic functions, the heavy top's nutation), at the very time each scalar reached
+//     (its t, converted exactly), on the components it gives;
 //   - any other scene: simulate in mpfr at 256 bits (its default order, 60, tolerance 2^-257), at the same
 //     output indices.
 // The error at t is max_i |x_i - ref_i| / max(1, |ref_i|).  Brouwer's law, the goal line, is the
@@ -23,9 +21,6 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "appell/io/models/euler_body.hpp"
-#include "appell/io/models/heavy_top.hpp"
-#include "appell/ode/closed_forms.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 #include "files.hpp"
@@ -35,33 +30,7 @@ namespace appell::cli {
 
 namespace {
 
-using ref_t = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<256>, boost::multiprecision::et_off>;
-
-/// The closed form of Euler's body when the scene is one it covers.
-std::optional<ode::euler_free_body_solution<ref_t>> euler_closed_form(const scene_input& scene) {
-  if (scene.model != "euler_body") return std::nullopt;
-  const auto& in = scene.as<euler_body_input>();
-  for (const auto& f : in.torque)
-    if (ref_t(f.text) != 0) return std::nullopt;
-  const ref_t I1(in.inertia[0].text), I2(in.inertia[1].text), I3(in.inertia[2].text);
-  const ref_t a(in.omega[0].text), b(in.omega[1].text), c(in.omega[2].text);
-  if (b != 0 || !ode::euler_free_body_solution<ref_t>::applies(I1, I2, I3, a, c)) return std::nullopt;
-  return ode::euler_free_body_solution<ref_t>(I1, I2, I3, a, c);
-}
-
-/// The heavy top's nutation in closed form (theta, theta' compared; psi and phi are not).
-std::optional<ode::heavy_top_nutation<ref_t>> top_closed_form(const scene_input& scene) {
-  if (scene.model != "heavy_top") return std::nullopt;
-  const auto& in = scene.as<heavy_top_input>();
-  try {
-    return ode::heavy_top_nutation<ref_t>(ref_t(in.A.text), ref_t(in.C.text),
-                                          ref_t(in.mass.text) * ref_t(in.gravity.text) * ref_t(in.l.text),
-                                          ref_t(in.theta.text), ref_t(in.psi_dot.text), ref_t(in.theta_dot.text),
-                                          ref_t(in.phi_dot.text));
-  } catch (const std::invalid_argument&) {
-    return std::nullopt;  // no gravity or a steady precession: the 256-bit simulate instead
-  }
-}
+using ref_t = motion_closed_form::value;
 
 std::string digits_text(double err) {
   if (!(err > 0)) return ">= all";
@@ -108,11 +77,8 @@ int horizon(const horizon_options& given) {
     if (it->rigorous) throw input_error("--scalars: the study runs point scalars; " + s + " is an interval type (see enclose)");
   }
   const scene_input scene = read_scene_file(o.scene);
-  const auto closed = euler_closed_form(scene);
-  const auto top = top_closed_form(scene);
-  double period = 0;
-  if (closed) period = static_cast<double>(closed->period());
-  if (top) period = static_cast<double>(top->period());
+  const std::optional<motion_closed_form> closed = motion_closed_form_of(scene);  // the model's, where it has one
+  const double period = closed ? static_cast<double>(closed->period) : 0;
   if (o.every.empty()) o.every = to_decimal(period > 0 ? std::min(period, t_end / 10) : t_end / 1000);
   const double every = positive_decimal("--every", o.every);
   if (every > t_end) throw input_error("--every: the output step " + o.every + " is larger than the horizon " + o.t_end);
@@ -127,11 +93,8 @@ int horizon(const horizon_options& given) {
   std::string reference_kind;
   std::vector<std::size_t> compared;  // the state's components compared
   if (closed) {
-    reference_kind = "closed form (Jacobi elliptic functions, MPFR 256 bits)";
-    compared = {0, 1, 2};
-  } else if (top) {
-    reference_kind = "closed form of the nutation (Jacobi elliptic functions, MPFR 256 bits; theta and theta' compared)";
-    compared = {1, 4};
+    reference_kind = closed->kind;
+    compared = closed->compared;
   } else {
     reference_kind = "simulate in mpfr at 256 bits";
     reference = with_scalar("mpfr", 256u, [&]<class T>(std::type_identity<T>) {
@@ -147,11 +110,7 @@ int horizon(const horizon_options& given) {
     for (std::size_t i = 0; i < tr.t.size(); ++i) {
       std::vector<ref_t> truth;
       if (closed) {
-        const auto w = closed->at(ref_t(tr.t[i]));
-        truth.assign(w.begin(), w.end());
-      } else if (top) {
-        const auto w = top->at(ref_t(tr.t[i]));
-        truth.assign(w.begin(), w.end());
+        truth = closed->at(ref_t(tr.t[i]));
       } else {
         if (i >= reference.x.size()) break;
         for (const auto& v : reference.x[i]) truth.emplace_back(v);

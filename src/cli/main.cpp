@@ -49,14 +49,15 @@ constexpr const char* usage_text =
     "  score: another implementation's values (CSV: state, then columns named as appell's results)\n"
     "         against a reference: inside, correct digits, within tolerance; exit 0 iff all within\n"
     "  simulate: adaptive Taylor steps in a point scalar; DIR/trajectory.csv (state, results, invariants\n"
-    "            every DT), summary.json, drift.png (models euler_body, heavy_top)\n"
+    "            every DT), summary.json, drift.png\n"
     "  enclose: a rigorous enclosure of the motion up to T; DIR/steps.csv (each step, the state at its end\n"
     "           and over it, the results and invariants over it), summary.json, widths.png; exit 3 if it\n"
     "           stops before T (what was enclosed is still written, marked incomplete)\n"
     "  horizon: the long-horizon study: each point scalar in LIST (default double,long-double,dd,float128)\n"
     "           against a 256-bit reference (closed form where known); the error against time, Brouwer's\n"
     "           law as the goal line, digits kept per decade of periods; DIR/horizon.csv, summary.json,\n"
-    "           horizon.png\n";
+    "           horizon.png\n"
+    "  simulate, enclose, horizon and reference --trajectory move the models: ";
 
 struct options {
   std::string scene;
@@ -99,7 +100,7 @@ int main(int argc, char** argv) {
   if (argc < 2) return usage("no command");
   const std::string command = argv[1];
   if (command == "--help" || command == "-h" || command == "help") {
-    std::cout << usage_text;
+    std::cout << usage_text << appell::cli::moving_model_names() << "\n";
     return 0;
   }
   if (command == "extremes") {

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "appell/io/model_motion.hpp"
 #include "appell/io/scene.hpp"
 
 namespace appell::cli {
@@ -47,9 +48,14 @@ struct motion_outcome {
   std::string summary;  ///< the lines printed on stdout
 };
 
-/// The run in scalar T (instantiated per standard scalar in generated units).
+/// The run in scalar T of a scene whose model moves (io/model_motion.hpp): the model found in
+/// the list CMake generates from APPELL_MODELS (motion_dispatch.cpp); input_error naming
+/// `model` for one that does not move.
 template <Scalar T>
 motion_outcome run_motion(const scene_input& scene, const motion_options& o);
+/// The same for one model, instantiated per model and scalar in generated units (motion_run.hpp).
+template <class Model, Scalar T>
+motion_outcome run_model_motion(const scene_input& scene, const motion_options& o);
 
 /// One scalar's trajectory for `appell horizon`: the states at t = 0, every, 2 every, ... as
 /// exact decimals of the scalar's values (lower_string: a point's value, written in full).
@@ -64,18 +70,22 @@ struct horizon_track {
 };
 
 /// Runs `simulate` on the scene in scalar T (default order and tolerance) from 0 to t_end with
-/// outputs every `every` (decimals); instantiated with run_motion.
+/// outputs every `every` (decimals).
 template <Scalar T>
 horizon_track run_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every, bool quiet);
+template <class Model, Scalar T>
+horizon_track run_model_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every,
+                                      bool quiet);
 
-/// The scene fields of a model's motion state, in the order of its problem's state (empty: no motion).
-inline std::vector<std::string> motion_state_fields(const std::string& model) {
-  if (model == "euler_body") return {"omega[0]", "omega[1]", "omega[2]"};
-  if (model == "heavy_top") return {"psi", "theta", "phi", "psi_dot", "theta_dot", "phi_dot"};
-  if (model == "top_on_cone") return {"theta", "phi", "theta_dot", "phi_dot"};
-  if (model == "rolling_sphere") return {"center[0]", "center[1]", "center[2]", "omega[0]", "omega[1]", "omega[2]"};
-  return {};
-}
+/// The scene fields of the model's motion state, in the order of its state (input_error naming
+/// `model` when the model does not move).
+std::vector<std::string> motion_state_fields(const scene_input& scene);
+
+/// The scene's motion in closed form where its model knows it (horizon's reference), else none.
+std::optional<motion_closed_form> motion_closed_form_of(const scene_input& scene);
+
+/// The models that move, in the registry's order ("euler_body, heavy_top, ...").
+std::string moving_model_names();
 
 /// A positive finite decimal, or input_error naming the flag.
 double positive_decimal(const std::string& flag, const std::string& text);

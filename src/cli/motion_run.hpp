@@ -1,5 +1,6 @@
-// The body of `appell simulate` / `appell enclose` in one scalar: included by
-// the generated units (one per standard scalar; CMakeLists.txt).
+// The body of `appell simulate` / `appell enclose` / the horizon's tracks for one
+// model in one scalar: included by the generated units (CMakeLists.txt), each of
+// which includes the models' motion headers first (io/model_motion.hpp).
 #pragma once
 
 #include <unistd.h>
@@ -16,10 +17,7 @@
 #include "files.hpp"
 #include "motion.hpp"
 
-#include "appell/io/models/euler_body.hpp"
-#include "appell/io/models/heavy_top.hpp"
-#include "appell/io/models/rolling_sphere.hpp"
-#include "appell/io/models/top_on_cone.hpp"
+#include "appell/io/model_motion.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/taylor.hpp"
 
@@ -54,6 +52,20 @@ class progress_meter {
   std::chrono::steady_clock::time_point start_, last_;
   bool shown_ = false;
 };
+
+/// The state as the scene gives it.  A problem that integrates other variables (the heavy top
+/// in Resal's speeds) says so with reported(x) and reported_names(); the others report x itself,
+/// named by state_names() (a padded state: its first state_names().size() components).
+template <class P>
+std::vector<std::string> reported_names(const P& prob) {
+  if constexpr (requires { prob.reported_names(); }) return prob.reported_names();
+  else return prob.state_names();
+}
+template <class P, class S>
+vector_t<S> reported(const P& prob, const vector_t<S>& x) {
+  if constexpr (requires { prob.reported(x); }) return prob.reported(x);
+  else return x;
+}
 
 template <class S>
 void column_names(const std::vector<ode::named_values<S>>& group, const std::string& suffix, std::vector<std::string>& out) {
@@ -107,11 +119,16 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
   const int order = o.order.value_or(default_order<T>());
   const double tol = o.tol.value_or(default_tol<T>());
   std::vector<std::string> header{"t"};
-  for (const auto& s : P::state_names()) header.push_back(s);
+  const std::vector<std::string> names = reported_names(prob);
+  for (const auto& s : names) header.push_back(s);
   std::vector<ode::sample<T>> rows;
   progress_meter meter("simulate", approx_double(t_end), o.quiet);
   const ode::simulate_stats st =
-      ode::simulate(prob, x0, t_end, every, order, tol, [&](const ode::sample<T>& s) { rows.push_back(s); },
+      ode::simulate(prob, x0, t_end, every, order, tol,
+                    [&](const ode::sample<T>& s) {
+                      rows.push_back(s);
+                      rows.back().x = reported(prob, s.x);
+                    },
                     [&](double f) { meter(f); });
   column_names(rows.front().results, "", header);
   column_names(rows.front().invariants, "", header);
@@ -124,7 +141,7 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
   std::vector<double> worst(rows.front().invariants.size(), 0.0);
   for (const auto& r : rows) {
     csv << to_string(r.t);
-    for (Eigen::Index i = 0; i < r.x.size(); ++i) csv << "," << to_string(r.x(i));
+    for (std::size_t i = 0; i < names.size(); ++i) csv << "," << to_string(r.x(static_cast<Eigen::Index>(i)));
     for (const auto& g : r.results)
       for (const T& v : g.values) csv << "," << to_string(v);
     for (const auto& g : r.invariants)
@@ -149,8 +166,7 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
                    {"final", to_string(rows.back().invariants[q].values[0])},
                    {rows.front().invariants[q].zero_in_truth ? "max_abs_value" : "max_relative_drift", worst[q]}});
   nlohmann::json final_state = nlohmann::json::object();
-  for (std::size_t i = 0; i < P::state_names().size(); ++i)
-    final_state[P::state_names()[i]] = to_string(rows.back().x(static_cast<Eigen::Index>(i)));
+  for (std::size_t i = 0; i < names.size(); ++i) final_state[names[i]] = to_string(rows.back().x(static_cast<Eigen::Index>(i)));
   nlohmann::json summary = {{"command", "simulate"},
                             {"scene", o.scene},
                             {"model", scene.model},
@@ -216,11 +232,13 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   const int order = o.order.value_or(default_order<I>());
   const double tol = o.tol.value_or(default_tol<I>());
   std::vector<std::string> header{"t0", "t1"};
-  for (const auto& s : P::state_names()) {
+  const std::vector<std::string> names = reported_names(prob);  // the state's components (a padded state's without the padding)
+  const auto n = static_cast<Eigen::Index>(names.size());
+  for (const auto& s : names) {
     header.push_back(s + "_lo");
     header.push_back(s + "_hi");
   }
-  for (const auto& s : P::state_names()) {
+  for (const auto& s : names) {
     header.push_back(s + "_over_lo");
     header.push_back(s + "_over_hi");
   }
@@ -231,7 +249,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   std::vector<double> worst_over;  // per result/invariant value: largest width over a step
   std::vector<std::string> value_names;
   std::size_t result_values = 0;  // value_names: the results' first, then the invariants'
-  vector_t<I> last_end = x0;
+  vector_t<I> last_end = reported(prob, x0);
   progress_meter meter("enclose", approx_double(t_end), o.quiet);
   const ode::enclose_stats st = ode::enclose(
       prob, x0, t_end, order, tol, o.max_width, 2,
@@ -250,8 +268,9 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
           first = false;
         }
         body << lower_string(s.t0) << "," << upper_string(s.t1);
-        for (Eigen::Index i = 0; i < s.end.size(); ++i) body << "," << bounds(s.end(i));
-        for (Eigen::Index i = 0; i < s.over.size(); ++i) body << "," << bounds(s.over(i));
+        const vector_t<I> end = reported(prob, s.end), over = reported(prob, s.over);
+        for (Eigen::Index i = 0; i < n; ++i) body << "," << bounds(end(i));
+        for (Eigen::Index i = 0; i < n; ++i) body << "," << bounds(over(i));
         std::size_t v = 0;
         double wr = 0;  // the invariants' largest width over the step (their uncertainty: constant in truth)
         auto emit_group = [&](const std::vector<ode::named_values<I>>& g, bool invariant) {
@@ -267,10 +286,10 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
         emit_group(s.results, false);
         emit_group(s.invariants, true);
         body << "\n";
-        const double we = ode::detail::max_width(s.end);
+        const double we = ode::detail::max_width(end);
         worst_end = std::max(worst_end, we);
         dat << approx_double(s.t1) << " " << std::max(we, 1e-300) << " " << std::max(wr, 1e-300) << "\n";
-        last_end = s.end;
+        last_end = end;
       },
       [&](double f) { meter(f); });
   std::ostringstream csv;
@@ -278,8 +297,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   for (const auto& h : group_header) csv << "," << h;
   csv << "\n" << body.str();
   nlohmann::json final_state = nlohmann::json::object();
-  for (std::size_t i = 0; i < P::state_names().size(); ++i)
-    final_state[P::state_names()[i]] = to_string(last_end(static_cast<Eigen::Index>(i)));
+  for (std::size_t i = 0; i < names.size(); ++i) final_state[names[i]] = to_string(last_end(static_cast<Eigen::Index>(i)));
   nlohmann::json widths = nlohmann::json::object();
   for (std::size_t i = 0; i < value_names.size(); ++i) widths[value_names[i]] = worst_over[i];
   const double final_width = ode::detail::max_width(last_end);
@@ -341,7 +359,22 @@ motion_outcome run_problem(const P& prob, const vector_t<T>& x0, const scene_inp
     if (o.command != "enclose")
       throw input_error("--scalar: simulate runs point scalars (double, long-double, dd, float128, mpfr); use enclose for " +
                         std::string(scalar_traits<T>::name));
-    return enclose_problem<T>(prob, x0, scene, o);
+    if constexpr (requires { prob.template with_capacity<6>(); }) {
+      // A state whose size is known at run time (a system file): its Jacobians and slopes are
+      // carried in the smallest capacity that holds it, the state padded with constant zeros.
+      const int n = prob.size();
+      auto padded = [&](Eigen::Index d) {
+        vector_t<T> x = vector_t<T>::Zero(d);
+        x.head(n) = x0.head(n);
+        return x;
+      };
+      if (n <= 6) return enclose_problem<T>(prob.template with_capacity<6>(), padded(6), scene, o);
+      if (n <= 12) return enclose_problem<T>(prob.template with_capacity<12>(), padded(12), scene, o);
+      throw input_error("enclose: the motion's state has " + std::to_string(n) +
+                        " components; enclose carries at most 12 (the coordinates, the free speeds and t)");
+    } else {
+      return enclose_problem<T>(prob, x0, scene, o);
+    }
   } else {
     if (o.command != "simulate")
       throw input_error("--scalar: enclose needs an interval scalar (interval or mpfi), not " + std::string(scalar_traits<T>::name));
@@ -351,71 +384,49 @@ motion_outcome run_problem(const P& prob, const vector_t<T>& x0, const scene_inp
 
 }  // namespace motion_detail
 
-namespace motion_detail {
-/// Calls f(problem, x0) with the scene's motion problem in T.
-template <Scalar T, class F>
-auto with_problem(const scene_input& scene, const std::string& command, F&& f) {
-  if (scene.model == "euler_body") {
-    const auto m = euler_body_model::prepare<T>(scene.as<euler_body_input>());
-    return f(ode::euler_body_problem<T>{m.body}, vector_t<T>(m.omega));
-  }
-  if (scene.model == "heavy_top") {
-    const auto m = heavy_top_model::prepare<T>(scene.as<heavy_top_input>());
-    vector_t<T> x0(6);
-    x0 << m.state.psi, m.state.theta, m.state.phi, m.state.psi_dot, m.state.theta_dot, m.state.phi_dot;
-    return f(ode::heavy_top_problem<T>{m.A, m.C, m.mass, m.l, m.g}, x0);
-  }
-  if (scene.model == "top_on_cone") {
-    const auto m = top_on_cone_model::prepare<T>(scene.as<top_on_cone_input>());
-    vector_t<T> x0(4);
-    x0 << m.theta, m.phi, m.theta_dot, m.phi_dot;
-    return f(ode::top_on_cone_problem<T>{m.top, m.cone}, x0);
-  }
-  if (scene.model == "rolling_sphere") {
-    const auto m = rolling_sphere_model::prepare<T>(scene.as<rolling_sphere_input>());
-    vector_t<T> x0(6);
-    x0 << m.c(0), m.c(1), m.c(2), m.omega(0), m.omega(1), m.omega(2);
-    return f(ode::rolling_sphere_problem<T>{m.M, m.A, m.a, m.surface, m.F, m.tau}, x0);
-  }
-  throw input_error("model: " + command + " knows the models euler_body, heavy_top, top_on_cone and rolling_sphere; '" +
-                    scene.model + "' has no motion yet");
-}
-}  // namespace motion_detail
-
-template <Scalar T>
-motion_outcome run_motion(const scene_input& scene, const motion_options& o) {
-  motion_detail::requested_bits = scalar_traits<T>::precision_bits();
-  const evaluation_scope<T> scope;
-  return motion_detail::with_problem<T>(scene, o.command, [&](const auto& prob, const vector_t<T>& x0) {
+/// The motion of Model's scene in T (the model moves: io/model_motion.hpp).
+template <class Model, Scalar T>
+motion_outcome run_model_motion(const scene_input& scene, const motion_options& o) {
+  if constexpr (!moving_model<Model>) {
+    throw std::logic_error("run_model_motion: model " + scene.model + " does not move");
+  } else {
+    motion_detail::requested_bits = scalar_traits<T>::precision_bits();
+    const evaluation_scope<T> scope;
+    const auto m = Model::template prepare<T>(scene.as<typename Model::input>());
+    const auto [prob, x0] = model_motion<Model>::template start<T>(m);
     return motion_detail::run_problem<T>(prob, x0, scene, o);
-  });
+  }
 }
 
-template <Scalar T>
-horizon_track run_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every, bool quiet) {
+template <class Model, Scalar T>
+horizon_track run_model_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every,
+                                      bool quiet) {
   horizon_track tr;
   if constexpr (scalar_traits<T>::is_interval) {
     throw input_error("--scalars: the study runs point scalars, not " + std::string(scalar_traits<T>::name));
+  } else if constexpr (!moving_model<Model>) {
+    throw std::logic_error("run_model_horizon_track: model " + scene.model + " does not move");
   } else {
     const evaluation_scope<T> scope;
     tr.scalar = scalar_traits<T>::name;
     tr.bits = scalar_traits<T>::precision_bits();
     tr.order = motion_detail::default_order<T>();
     motion_detail::progress_meter meter("horizon (" + tr.scalar + ")", from_decimal<double>(t_end), quiet);
-    motion_detail::with_problem<T>(scene, "horizon", [&](const auto& prob, const vector_t<T>& x0) {
-      const ode::simulate_stats st = ode::simulate(
-          prob, x0, from_decimal<T>(t_end), from_decimal<T>(every), tr.order, motion_detail::default_tol<T>(),
-          [&](const ode::sample<T>& s) {
-            tr.t.push_back(lower_string(s.t));
-            std::vector<std::string> v;
-            for (Eigen::Index i = 0; i < s.x.size(); ++i) v.push_back(lower_string(s.x(i)));
-            tr.x.push_back(std::move(v));
-          },
-          [&](double f) { meter(f); });
-      tr.steps = st.steps;
-      tr.seconds = st.seconds;
-      return 0;
-    });
+    const auto m = Model::template prepare<T>(scene.as<typename Model::input>());
+    const auto [prob, x0] = model_motion<Model>::template start<T>(m);
+    const std::size_t n = motion_detail::reported_names(prob).size();
+    const ode::simulate_stats st = ode::simulate(
+        prob, x0, from_decimal<T>(t_end), from_decimal<T>(every), tr.order, motion_detail::default_tol<T>(),
+        [&](const ode::sample<T>& s) {
+          tr.t.push_back(lower_string(s.t));
+          std::vector<std::string> v;
+          const vector_t<T> x = motion_detail::reported(prob, s.x);
+          for (std::size_t i = 0; i < n; ++i) v.push_back(lower_string(x(static_cast<Eigen::Index>(i))));
+          tr.x.push_back(std::move(v));
+        },
+        [&](double f) { meter(f); });
+    tr.steps = st.steps;
+    tr.seconds = st.seconds;
   }
   return tr;
 }

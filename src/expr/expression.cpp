@@ -176,6 +176,31 @@ bool expression::is_zero() const {
   return n.kind == op::number && n.number.find_first_not_of("0.") == std::string::npos;
 }
 
+bool expression::vanishes_when_zero(const std::vector<int>& zero) const {
+  // z[i]: node i is 0 wherever the listed variables are, children first (smaller indices).
+  std::vector<char> z(nodes_.size(), 0);
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    const node& n = nodes_[i];
+    const auto at = [&](int k) { return k >= 0 && z[static_cast<std::size_t>(k)]; };
+    long k = 0;
+    switch (n.kind) {
+      case op::number: z[i] = n.number.find_first_not_of("0.") == std::string::npos; break;
+      case op::variable: z[i] = std::find(zero.begin(), zero.end(), n.var) != zero.end(); break;
+      case op::add:
+      case op::sub: z[i] = at(n.a) && at(n.b); break;
+      case op::mul: z[i] = at(n.a) || at(n.b); break;
+      case op::div:  // 0 / d is 0 where d is not 0 (where d is 0 the expression is refused anyway)
+      case op::neg:
+      case op::sin:
+      case op::tan:
+      case op::sqrt: z[i] = at(n.a); break;
+      case op::pow: z[i] = at(n.a) && is_integer(n.b, k) && k > 0; break;
+      default: z[i] = 0;
+    }
+  }
+  return z[static_cast<std::size_t>(root_)] != 0;
+}
+
 // Depth and unfolded size of every node, children first (a node's operands
 // always have smaller indices), saturating: linear in the number of nodes.
 void expression::check_limits() const {

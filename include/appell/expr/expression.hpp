@@ -64,6 +64,10 @@ class expression {
   /// Whether the expression is the number 0 as written (a derivative that vanishes
   /// structurally is written so).
   bool is_zero() const;
+  /// Whether the expression is 0, as written, wherever the variables `zero` are 0
+  /// (a proof from the tree, never from values: false when unsure).  Used to tell
+  /// that a constraint or a kinematic equation is homogeneous in the speeds.
+  bool vanishes_when_zero(const std::vector<int>& zero) const;
   std::string to_string() const;
   const std::string& where() const { return where_; }
   const std::vector<std::string>& variables() const { return variables_; }
@@ -325,7 +329,7 @@ class expression_tape {
       const entry& n = nodes_[i];
       switch (n.kind) {
         case expression::op::number:
-        case expression::op::pi: values[i] = S(constants_[i]); break;
+        case expression::op::pi: values[i] = detail::from_base<S>(constants_[i]); break;
         case expression::op::variable: values[i] = x[n.var]; break;
         default: {
           const S& a = values[static_cast<std::size_t>(n.a)];

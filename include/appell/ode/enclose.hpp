@@ -392,17 +392,24 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     if (!(upper(t) < lower(t_end))) break;  // t_end reached
     // Over X: the coefficients to p (the a priori enclosure's polynomial to p - 1; the step size
     // from the last two), and the slopes of the first q only (see the step end).
-    const series<I> cX = taylor_series(prob, X, p);
+    series<I> cX;
     const int q = std::min(p - 1, std::max(6, p / 2));
     std::vector<matrix_t<I>> DX;
     series<I> cc;  // the coefficients at the centre xh, to q: T_q(xh)
-    {
+    try {  // the motion may leave the right-hand side's domain (a square root of a negative, a
+           // solve that cannot be certified): the run stops there, what was enclosed kept
+      cX = taylor_series(prob, X, p);
       // The slopes about xh over X (hull with xh: the midpoint of the last step's enclosure
       // need not lie in the intersection of its boxes).  Their evaluation carries the series at
       // xh along (each slope's centre value), so it is not computed apart.
       vector_t<I> Xs(n);
       for (int i = 0; i < n; ++i) Xs(i) = detail::hull2(X(i), xh(i));
       taylor_series_slopes(prob, xh, Xs, q, DX, true, &cc);
+    } catch (const std::exception& e) {
+      if (!dynamic_cast<const certification_error*>(&e) && !dynamic_cast<const domain_error*>(&e)) throw;
+      st.complete = false;
+      st.reason = "the motion cannot be continued at t = " + std::to_string(approx_double(t)) + ": " + e.what();
+      break;
     }
     // The step: from the last coefficients at the centre, times what the last steps learned
     // (h_factor), then shrunk until the a priori enclosure holds and the remainder x_p(B) h^p is
@@ -422,6 +429,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     double hd = step_from_coefficients(cX, tol) * h_factor;
     if (h_next > 0) hd = std::min(hd, 2 * h_next);
     bool accepted = false, shrunk = false;
+    std::string refusal;  // why the last a priori enclosure was refused, if a solve or a domain refused it
     vector_t<I> Y(n), cpB(n), B(n);
     series<I> cB;
     I h;
@@ -430,7 +438,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
       if (hd < h_floor) {
         st.complete = false;
         st.reason = "step-size collapse at t = " + std::to_string(approx_double(t)) + " (no a priori enclosure with h >= " +
-                    std::to_string(h_floor) + ")";
+                    std::to_string(h_floor) + (refusal.empty() ? ")" : "; the last refusal: " + refusal + ")");
         break;
       }
       // h is a double with at most 20 significant bits: t + h stays exact for t on the same grid.
@@ -449,9 +457,11 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
       for (int it = 0; it < 8 && !ok; ++it) {
         try {  // over a box too wide the series may not be enclosed (a solve refuses): a smaller step
           cB = taylor_series(prob, B, p);
-        } catch (const certification_error&) {
+        } catch (const certification_error& e) {
+          refusal = e.what();
           break;
-        } catch (const domain_error&) {
+        } catch (const domain_error& e) {
+          refusal = e.what();
           break;
         }
         cpB = cB[static_cast<std::size_t>(p)];

@@ -125,6 +125,99 @@ struct heavy_top_problem {
   }
 };
 
+/// The heavy symmetric top on its pivot in Resal's speeds (Appell's quasi-velocities, paper
+/// sec. 5): x = (psi, theta, phi, p1, p2, p3) with p = (theta', psi' sin theta, psi' cos theta + phi'),
+/// the angular velocity on Resal's trihedron (n, e_z x n, e_z).  There the central inertia is the
+/// constant diag(A - m l^2, A - m l^2, C) and Appell's M = diag(A, A, C): the Gibbs-Appell path
+/// solves no matrix of theta over a step's box, the step's series are far tighter than in Euler
+/// rates (heavy_top_problem), and the spin sits in p3 alone.  The motion of the scene heavy_top
+/// (io/models/heavy_top_motion.hpp): reported() gives the scene's state (psi, theta, phi, psi',
+/// theta', phi') from x, and the results and invariants are those of heavy_top_problem.
+template <Scalar T>
+struct heavy_top_resal_problem {
+  T A, C, mass, l, g;
+  static constexpr int dim = 6;
+  static std::vector<std::string> state_names() { return {"psi", "theta", "phi", "p1", "p2", "p3"}; }
+  static std::vector<std::string> reported_names() { return heavy_top_problem<T>::state_names(); }
+
+  /// The top with its speeds p: q' = (p2 / sin theta, p1, p3 - p2 cos theta / sin theta).
+  struct system {
+    T A, C, mass, l, g;
+    static constexpr int max_speeds = 3;
+    int speeds() const { return 3; }
+    template <class S>
+    vector_t<S> qdot(const vector_t<S>& q, const vector_t<S>& p, const S&) const {
+      S st, ct;
+      sin_cos(q(1), st, ct);
+      const S psi_dot = p(1) / st;
+      vector_t<S> d(3);
+      d << psi_dot, p(0), S(p(2) - psi_dot * ct);
+      return d;
+    }
+    template <class S>
+    void bodies(const vector_t<S>& q, const vector_t<S>& p, const S&, std::vector<body_state<S>>& out) const {
+      S st, ct;
+      sin_cos(q(1), st, ct);
+      body_state<S> b;
+      b.mass = S(mass);
+      b.frame_rate = vec3<S>(p(0), p(1), S(p(1) * ct / st));  // theta' n + psi' e3 on the trihedron
+      b.omega = vec3<S>(p(0), p(1), p(2));
+      b.velocity = vec3<S>(S(l) * p(1), -(S(l) * p(0)), S(0));  // omega x (0, 0, l)
+      const S transverse = S(A) - S(mass) * S(l) * S(l);
+      b.inertia(0, 0) = transverse;
+      b.inertia(1, 1) = transverse;
+      b.inertia(2, 2) = S(C);
+      const S weight = S(mass) * S(g);
+      b.force = vec3<S>(S(0), -(weight * st), -(weight * ct));
+      out.push_back(b);
+    }
+  };
+  /// x from the scene's state (psi, theta, phi, psi', theta', phi').
+  static vector_t<T> from_euler_rates(const vector_t<T>& y) {
+    using std::sin, std::cos;
+    const T st = sin(y(1)), ct = cos(y(1));
+    vector_t<T> x(6);
+    x << y(0), y(1), y(2), y(4), T(y(3) * st), T(y(3) * ct + y(5));
+    return x;
+  }
+  /// The scene's state (psi, theta, phi, psi', theta', phi') from x.
+  template <class S>
+  static vector_t<S> reported(const vector_t<S>& x) {
+    S st, ct;
+    sin_cos(x(1), st, ct);
+    const S psi_dot = x(4) / st;
+    vector_t<S> y(6);
+    y << x(0), x(1), x(2), psi_dot, x(3), S(x(5) - psi_dot * ct);
+    return y;
+  }
+  template <class S>
+  vector_t<S> rhs(const vector_t<S>& x) const {
+    const typename heavy_top_resal_problem<S>::system sys{S(A), S(C), S(mass), S(l), S(g)};
+    const vector_t<S> q = x.head(3), p = x.tail(3);
+    const vector_t<S> qd = sys.qdot(q, p, S(0));
+    const vector_t<S> a = cotton_free_accelerations<4>(sys, q, p, S(0), 0);
+    vector_t<S> d(6);
+    d << qd(0), qd(1), qd(2), a(0), a(1), a(2);
+    return d;
+  }
+  /// heavy_top_problem's results at the scene's state (psi'', theta'', phi'' and the pivot force).
+  template <class S>
+  void results(const vector_t<S>& x, std::vector<named_values<S>>& out) const {
+    heavy_top_problem<T>{A, C, mass, l, g}.results(reported(x), out);
+  }
+  /// The energy 1/2 (A (p1^2 + p2^2) + C p3^2) + m g l cos theta, the momenta about the vertical,
+  /// A p2 sin theta + C p3 cos theta, and about the axis, C p3 (heavy_top_problem's, in p).
+  template <class S>
+  void invariants(const vector_t<S>& x, std::vector<named_values<S>>& out) const {
+    S st, ct;
+    sin_cos(x(1), st, ct);
+    const S sA(A), sC(C);
+    out.push_back({"energy", {(sA * (x(3) * x(3) + x(4) * x(4)) + sC * x(5) * x(5)) / S(2) + S(mass) * S(g) * S(l) * ct}});
+    out.push_back({"momentum_vertical", {sA * x(4) * st + sC * x(5) * ct}});
+    out.push_back({"momentum_axis", {sC * x(5)}});
+  }
+};
+
 /// Example I, the heavy top forced onto the cone psi = f(theta): x = (theta, phi, theta', phi').
 template <Scalar T>
 struct top_on_cone_problem {

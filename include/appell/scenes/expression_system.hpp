@@ -178,6 +178,11 @@ struct compiled_system {
     bool has_omega = false, body_axes = false, has_matrix = false;
     bool has_inertia = false;
     bool isotropic = false;  ///< inertia a multiple of the identity, as written (then R I R^T = I)
+    /// Symmetric about the axis of its last elementary rotation, as written (the two other
+    /// principal moments the same expression, no product of inertia): then described on the
+    /// axes before that rotation (Resal's trihedron for a top or a wheel), which carry the same
+    /// inertia, so that the spin angle enters no sine or cosine (bodies() below).
+    bool symmetric_last = false;
     template <class S>
     mat3<S> inertia_on_body_axes(const S* x) const {
       const auto I = [&](std::size_t k) { return inertia[k].at(x); };
@@ -255,6 +260,12 @@ struct compiled_system {
       c.isotropic = b.inertia[0] && b.inertia[1] && b.inertia[2] && !b.inertia[3] && !b.inertia[4] && !b.inertia[5] &&
                     b.inertia[0]->to_string() == b.inertia[1]->to_string() &&
                     b.inertia[0]->to_string() == b.inertia[2]->to_string();
+      if (!c.isotropic && !b.rotations.empty() && !b.inertia[3] && !b.inertia[4] && !b.inertia[5]) {
+        const int axis = b.rotations.back().first;
+        const auto& i1 = b.inertia[static_cast<std::size_t>((axis + 1) % 3)];
+        const auto& i2 = b.inertia[static_cast<std::size_t>((axis + 2) % 3)];
+        c.symmetric_last = i1 && i2 && i1->to_string() == i2->to_string();
+      }
       bodies.push_back(std::move(c));
     }
     for (const auto& k : d.constraints) {
@@ -295,7 +306,7 @@ struct compiled_system {
   std::vector<S> variables(const vector_t<S>& q, const vector_t<S>& u, const S& t) const {
     const system_variables& v = def->vars;
     std::vector<S> x(static_cast<std::size_t>(v.size()), S(0));
-    for (std::size_t i = 0; i < parameters.size(); ++i) x[i] = S(parameters[i]);
+    for (std::size_t i = 0; i < parameters.size(); ++i) x[i] = detail::from_base<S>(parameters[i]);
     for (int i = 0; i < v.coordinates; ++i) x[static_cast<std::size_t>(v.q(i))] = q(i);
     for (int j = 0; j < v.speeds && j < u.size(); ++j) x[static_cast<std::size_t>(v.u(j))] = u(j);
     x[static_cast<std::size_t>(v.t())] = t;
@@ -397,8 +408,10 @@ struct expression_system {
       for (std::size_t k = 0; k < m; ++k) {
         using std::sin, std::cos;
         const auto& [axis, angle] = b.rotations[k];
+        rate[k] = angle.rate(v, qd);
+        if (k + 1 == m && b.symmetric_last && !b.isotropic) continue;  // the spin's angle turns nothing (below)
         const S a = angle.value.at(v);
-        c[k] = cos(a), sn[k] = sin(a), rate[k] = angle.rate(v, qd);
+        c[k] = cos(a), sn[k] = sin(a);
       }
       auto turn = [&](std::size_t k, const vec3<S>& v, bool transpose) {  // R_k v or R_k^T v
         const int axis = b.rotations[k].first, i = (axis + 1) % 3, j = (axis + 2) % 3;
@@ -424,12 +437,22 @@ struct expression_system {
       }
       // The body's axes (a frame turning with omega): the inertia as given, exactly;
       // omega = R_m^T (... R_2^T (R_1^T 0 + r_1 e_1) + r_2 e_2 ...) + r_m e_m; v, force, couple turned.
+      // A body symmetric about its last rotation's axis stops one rotation short: the frame
+      // R_1 ... R_(m-1) turns with omega - r_m e_m and carries the same inertia (Resal's trihedron).
+      const std::size_t frames = b.symmetric_last ? m - 1 : m;
       vec3<S> w = vec3<S>::Zero();
-      for (std::size_t k = 0; k < m; ++k) {
+      for (std::size_t k = 0; k < frames; ++k) {
         w = vec3<S>(turn(k, w, true) + along(k));
         s.velocity = turn(k, s.velocity, true);
         s.force = turn(k, s.force, true);
         s.couple = turn(k, s.couple, true);
+      }
+      if (b.symmetric_last) {
+        s.frame_rate = w;
+        s.omega = vec3<S>(w + along(m - 1));
+        if (b.has_inertia) s.inertia = b.inertia_on_body_axes(v);
+        out.push_back(s);
+        continue;
       }
       s.omega = w;
       s.frame_rate = w;
@@ -629,7 +652,7 @@ std::pair<matrix_t<S>, vector_t<S>> wrench_normal_equations(const matrix_t<S>& J
   return {N, rhs};
 }
 
-template <Scalar T>
+template <class T>
 struct constraint_wrench_result {
   vec3<T> force;   ///< on the fixed axes, applied at the wrench's point
   vec3<T> moment;  ///< about that point, on the fixed axes
@@ -640,32 +663,33 @@ struct constraint_wrench_result {
 /// (Cotton's Q'_c, one per constraint): the unique (F, M) whose virtual power
 /// J_P^T F + J_w^T M is the constraints' generalized force sum_c A_c^T Q'_c
 /// (the normal equations J J^T (F; M) = J g, verified for interval types).
-template <Scalar T>
-std::vector<constraint_wrench_result<T>> constraint_wrenches(const compiled_system<T>& c, const vector_t<T>& q,
-                                                             const T& t, const vector_t<T>& reactions) {
-  std::vector<constraint_wrench_result<T>> out;
+/// S: T, or jets of T (the motion's results over a whole step).
+template <Scalar T, class S = T>
+std::vector<constraint_wrench_result<S>> constraint_wrenches(const compiled_system<T>& c, const vector_t<S>& q,
+                                                             const S& t, const vector_t<S>& reactions) {
+  std::vector<constraint_wrench_result<S>> out;
   if (c.wrenches.empty()) return out;
   const int n = c.def->vars.speeds, s = static_cast<int>(c.constraints.size());
-  const vector_t<T> u0 = vector_t<T>::Zero(n);
-  const std::vector<T> values = c.evaluate(c.constraint_tape, c.template variables<T>(q, u0, t));
-  matrix_t<T> A(s, n);
-  vector_t<T> a(s);
-  expression_constraints<T>{&c}.template eval<T>(q, t, A, a);
+  const vector_t<S> u0 = vector_t<S>::Zero(n);
+  const std::vector<S> values = c.evaluate(c.constraint_tape, c.template variables<S>(q, u0, t));
+  matrix_t<S> A(s, n);
+  vector_t<S> a(s);
+  expression_constraints<T>{&c}.template eval<S>(q, t, A, a);
   for (std::size_t k = 0; k < c.wrenches.size(); ++k) {
-    const matrix_t<T> J = point_twist_jacobian(c, c.wrenches[k], values.data());
-    vector_t<T> g = vector_t<T>::Zero(n);
+    const matrix_t<S> J = point_twist_jacobian<T, S>(c, c.wrenches[k], values.data());
+    vector_t<S> g = vector_t<S>::Zero(n);
     for (int r : c.def->wrenches[k].constraints)
       for (int j = 0; j < n; ++j) g(j) += A(r, j) * reactions(r);
     const auto [N, rhs] = wrench_normal_equations(J, g);
-    const vector_t<T> w = solve_spd(N, rhs);
-    T sq = T(0);
+    const vector_t<S> w = solve_spd(N, rhs);
+    S sq = S(0);
     for (int j = 0; j < n; ++j) {
-      T e = -g(j);
+      S e = -g(j);
       for (int r = 0; r < 6; ++r) e += J(r, j) * w(r);
       sq += sqr(e);
     }
     using std::sqrt;
-    out.push_back({vec3<T>(w(0), w(1), w(2)), vec3<T>(w(3), w(4), w(5)), T(sqrt(sq))});
+    out.push_back({vec3<S>(w(0), w(1), w(2)), vec3<S>(w(3), w(4), w(5)), S(sqrt(sq))});
   }
   return out;
 }

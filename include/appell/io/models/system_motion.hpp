@@ -1,0 +1,333 @@
+// appell/io/models/system_motion.hpp -- how a "system" file moves: the model
+// module's motion (io/model_motion.hpp), for simulate, enclose, horizon and
+// reference --trajectory.
+//
+// The state is x = (q, v_a[, t]): every coordinate, the free speeds v_a, and
+// the time when the system depends on it (carried as a component, t' = 1, so
+// that the integrators stay autonomous).  The free speeds are those the file
+// does not list in solve_speeds; without solve_speeds, those left free by
+// pivoting on the constraints' matrix at the initial state (speeds.hpp,
+// adapt_speeds).  At each evaluation of the right-hand side the other speeds
+// are solved from the constraints, A(q, t) u = a(q, t), so that every velocity
+// constraint holds exactly along the motion; then
+//   q'   = the file's kinematics at (q, u, t)   (q' = W u + w),
+//   v_a' = Cotton's free accelerations  (the Gibbs-Appell equations in the
+//          speeds adapted to the constraints, the free speeds' columns only:
+//          cotton_free_accelerations, the path `appell eval` runs).
+// A holonomic constraint f(q, t) = 0 is kept by its rate (A u = a is its time
+// derivative): f(q(t), t) is constant along the true motion, and is reported as
+// an invariant that is 0 in truth (its enclosure must contain 0 at every step).
+// This is the exact motion of the constrained system: nothing is projected or
+// stabilised, so an enclosure of x encloses the true motion.
+//
+// Results along the motion (each enclosed over whole steps by `enclose`): every
+// speed's acceleration (as eval names them), the solved speeds, each
+// constraint's reaction (Cotton's Q'_c) and each wrench's force and moment.
+// Invariants: the energy when it is conserved (energy_conserved below), and
+// the holonomic constraints' residuals.
+#pragma once
+
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "appell/io/model_motion.hpp"
+#include "appell/io/models/system.hpp"
+#include "appell/ode/problems.hpp"
+
+namespace appell {
+
+/// Whether the system's energy sum (m v^2 / 2 + omega . I omega / 2) - sum m g . G is a
+/// first integral, proved from the expressions as written: nothing depends on t, no
+/// applied force or couple but gravity, every body's centre is given (the potential needs
+/// it), and the kinematics and the nonholonomic constraints are homogeneous in the speeds
+/// (no constraint then does work: its rows read A(q) u = 0).  `why` receives the reason
+/// when it is not.
+inline bool energy_conserved(const system_definition& d, std::string* why = nullptr) {
+  auto no = [&](const std::string& reason) {
+    if (why) *why = reason;
+    return false;
+  };
+  const int t = d.vars.t();
+  std::vector<int> speeds;
+  for (int j = 0; j < d.vars.speeds; ++j) speeds.push_back(d.vars.u(j));
+  auto timed = [&](const shared_expression& e) { return e && e->depends_on(t); };
+  auto timed_d = [&](const differentiated_expression& e) { return bool(e.dt) || timed(e.value); };
+  for (const auto& g : d.gravity)
+    if (timed(g)) return no("gravity depends on t");
+  for (std::size_t i = 0; i < d.kinematics.size(); ++i) {
+    if (timed(d.kinematics[i])) return no("the kinematics depend on t");
+    if (d.kinematics[i] && !d.kinematics[i]->vanishes_when_zero(speeds))
+      return no("the kinematics are not homogeneous in the speeds");
+  }
+  for (const auto& b : d.bodies) {
+    for (const auto& f : b.force)
+      if (f) return no("body '" + b.name + "' has an applied force");
+    for (const auto& f : b.couple)
+      if (f) return no("body '" + b.name + "' has an applied couple");
+    if (timed(b.mass)) return no("a mass depends on t");
+    for (const auto& e : b.inertia)
+      if (timed(e)) return no("an inertia depends on t");
+    for (const auto& c : b.center)
+      if (timed_d(c)) return no("a centre depends on t");
+    for (const auto& [axis, angle] : b.rotations)
+      if (timed_d(angle)) return no("an orientation depends on t");
+    for (const auto& m : b.matrix)
+      if (b.has_matrix && timed_d(m)) return no("an orientation depends on t");
+    for (std::size_t i = 0; i < 3; ++i)
+      if (timed(b.omega[i]) || timed(b.velocity[i])) return no("a body's velocity depends on t");
+    const bool has_gravity = d.gravity[0] || d.gravity[1] || d.gravity[2];
+    if (has_gravity && !b.center[0].value && !b.center[1].value && !b.center[2].value && b.body_axes)
+      return no("body '" + b.name + "' has no centre to give its weight a potential");
+  }
+  for (const auto& c : d.constraints) {
+    if (c.holonomic) {
+      if (timed_d(c.f)) return no("constraint '" + c.name + "' depends on t");
+    } else if (c.body >= 0) {
+      for (std::size_t i = 0; i < 3; ++i)
+        if (timed(c.point[i]) || timed(c.direction[i])) return no("constraint '" + c.name + "' depends on t");
+    } else {
+      if (timed(c.g)) return no("constraint '" + c.name + "' depends on t");
+      if (!c.g->vanishes_when_zero(speeds))
+        return no("constraint '" + c.name + "' is not homogeneous in the speeds (its reaction may work)");
+    }
+  }
+  return true;
+}
+
+/// Whether any expression of the system depends on t (then t is carried in the state).
+inline bool depends_on_time(const system_definition& d) {
+  const int t = d.vars.t();
+  auto timed = [&](const shared_expression& e) { return e && e->depends_on(t); };
+  auto timed_d = [&](const differentiated_expression& e) { return bool(e.dt) || timed(e.value); };
+  for (const auto& g : d.gravity)
+    if (timed(g)) return true;
+  for (const auto& k : d.kinematics)
+    if (timed(k)) return true;
+  for (const auto& b : d.bodies) {
+    for (std::size_t i = 0; i < 3; ++i)
+      if (timed(b.force[i]) || timed(b.couple[i]) || timed(b.omega[i]) || timed(b.velocity[i]) || timed_d(b.center[i]))
+        return true;
+    if (timed(b.mass)) return true;
+    for (const auto& e : b.inertia)
+      if (timed(e)) return true;
+    for (const auto& [axis, angle] : b.rotations)
+      if (timed_d(angle)) return true;
+    if (b.has_matrix)
+      for (const auto& m : b.matrix)
+        if (timed_d(m)) return true;
+  }
+  for (const auto& c : d.constraints) {
+    if (timed_d(c.f) || timed(c.g)) return true;
+    for (std::size_t i = 0; i < 3; ++i)
+      if (timed(c.point[i]) || timed(c.direction[i])) return true;
+  }
+  return false;
+}
+
+/// A system file's motion as an ordinary differential equation x' = f(x) (ode/).
+/// Dim: 0 for the point integrator (any size); otherwise the compile-time size the
+/// enclosure's Jacobians and slopes are carried in, at least size(): the state is then
+/// padded with constant zeros (x' = 0 there), which state_names() leaves out.
+template <Scalar T, int Dim = 0>
+struct system_problem {
+  static constexpr int dim = Dim;
+  std::shared_ptr<const system_model::prepared<T>> model;  ///< the compiled system (it refers to the input)
+  std::vector<int> free_columns, bound_columns;           ///< the free speeds v_a, the solved ones
+  bool timed = false;    ///< t carried as the last state component
+  bool energy = false;   ///< the energy is a first integral (energy_conserved)
+  std::vector<std::string> names;
+
+  int coordinates() const { return model->sys.def->vars.coordinates; }
+  int speeds() const { return model->sys.def->vars.speeds; }
+  int constraints() const { return static_cast<int>(model->sys.constraints.size()); }
+  /// The state's components (without the padding).
+  int size() const { return coordinates() + static_cast<int>(free_columns.size()) + (timed ? 1 : 0); }
+  const std::vector<std::string>& state_names() const { return names; }
+
+  /// The same motion carried in D components.
+  template <int D>
+  system_problem<T, D> with_capacity() const {
+    return {model, free_columns, bound_columns, timed, energy, names};
+  }
+
+  /// The initial state x0 (padded to Dim).
+  vector_t<T> initial_state() const {
+    vector_t<T> x = vector_t<T>::Zero(std::max(Dim, size()));
+    const int nq = coordinates(), k = static_cast<int>(free_columns.size());
+    for (int i = 0; i < nq; ++i) x(i) = model->q(i);
+    for (int i = 0; i < k; ++i) x(nq + i) = model->u(free_columns[static_cast<std::size_t>(i)]);
+    if (timed) x(nq + k) = model->t;
+    return x;
+  }
+
+  /// The motion's pieces at the state x.
+  template <class S>
+  struct at_state {
+    vector_t<S> q, v_a;
+    S t;
+  };
+  template <class S>
+  at_state<S> split(const vector_t<S>& x) const {
+    const int nq = coordinates(), k = static_cast<int>(free_columns.size());
+    at_state<S> a{vector_t<S>(nq), vector_t<S>(k), timed ? x(nq + k) : detail::from_base<S>(model->t)};
+    for (int i = 0; i < nq; ++i) a.q(i) = x(i);
+    for (int i = 0; i < k; ++i) a.v_a(i) = x(nq + i);
+    return a;
+  }
+  adapted_change<expression_constraints<T>> change() const {
+    return {expression_constraints<T>{&model->sys}, free_columns, bound_columns};
+  }
+  /// Every speed at the state: the free ones from x, the others solved from the constraints.
+  template <class S>
+  vector_t<S> all_speeds(const at_state<S>& a) const {
+    if (constraints() == 0) return a.v_a;
+    vector_t<S> v = vector_t<S>::Zero(speeds());
+    v.head(a.v_a.size()) = a.v_a;
+    return change().template apply<S>(a.q, v, a.t);
+  }
+
+  template <class S>
+  vector_t<S> rhs(const vector_t<S>& x) const {
+    const at_state<S> a = split(x);
+    const expression_system<T> sys{&model->sys};
+    const int nq = coordinates(), k = static_cast<int>(free_columns.size()), s = constraints();
+    vector_t<S> d = vector_t<S>::Zero(x.size());
+    vector_t<S> qd, acc;
+    if (s == 0) {
+      qd = sys.template qdot<S>(a.q, a.v_a, a.t);
+      acc = cotton_free_accelerations<4>(sys, a.q, a.v_a, a.t, 0);
+    } else {
+      const auto adapted = change_speeds(sys, change(), speeds());
+      vector_t<S> v = vector_t<S>::Zero(speeds());
+      v.head(k) = a.v_a;
+      qd = adapted.template qdot<S>(a.q, v, a.t);
+      acc = cotton_free_accelerations<4>(adapted, a.q, a.v_a, a.t, s);
+    }
+    for (int i = 0; i < nq; ++i) d(i) = qd(i);
+    for (int i = 0; i < k; ++i) d(nq + i) = acc(i);
+    if (timed) d(nq + k) = S(1);
+    return d;
+  }
+
+  /// eval's results along the motion: the accelerations, the solved speeds, the reactions and
+  /// the wrenches.
+  template <class S>
+  void results(const vector_t<S>& x, std::vector<ode::named_values<S>>& out) const {
+    const at_state<S> a = split(x);
+    const expression_system<T> sys{&model->sys};
+    const system_input& in = *model->in;
+    const vector_t<S> u = all_speeds(a);
+    vector_t<S> acc, reactions;
+    if (constraints() == 0) {
+      acc = gibbs_appell(sys, a.q, u, a.t).accelerations();
+    } else {
+      const constrained_motion<S> m = cotton_reactions(sys, change(), a.q, u, a.t);
+      acc = m.accelerations;
+      reactions = m.reactions;
+    }
+    for (int j = 0; j < speeds(); ++j) out.push_back({in.acceleration_names[static_cast<std::size_t>(j)], {acc(j)}});
+    const system_definition& d = *in.def;
+    for (int j : bound_columns) out.push_back({d.names[static_cast<std::size_t>(d.vars.u(j))], {u(j)}});
+    for (int c = 0; c < constraints(); ++c)
+      out.push_back({d.constraints[static_cast<std::size_t>(c)].name + "_reaction", {reactions(c)}});
+    if (!d.wrenches.empty()) {
+      const auto w = constraint_wrenches<T, S>(model->sys, a.q, a.t, reactions);
+      for (std::size_t k = 0; k < w.size(); ++k) {
+        out.push_back({d.wrenches[k].name + "_force", {w[k].force(0), w[k].force(1), w[k].force(2)}});
+        out.push_back({d.wrenches[k].name + "_moment", {w[k].moment(0), w[k].moment(1), w[k].moment(2)}});
+      }
+    }
+  }
+
+  /// The energy (when conserved) and each holonomic constraint's residual f(q, t) (0 in truth).
+  template <class S>
+  void invariants(const vector_t<S>& x, std::vector<ode::named_values<S>>& out) const {
+    const at_state<S> a = split(x);
+    const compiled_system<T>& c = model->sys;
+    const system_definition& d = *c.def;
+    if (energy) {
+      const expression_system<T> sys{&c};
+      const vector_t<S> u = all_speeds(a);
+      std::vector<body_state<S>> bodies;
+      sys.template bodies<S>(a.q, u, a.t, bodies);
+      const std::vector<S> values = c.evaluate(c.body_tape, c.template variables<S>(a.q, u, a.t));
+      const S* v = values.data();
+      S e = S(0);
+      for (std::size_t b = 0; b < bodies.size(); ++b) {
+        const body_state<S>& st = bodies[b];
+        e += st.mass * dot(st.velocity, st.velocity) / S(2);
+        if (c.bodies[b].has_inertia) e += dot(st.omega, mat_vec(st.inertia, st.omega)) / S(2);
+        for (std::size_t i = 0; i < 3; ++i)
+          if (c.gravity[i] && c.bodies[b].center[i].value)
+            e -= st.mass * c.gravity[i].at(v) * c.bodies[b].center[i].value.at(v);
+      }
+      out.push_back({"energy", {e}});
+    }
+    bool any_holonomic = false;
+    for (const auto& k : d.constraints) any_holonomic = any_holonomic || k.holonomic;
+    if (!any_holonomic) return;
+    const vector_t<S> u0 = vector_t<S>::Zero(speeds());
+    const std::vector<S> values = c.evaluate(c.constraint_tape, c.template variables<S>(a.q, u0, a.t));
+    for (std::size_t r = 0; r < d.constraints.size(); ++r)
+      if (d.constraints[r].holonomic)
+        out.push_back({d.constraints[r].name + "_residual", {c.constraints[r].f.value.at(values.data())}, true});
+  }
+};
+
+/// The module's motion: a system file moves (simulate, enclose, horizon, reference --trajectory).
+template <>
+struct model_motion<system_model> {
+  static constexpr bool moves = true;
+
+  /// The motion and its initial state.
+  template <Scalar T>
+  static std::pair<system_problem<T>, vector_t<T>> start(const system_model::prepared<T>& m) {
+    system_problem<T> p;
+    p.model = std::make_shared<const system_model::prepared<T>>(m);
+    const system_input& in = *m.in;
+    const system_definition& d = *in.def;
+    const int n = d.vars.speeds;
+    if (!d.constraints.empty()) {
+      const expression_constraints<T> con{&p.model->sys};
+      std::vector<int> given_free;
+      for (int j = 0; j < n; ++j)
+        if (std::find(in.solved.begin(), in.solved.end(), j) == in.solved.end()) given_free.push_back(j);
+      // The solved speeds in pivot order (the elimination of adapted_change needs it); without
+      // solve_speeds the library chooses them at the initial state.
+      const auto change = adapt_speeds<T>(con, p.model->q, p.model->t, n, in.solved.empty() ? nullptr : &given_free);
+      p.free_columns = change.free_columns;
+      p.bound_columns = change.bound_columns;
+    } else {
+      for (int j = 0; j < n; ++j) p.free_columns.push_back(j);
+    }
+    p.timed = depends_on_time(d);
+    p.energy = energy_conserved(d);
+    p.names = state_fields(in, p.free_columns, p.timed);
+    vector_t<T> x0 = p.initial_state();
+    return {std::move(p), std::move(x0)};
+  }
+  /// The scene's state fields, in the order of the motion's state.
+  static std::vector<std::string> state_fields(const system_input& in, const std::vector<int>& free, bool timed) {
+    const system_definition& d = *in.def;
+    std::vector<std::string> f;
+    for (int i = 0; i < d.vars.coordinates; ++i) f.push_back(d.names[static_cast<std::size_t>(d.vars.q(i))]);
+    for (int j : free) f.push_back(d.names[static_cast<std::size_t>(d.vars.u(j))]);
+    if (timed) f.push_back("t");
+    return f;
+  }
+  /// What reference --trajectory writes: the same fields, when they determine the state.
+  static std::vector<std::string> state_fields(const system_input& in) {
+    const system_definition& d = *in.def;
+    if (!d.constraints.empty() && in.solved.empty())
+      throw input_error("solve_speeds: a constrained system's trajectory needs solve_speeds (the speeds its states "
+                        "leave out and the constraints give)");
+    std::vector<int> free;
+    for (int j = 0; j < d.vars.speeds; ++j)
+      if (std::find(in.solved.begin(), in.solved.end(), j) == in.solved.end()) free.push_back(j);
+    return state_fields(in, free, depends_on_time(d));
+  }
+};
+
+}  // namespace appell
