@@ -9,7 +9,8 @@
 // zr's midpoint, by up to 512 times more on odd components, so that the set's shift is off 0,
 // of mixed magnitudes, and must be carried by the next step's J.
 // Included by tests/motion.cpp (interval<double>: the double mid-rad product) and
-// tests/motion_mpfi.cpp (MPFI: the interval product).
+// tests/motion_mpfi.cpp (MPFI: the interval product); its bounds and holds() by the other motion
+// tests.
 #pragma once
 
 #include <boost/multiprecision/mpfr.hpp>
@@ -38,6 +39,11 @@ truth lower_of(const I& x) {
 template <class I>
 truth upper_of(const I& x) {
   return bound_of(x, MPFR_RNDU);
+}
+/// Whether the enclosure x holds the truth v.
+template <class I>
+bool holds(const I& x, const truth& v) {
+  return lower_of(x) <= v && v <= upper_of(x);
 }
 
 struct outcome {

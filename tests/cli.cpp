@@ -812,6 +812,8 @@ BOOST_AUTO_TEST_CASE(simulate_and_enclose_refuse_bad_input_naming_the_flag) {
   expect_bad_input("enclose " + good_scene + " --t-end 1 --scalar double --out " + out, "--scalar");
   expect_bad_input("enclose " + good_scene + " --t-end 1 --every 0.1 --out " + out, "--every");
   expect_bad_input("enclose " + good_scene + " --t-end 1 --bits 113 --out " + out, "--bits");
+  expect_bad_input("simulate " + good_scene + " --t-end 1 --tol 1000000 --out " + out, "--tol");
+  expect_bad_input("enclose " + good_scene + " --t-end 1 --tol 1 --out " + out, "--tol");
   // A system whose motion's state is too large for enclose (14 components: seven coordinates and
   // their rates) is refused naming enclose; simulate runs it.
   std::string big = "{\"model\": \"system\", \"coordinates\": [\"q1\", \"q2\", \"q3\", \"q4\", \"q5\", \"q6\", \"q7\"], "

@@ -30,10 +30,7 @@ using truth_t = boost::multiprecision::mpfr_float_100;
 
 namespace {
 
-template <class I>
-bool holds(const I& x, const truth_t& v) {
-  return affine_check::lower_of(x) <= v && v <= affine_check::upper_of(x);
-}
+using affine_check::holds;
 
 std::string decimal_on_grid(std::mt19937_64& rng, int lo_thousandths, int hi_thousandths) {
   std::uniform_int_distribution<int> d(lo_thousandths, hi_thousandths);

@@ -26,6 +26,7 @@
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/problems.hpp"
 #include "appell/ode/taylor.hpp"
+#include "affine_check.hpp"
 
 using namespace appell;
 using truth_t = boost::multiprecision::mpfr_float_100;
@@ -33,15 +34,7 @@ using rational_t = boost::multiprecision::mpq_rational;
 
 namespace {
 
-template <class I>
-bool holds(const I& x, const truth_t& v) {
-  mpfr_value a, b;
-  scalar_traits<I>::to_mpfr(x, a, b);
-  truth_t lo, hi;
-  mpfr_set(lo.backend().data(), a, MPFR_RNDD);
-  mpfr_set(hi.backend().data(), b, MPFR_RNDU);
-  return lo <= v && v <= hi;
-}
+using affine_check::holds;
 /// A rational as a 100-digit truth (its error, 1e-100, far below any enclosure's width).
 truth_t truth(const rational_t& q) { return truth_t(numerator(q)) / truth_t(denominator(q)); }
 

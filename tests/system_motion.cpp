@@ -34,21 +34,14 @@
 #include "appell/io/scene.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/taylor.hpp"
+#include "affine_check.hpp"
 
 using namespace appell;
 using truth_t = boost::multiprecision::mpfr_float_100;
 
 namespace {
 
-template <class I>
-bool holds(const I& x, const truth_t& v) {
-  mpfr_value a, b;
-  scalar_traits<I>::to_mpfr(x, a, b);
-  truth_t lo, hi;
-  mpfr_set(lo.backend().data(), a, MPFR_RNDD);
-  mpfr_set(hi.backend().data(), b, MPFR_RNDU);
-  return lo <= v && v <= hi;
-}
+using affine_check::holds;
 double lo_of(const interval& x) { return x.lower(); }
 double hi_of(const interval& x) { return x.upper(); }
 

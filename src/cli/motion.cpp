@@ -67,6 +67,8 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
         } catch (const input_error& e) {
           return e.what();
         }
+        // A relative tolerance of 1 or more lets a step's error be as large as the state itself.
+        if (*o.tol >= 1) return "--tol: expected a positive decimal below 1 (a relative error per step), got '" + v + "'";
       } else {
         try {
           o.max_width = positive_decimal("--max-width", v);

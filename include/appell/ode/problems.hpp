@@ -158,18 +158,9 @@ struct heavy_top_resal_problem {
     void bodies(const vector_t<S>& q, const vector_t<S>& p, const S&, std::vector<body_state<S>>& out) const {
       S st, ct;
       sin_cos(q(1), st, ct);
-      body_state<S> b;
-      b.mass = S(mass);
-      b.frame_rate = vec3<S>(p(0), p(1), S(p(1) * ct / st));  // theta' n + psi' e3 on the trihedron
-      b.omega = vec3<S>(p(0), p(1), p(2));
-      b.velocity = vec3<S>(S(l) * p(1), -(S(l) * p(0)), S(0));  // omega x (0, 0, l)
-      const S transverse = S(A) - S(mass) * S(l) * S(l);
-      b.inertia(0, 0) = transverse;
-      b.inertia(1, 1) = transverse;
-      b.inertia(2, 2) = S(C);
-      const S weight = S(mass) * S(g);
-      b.force = vec3<S>(S(0), -(weight * st), -(weight * ct));
-      out.push_back(b);
+      // the trihedron turns with theta' n + psi' e3; the top with p (heavy_top_resal's body)
+      out.push_back(heavy_top_resal<S>{S(A), S(C), S(mass), S(l), S(g)}.body(st, ct, vec3<S>(p(0), p(1), S(p(1) * ct / st)),
+                                                                              vec3<S>(p(0), p(1), p(2))));
     }
   };
   /// x from the scene's state (psi, theta, phi, psi', theta', phi').

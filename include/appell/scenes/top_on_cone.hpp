@@ -155,18 +155,26 @@ struct heavy_top_resal {
   void bodies(const vector_t<S>& q, const vector_t<S>& u, const S&, std::vector<body_state<S>>& out) const {
     S st, ct;
     Angles::sin_cos(q(1), st, ct);
+    out.push_back(body(st, ct, vec3<S>(u(1), u(0) * st, u(0) * ct), vec3<S>(u(1), u(0) * st, u(0) * ct + u(2))));
+  }
+  /// The top on the trihedron at theta (sin, cos), turning with frame_rate, its angular velocity
+  /// omega: G = (0, 0, l), v_G = omega x (0, 0, l), the central inertia diag(A - m l^2, A - m l^2, C),
+  /// the weight -m g (0, sin theta, cos theta).  Also the body of the top in Resal's speeds
+  /// (ode::heavy_top_resal_problem), whose omega is its speeds.
+  template <class S>
+  body_state<S> body(const S& st, const S& ct, const vec3<S>& frame_rate, const vec3<S>& omega) const {
     body_state<S> b;
     b.mass = S(mass);
-    b.frame_rate = vec3<S>(u(1), u(0) * st, u(0) * ct);
-    b.omega = vec3<S>(u(1), u(0) * st, u(0) * ct + u(2));
-    b.velocity = vec3<S>(S(l) * b.omega(1), -(S(l) * b.omega(0)), S(0));  // omega x (0, 0, l)
+    b.frame_rate = frame_rate;
+    b.omega = omega;
+    b.velocity = vec3<S>(S(l) * omega(1), -(S(l) * omega(0)), S(0));
     const S transverse = S(A) - S(mass) * S(l) * S(l);
     b.inertia(0, 0) = transverse;
     b.inertia(1, 1) = transverse;
     b.inertia(2, 2) = S(C);
     const S weight = S(mass) * S(g);
     b.force = vec3<S>(S(0), -(weight * st), -(weight * ct));
-    out.push_back(b);
+    return b;
   }
 };
 
