@@ -1032,3 +1032,30 @@ BOOST_AUTO_TEST_CASE(a_system_file_moves_with_its_reactions_and_invariants) {
   const outcome rh = run("horizon " + scene + " --t-end 1 --every 0.5 --scalars double --quiet --out " + s + "_horizon");
   BOOST_TEST_REQUIRE(rh.status == 0, rh.err);
 }
+
+BOOST_AUTO_TEST_CASE(a_motion_that_leaves_its_domain_stops_with_its_files) {
+  // A particle pushed by sqrt(1 - t): past t = 1 the force is not defined.  simulate and enclose
+  // stop there with exit 3, the reason on stdout, and what they computed written, marked
+  // incomplete (summary.json "complete": false).
+  const std::string scene = scene_file("leaves_domain", R"js({"model": "system", "coordinates": ["x"],
+    "bodies": {"p": {"mass": "1", "center": ["x", "0", "0"], "force": ["sqrt(1 - t)", "0", "0"]}},
+    "state": {"x": "0", "x_dot": "0"}})js");
+  for (const std::string command : {"simulate", "enclose"}) {
+    const std::string out = (work / ("domain_" + command)).string();
+    std::filesystem::remove_all(out);
+    const outcome r = run(command + " " + scene + " --t-end 2 --quiet --out " + out);
+    BOOST_TEST(r.status == 3, command << ": exit " << r.status << " " << r.err);
+    BOOST_TEST(r.out.find("INCOMPLETE") != std::string::npos, command << ": " << r.out);
+    const std::string summary = slurp(out + "/summary.json");
+    BOOST_TEST(summary.find("\"complete\": false") != std::string::npos, command << ": " << summary);
+    BOOST_TEST(std::filesystem::exists(out + (command == "simulate" ? "/trajectory.csv" : "/steps.csv")));
+    BOOST_TEST(csv_rows(out + (command == "simulate" ? "/trajectory.csv" : "/steps.csv")).size() > 2u);
+  }
+  // The sphere on a plane accelerates uniformly: its series end at order 2 and the step the
+  // coefficients allow is unbounded.  A run to 1e300 stops with its reason and its files.
+  const std::string out = (work / "plane_1e300").string();
+  std::filesystem::remove_all(out);
+  const outcome r = run("enclose " APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_plane.json --scalar mpfi --t-end 1e300 --quiet --out " + out);
+  BOOST_TEST(r.status == 3, r.err);
+  BOOST_TEST(std::filesystem::exists(out + "/summary.json"));
+}

@@ -123,13 +123,23 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
   for (const auto& s : names) header.push_back(s);
   std::vector<ode::sample<T>> rows;
   progress_meter meter("simulate", approx_double(t_end), o.quiet);
-  const ode::simulate_stats st =
-      ode::simulate(prob, x0, t_end, every, order, tol,
-                    [&](const ode::sample<T>& s) {
-                      rows.push_back(s);
-                      rows.back().x = reported(prob, s.x);
-                    },
-                    [&](double f) { meter(f); });
+  ode::simulate_stats st;
+  std::string failure;  // why the run stopped before T (the rows up to there are still written)
+  try {
+    st = ode::simulate(prob, x0, t_end, every, order, tol,
+                       [&](const ode::sample<T>& s) {
+                         rows.push_back(s);
+                         rows.back().x = reported(prob, s.x);
+                       },
+                       [&](double f) { meter(f); });
+  } catch (const std::exception& e) {
+    // the motion failed on its way (the state no longer finite, a step collapse near a
+    // singularity, an expression refusing its arguments): what was computed is written
+    const bool motion_failure = dynamic_cast<const certification_error*>(&e) || dynamic_cast<const domain_error*>(&e) ||
+                                dynamic_cast<const std::invalid_argument*>(&e);
+    if (!motion_failure || rows.empty()) throw;  // a bug, or not even the initial state
+    failure = e.what();
+  }
   column_names(rows.front().results, "", header);
   column_names(rows.front().invariants, "", header);
   std::ostringstream csv;
@@ -177,6 +187,9 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
                             {"tol", tol},
                             {"t_end", o.t_end},
                             {"every", o.every},
+                            {"complete", failure.empty()},
+                            {"reason", failure},
+                            {"t_reached", approx_double(rows.back().t)},
                             {"steps", st.steps},
                             {"seconds", st.seconds},
                             {"min_step", st.min_step},
@@ -211,6 +224,8 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
   std::ostringstream out;
   out << "simulate " << scene.model << " in " << scalar_traits<T>::name << " (" << bits_text<T>() << "), order " << order << ", tol " << tol << ": " << st.steps << " steps to t = " << o.t_end << " in "
       << st.seconds << " s\n";
+  if (!failure.empty())
+    out << "  INCOMPLETE: " << failure << "; written up to t = " << approx_double(rows.back().t) << "\n";
   for (const auto& j : inv) {
     if (j.contains("max_abs_value"))
       out << "  " << j["name"].get<std::string>() << ": 0 in truth; largest |value| " << j["max_abs_value"].get<double>() << "\n";
@@ -218,7 +233,7 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
       out << "  " << j["name"].get<std::string>() << ": largest relative drift " << j["max_relative_drift"].get<double>() << "\n";
   }
   out << "wrote " << (dir / "trajectory.csv").string() << ", summary.json" << plotted << "\n";
-  return {0, out.str()};
+  return {failure.empty() ? 0 : 3, out.str()};
 }
 
 template <Scalar I>

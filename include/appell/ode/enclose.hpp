@@ -47,6 +47,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <stdexcept>
 #include <functional>
 #include <string>
 #include <vector>
@@ -392,24 +393,21 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     if (!(upper(t) < lower(t_end))) break;  // t_end reached
     // Over X: the coefficients to p (the a priori enclosure's polynomial to p - 1; the step size
     // from the last two), and the slopes of the first q only (see the step end).
-    series<I> cX;
+    // A step that cannot be completed ends the run there, what was enclosed kept: the motion may
+    // leave the right-hand side's domain (a square root of a negative, constraints that become
+    // dependent) or a quantity of the step may not be finite.
+    try {
+    const series<I> cX = taylor_series(prob, X, p);
     const int q = std::min(p - 1, std::max(6, p / 2));
     std::vector<matrix_t<I>> DX;
     series<I> cc;  // the coefficients at the centre xh, to q: T_q(xh)
-    try {  // the motion may leave the right-hand side's domain (a square root of a negative, a
-           // solve that cannot be certified): the run stops there, what was enclosed kept
-      cX = taylor_series(prob, X, p);
+    {
       // The slopes about xh over X (hull with xh: the midpoint of the last step's enclosure
       // need not lie in the intersection of its boxes).  Their evaluation carries the series at
       // xh along (each slope's centre value), so it is not computed apart.
       vector_t<I> Xs(n);
       for (int i = 0; i < n; ++i) Xs(i) = detail::hull2(X(i), xh(i));
       taylor_series_slopes(prob, xh, Xs, q, DX, true, &cc);
-    } catch (const std::exception& e) {
-      if (!dynamic_cast<const certification_error*>(&e) && !dynamic_cast<const domain_error*>(&e)) throw;
-      st.complete = false;
-      st.reason = "the motion cannot be continued at t = " + std::to_string(approx_double(t)) + ": " + e.what();
-      break;
     }
     // The step: from the last coefficients at the centre, times what the last steps learned
     // (h_factor), then shrunk until the a priori enclosure holds and the remainder x_p(B) h^p is
@@ -628,6 +626,16 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
       break;
     }
     if (last) break;
+    } catch (const std::exception& e) {
+      // a refusal of the right-hand side's own (an expression's derivative at a branch point is
+      // std::invalid_argument) ends the motion as a domain error does; other errors are bugs
+      if (!dynamic_cast<const certification_error*>(&e) && !dynamic_cast<const domain_error*>(&e) &&
+          !dynamic_cast<const std::invalid_argument*>(&e))
+        throw;
+      st.complete = false;
+      st.reason = "the motion cannot be continued at t = " + std::to_string(approx_double(t)) + ": " + e.what();
+      break;
+    }
   }
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return st;

@@ -228,6 +228,8 @@ simulate_stats simulate(const P& prob, const vector_t<T>& x0, const T& t_end, co
   };
   record(t);
   const double horizon = approx_double(t_end);
+  // 16 units in the last place of the scalar, relative to max(1, |t|)
+  const double h_floor = std::ldexp(16.0, -static_cast<int>(std::min(1000u, scalar_traits<T>::precision_bits())));
   while (true) {
     T t_next = T(static_cast<double>(next_index)) * every;  // exact: next_index < 2^53
     bool last = false;
@@ -242,6 +244,12 @@ simulate_stats simulate(const P& prob, const vector_t<T>& x0, const T& t_end, co
       if (!(t + h < t_next)) {
         h = (t_next - t) + tc;  // lands on t_next: elapsed (t - tc) + h
         hits = true;
+      } else if (!(approx_double(h) > h_floor * std::max(1.0, std::fabs(approx_double(t))))) {
+        // Steps that no longer advance the time: the motion nears a singularity of its
+        // right-hand side (a square root's branch point, a division by 0), which it cannot pass.
+        throw certification_error("step-size collapse at t = " + std::to_string(approx_double(t)) +
+                                  " (the series allow no step above " + std::to_string(h_floor) +
+                                  " relative: a singularity of the motion)");
       }
       const vector_t<T> delta = horner(c, h, 1, order);
       for (Eigen::Index i = 0; i < n; ++i) {  // Kahan: x += delta with the carried error
