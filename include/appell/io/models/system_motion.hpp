@@ -38,64 +38,6 @@
 
 namespace appell {
 
-/// Whether the system's energy sum (m v^2 / 2 + omega . I omega / 2) - sum m g . G is a
-/// first integral, proved from the expressions as written: nothing depends on t, no
-/// applied force or couple but gravity, every body's centre is given (the potential needs
-/// it), and the kinematics and the nonholonomic constraints are homogeneous in the speeds
-/// (no constraint then does work: its rows read A(q) u = 0).  `why` receives the reason
-/// when it is not.
-inline bool energy_conserved(const system_definition& d, std::string* why = nullptr) {
-  auto no = [&](const std::string& reason) {
-    if (why) *why = reason;
-    return false;
-  };
-  const int t = d.vars.t();
-  std::vector<int> speeds;
-  for (int j = 0; j < d.vars.speeds; ++j) speeds.push_back(d.vars.u(j));
-  auto timed = [&](const shared_expression& e) { return e && e->depends_on(t); };
-  auto timed_d = [&](const differentiated_expression& e) { return bool(e.dt) || timed(e.value); };
-  for (const auto& g : d.gravity)
-    if (timed(g)) return no("gravity depends on t");
-  for (std::size_t i = 0; i < d.kinematics.size(); ++i) {
-    if (timed(d.kinematics[i])) return no("the kinematics depend on t");
-    if (d.kinematics[i] && !d.kinematics[i]->vanishes_when_zero(speeds))
-      return no("the kinematics are not homogeneous in the speeds");
-  }
-  for (const auto& b : d.bodies) {
-    for (const auto& f : b.force)
-      if (f) return no("body '" + b.name + "' has an applied force");
-    for (const auto& f : b.couple)
-      if (f) return no("body '" + b.name + "' has an applied couple");
-    if (timed(b.mass)) return no("a mass depends on t");
-    for (const auto& e : b.inertia)
-      if (timed(e)) return no("an inertia depends on t");
-    for (const auto& c : b.center)
-      if (timed_d(c)) return no("a centre depends on t");
-    for (const auto& [axis, angle] : b.rotations)
-      if (timed_d(angle)) return no("an orientation depends on t");
-    for (const auto& m : b.matrix)
-      if (b.has_matrix && timed_d(m)) return no("an orientation depends on t");
-    for (std::size_t i = 0; i < 3; ++i)
-      if (timed(b.omega[i]) || timed(b.velocity[i])) return no("a body's velocity depends on t");
-    const bool has_gravity = d.gravity[0] || d.gravity[1] || d.gravity[2];
-    if (has_gravity && !b.center[0].value && !b.center[1].value && !b.center[2].value && b.body_axes)
-      return no("body '" + b.name + "' has no centre to give its weight a potential");
-  }
-  for (const auto& c : d.constraints) {
-    if (c.holonomic) {
-      if (timed_d(c.f)) return no("constraint '" + c.name + "' depends on t");
-    } else if (c.body >= 0) {
-      for (std::size_t i = 0; i < 3; ++i)
-        if (timed(c.point[i]) || timed(c.direction[i])) return no("constraint '" + c.name + "' depends on t");
-    } else {
-      if (timed(c.g)) return no("constraint '" + c.name + "' depends on t");
-      if (!c.g->vanishes_when_zero(speeds))
-        return no("constraint '" + c.name + "' is not homogeneous in the speeds (its reaction may work)");
-    }
-  }
-  return true;
-}
-
 /// Whether any expression of the system depends on t (then t is carried in the state).
 inline bool depends_on_time(const system_definition& d) {
   const int t = d.vars.t();
@@ -124,6 +66,28 @@ inline bool depends_on_time(const system_definition& d) {
       if (timed(c.point[i]) || timed(c.direction[i])) return true;
   }
   return false;
+}
+
+/// Whether the system's energy sum (m v^2 / 2 + omega . I omega / 2) - sum m g . G is a
+/// first integral, proved from the expressions as written: nothing depends on t, no applied
+/// force or couple but gravity, a body on its own axes has a centre where there is gravity (the
+/// potential needs it), and the kinematics and the nonholonomic constraints are homogeneous in
+/// the speeds (no constraint then does work: its rows read A(q) u = 0).
+inline bool energy_conserved(const system_definition& d) {
+  if (depends_on_time(d)) return false;
+  std::vector<int> speeds;
+  for (int j = 0; j < d.vars.speeds; ++j) speeds.push_back(d.vars.u(j));
+  for (const auto& k : d.kinematics)
+    if (k && !k->vanishes_when_zero(speeds)) return false;
+  const bool has_gravity = d.gravity[0] || d.gravity[1] || d.gravity[2];
+  for (const auto& b : d.bodies) {
+    for (std::size_t i = 0; i < 3; ++i)
+      if (b.force[i] || b.couple[i]) return false;
+    if (has_gravity && b.body_axes && !b.center[0].value && !b.center[1].value && !b.center[2].value) return false;
+  }
+  for (const auto& c : d.constraints)
+    if (!c.holonomic && c.body < 0 && !c.g->vanishes_when_zero(speeds)) return false;
+  return true;
 }
 
 /// A system file's motion as an ordinary differential equation x' = f(x) (ode/).
