@@ -36,7 +36,7 @@ std::string slurp(const std::string& path) {
   return s.str();
 }
 
-const std::filesystem::path work = APPELL_TEST_TMPDIR;  // per build (tests/CMakeLists.txt)
+const std::filesystem::path work = std::filesystem::path(APPELL_TEST_TMPDIR) / "cli";  // per build (CMakeLists.txt)
 
 outcome run(const std::string& args) {
   std::filesystem::create_directories(work);
@@ -1051,11 +1051,66 @@ BOOST_AUTO_TEST_CASE(a_motion_that_leaves_its_domain_stops_with_its_files) {
     BOOST_TEST(std::filesystem::exists(out + (command == "simulate" ? "/trajectory.csv" : "/steps.csv")));
     BOOST_TEST(csv_rows(out + (command == "simulate" ? "/trajectory.csv" : "/steps.csv")).size() > 2u);
   }
-  // The sphere on a plane accelerates uniformly: its series end at order 2 and the step the
-  // coefficients allow is unbounded.  A run to 1e300 stops with its reason and its files.
+}
+
+BOOST_AUTO_TEST_CASE(long_runs_are_bounded_in_their_steps_and_in_time) {
+  // The sphere on a plane accelerates uniformly: its series end at order 2 and the step its
+  // coefficients allow is unbounded (one step of infinite length overflowed: exit 3 after 0
+  // steps).  Bounded by growth and by the horizon, the run goes on, the time doubling at each
+  // step, until the state's width (absolute: its size grows as t^2) passes --max-width: exit 3
+  // with that reason and its files.
   const std::string out = (work / "plane_1e300").string();
   std::filesystem::remove_all(out);
-  const outcome r = run("enclose " APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_plane.json --scalar mpfi --t-end 1e300 --quiet --out " + out);
-  BOOST_TEST(r.status == 3, r.err);
-  BOOST_TEST(std::filesystem::exists(out + "/summary.json"));
+  const outcome r = run("enclose " APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_plane.json --scalar mpfi --bits 64 --t-end 1e300 --quiet --out " + out);
+  BOOST_TEST(r.status == 3, r.out << r.err);
+  const std::string summary = slurp(out + "/summary.json");
+  BOOST_TEST(summary.find("\"reason\": \"width blow-up at t = ") != std::string::npos, summary);
+  BOOST_TEST(csv_rows(out + "/steps.csv").size() > 40u);  // measured: 57 steps, to t = 7.0e18
+  // In interval<double> the state leaves double's range on the way: exit 3, its reason, its files.
+  const std::string out_d = (work / "plane_1e300_interval").string();
+  std::filesystem::remove_all(out_d);
+  const outcome rd = run("enclose " APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_plane.json --t-end 1e300 --quiet --out " + out_d);
+  BOOST_TEST(rd.status == 3, rd.out << rd.err);
+  BOOST_TEST(rd.out.find("INCOMPLETE") != std::string::npos, rd.out);
+  BOOST_TEST(csv_rows(out_d + "/steps.csv").size() > 2u);
+  // --max-seconds: a run that would take long stops cleanly, its files written, exit 3.
+  for (const std::string command : {"simulate", "enclose"}) {
+    const std::string dir = (work / ("max_seconds_" + command)).string();
+    std::filesystem::remove_all(dir);
+    const outcome m = run(command + " " APPELL_SOURCE_DIR "/data/scenes/heavy_top.json --t-end 100000 --max-seconds 0.5 --quiet --out " + dir);
+    BOOST_TEST(m.status == 3, command << ": exit " << m.status << " " << m.err);
+    const std::string ms = slurp(dir + "/summary.json");
+    BOOST_TEST(ms.find("\"complete\": false") != std::string::npos, command << ": " << ms);
+    BOOST_TEST(ms.find("--max-seconds 0.5 reached at t = ") != std::string::npos, command << ": " << ms);
+    BOOST_TEST(csv_rows(dir + (command == "simulate" ? "/trajectory.csv" : "/steps.csv")).size() > 1u);
+    expect_bad_input(command + " " APPELL_SOURCE_DIR "/data/scenes/heavy_top.json --t-end 1 --max-seconds -1 --out " + dir,
+                     "--max-seconds");
+  }
+}
+
+BOOST_AUTO_TEST_CASE(no_command_prints_a_number_that_is_not_one) {
+  // linearize: a reference speed that is not 0 but is 0 in the scalar (it underflows) is bad
+  // input naming the field; in mpfr its exponent range holds it and the report is finite.
+  std::string bicycle = slurp(APPELL_SOURCE_DIR "/data/scenes/system_whipple_bicycle.json");
+  const std::string five = R"js("xP_dot": "5")js";
+  const std::size_t at = bicycle.find(five, bicycle.find("\"about\""));
+  BOOST_TEST_REQUIRE(at != std::string::npos);
+  bicycle.replace(at, five.size(), R"js("xP_dot": "-1e-999999")js");
+  const std::string tiny = scene_file("bicycle_tiny_speed", bicycle);
+  for (const char* scalar : {"double", "float128", "interval"})
+    expect_bad_input("linearize " + tiny + " --scalar " + scalar, "linearize.about.xP_dot");
+  const outcome wide = run("linearize " + tiny + " --scalar mpfr --bits 64");
+  BOOST_TEST(wide.status == 0, wide.err);
+  BOOST_TEST(wide.out.find("nan") == std::string::npos);
+  BOOST_TEST(wide.out.find("inf") == std::string::npos);
+  // error_amplification of a point result near 1e999999 (in mpfr's range, not double's): measured
+  // in mpfi at 53 bits, a finite number, never inf
+  std::string top = slurp(APPELL_SOURCE_DIR "/data/scenes/system_heavy_top.json");
+  const std::size_t g = top.find("\"g\": \"");
+  BOOST_TEST_REQUIRE(g != std::string::npos);
+  top.replace(g, top.find('"', g + 6) - g + 1, R"js("g": "1e999999")js");
+  const outcome amp = run("eval " + scene_file("top_huge_gravity", top) + " --scalar mpfr --bits 64");
+  BOOST_TEST(amp.status == 0, amp.err);
+  BOOST_TEST(amp.out.find("\"error_amplification\"") != std::string::npos, amp.out);
+  BOOST_TEST(amp.out.find("inf") == std::string::npos, amp.out);
 }

@@ -68,7 +68,7 @@ void check(const scene_input& scene, const std::vector<mpfr_value>& ref, tally& 
         }
       ++t.contained;
     } else {
-      double amplification = 0;
+      double amplification = std::numeric_limits<double>::infinity();  // absent: unmeasured
       for (const auto& c : e.checks)
         if (c.name == "error_amplification") amplification = approx_double(c.values[0]);
       const int p = static_cast<int>(scalar_traits<T>::precision_bits());

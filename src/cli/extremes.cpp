@@ -24,7 +24,7 @@ namespace {
 
 struct outcome {
   std::string status = "ok";  // ok | refused | bad input
-  double digits = NAN, rel_width = NAN, amplification = NAN;
+  double digits = NAN, rel_width = NAN, amplification = NAN;  // amplification: NaN where unmeasured
   std::string why;
 };
 

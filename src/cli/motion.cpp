@@ -37,7 +37,7 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
     };
     std::string v;
     if (a == "--t-end" || a == "--every" || a == "--out" || a == "--scalar" || a == "--bits" || a == "--order" ||
-        a == "--tol" || a == "--max-width") {
+        a == "--tol" || a == "--max-width" || a == "--max-seconds") {
       if (!value(v)) return a + ": missing value";
       if (a == "--t-end") o.t_end = v;
       else if (a == "--every") o.every = v;
@@ -69,6 +69,12 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
         }
         // A relative tolerance of 1 or more lets a step's error be as large as the state itself.
         if (*o.tol >= 1) return "--tol: expected a positive decimal below 1 (a relative error per step), got '" + v + "'";
+      } else if (a == "--max-seconds") {
+        try {
+          o.max_seconds = positive_decimal("--max-seconds", v);
+        } catch (const input_error& e) {
+          return e.what();
+        }
       } else {
         try {
           o.max_width = positive_decimal("--max-width", v);

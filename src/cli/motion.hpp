@@ -39,6 +39,7 @@ struct motion_options {
   std::optional<int> order;
   std::optional<double> tol;
   double max_width = 1.0;
+  std::optional<double> max_seconds;  ///< stop cleanly after this long, files written (exit 3)
   bool quiet = false;  ///< no progress line
 };
 

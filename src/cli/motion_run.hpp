@@ -25,23 +25,42 @@ namespace appell::cli {
 
 namespace motion_detail {
 
-/// "\rsimulate: t = 3.1 of 10 (31%)" on stderr, from one second on, twice a second at most.
+/// "\rsimulate: t = 3.1 of 10 (31%), about 2 min 5 s left" on stderr, from one second on,
+/// twice a second at most (the time left: the elapsed time scaled by the fraction of the
+/// horizon still to go).  With max_seconds, the call past that much time throws
+/// ode::run_stopped, which the motion commands turn into an incomplete run with its files.
 class progress_meter {
  public:
-  progress_meter(std::string what, double horizon, bool quiet)
-      : what_(std::move(what)), horizon_(horizon), quiet_(quiet), start_(std::chrono::steady_clock::now()), last_(start_) {}
+  progress_meter(std::string what, double horizon, bool quiet, std::optional<double> max_seconds = {})
+      : what_(std::move(what)), horizon_(horizon), quiet_(quiet), max_seconds_(max_seconds),
+        start_(std::chrono::steady_clock::now()), last_(start_) {}
   ~progress_meter() {
     if (shown_) std::cerr << "\n";
   }
   void operator()(double fraction) {
-    if (quiet_) return;
     const auto now = std::chrono::steady_clock::now();
-    if (now - start_ < std::chrono::seconds(1) || now - last_ < std::chrono::milliseconds(500)) return;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    if (max_seconds_ && elapsed >= *max_seconds_) {
+      char why[160];
+      std::snprintf(why, sizeof why, "--max-seconds %.6g reached at t = %.6g", *max_seconds_, fraction * horizon_);
+      throw ode::run_stopped(why);
+    }
+    if (quiet_) return;
+    if (elapsed < 1 || now - last_ < std::chrono::milliseconds(500)) return;
     last_ = now;
     shown_ = true;
-    char line[160];
-    std::snprintf(line, sizeof line, "\r%s: t = %.6g of %.6g (%.0f%%)", what_.c_str(), fraction * horizon_, horizon_,
-                  100 * fraction);
+    std::string left;
+    if (fraction > 0 && fraction < 1) {
+      const double s = elapsed * (1 - fraction) / fraction;
+      char text[64];
+      if (s < 60) std::snprintf(text, sizeof text, ", about %.0f s left", s);
+      else if (s < 3600) std::snprintf(text, sizeof text, ", about %.0f min %.0f s left", std::floor(s / 60), std::fmod(s, 60.0));
+      else std::snprintf(text, sizeof text, ", about %.0f h %.0f min left", std::floor(s / 3600), std::floor(std::fmod(s, 3600.0) / 60));
+      left = text;
+    }
+    char line[240];
+    std::snprintf(line, sizeof line, "\r%s: t = %.6g of %.6g (%.0f%%)%s   ", what_.c_str(), fraction * horizon_, horizon_,
+                  100 * fraction, left.c_str());
     std::cerr << line << std::flush;
   }
 
@@ -49,6 +68,7 @@ class progress_meter {
   std::string what_;
   double horizon_;
   bool quiet_;
+  std::optional<double> max_seconds_;
   std::chrono::steady_clock::time_point start_, last_;
   bool shown_ = false;
 };
@@ -122,7 +142,7 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
   const std::vector<std::string> names = reported_names(prob);
   for (const auto& s : names) header.push_back(s);
   std::vector<ode::sample<T>> rows;
-  progress_meter meter("simulate", approx_double(t_end), o.quiet);
+  progress_meter meter("simulate", approx_double(t_end), o.quiet, o.max_seconds);
   ode::simulate_stats st;
   std::string failure;  // why the run stopped before T (the rows up to there are still written)
   try {
@@ -134,9 +154,10 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
                        [&](double f) { meter(f); });
   } catch (const std::exception& e) {
     // the motion failed on its way (the state no longer finite, a step collapse near a
-    // singularity, an expression refusing its arguments): what was computed is written
+    // singularity, an expression refusing its arguments) or was stopped (--max-seconds):
+    // what was computed is written
     const bool motion_failure = dynamic_cast<const certification_error*>(&e) || dynamic_cast<const domain_error*>(&e) ||
-                                dynamic_cast<const std::invalid_argument*>(&e);
+                                dynamic_cast<const std::invalid_argument*>(&e) || dynamic_cast<const ode::run_stopped*>(&e);
     if (!motion_failure || rows.empty()) throw;  // a bug, or not even the initial state
     failure = e.what();
   }
@@ -265,7 +286,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   std::vector<std::string> value_names;
   std::size_t result_values = 0;  // value_names: the results' first, then the invariants'
   vector_t<I> last_end = reported(prob, x0);
-  progress_meter meter("enclose", approx_double(t_end), o.quiet);
+  progress_meter meter("enclose", approx_double(t_end), o.quiet, o.max_seconds);
   const ode::enclose_stats st = ode::enclose(
       prob, x0, t_end, order, tol, o.max_width, 2,
       [&](const ode::enclosed_step<I>& s) {

@@ -63,23 +63,46 @@ scene_input read_scene(const json_value& root) {
   return out;
 }
 
-double error_amplification(const scene_input& scene) {
-  try {
-    const evaluation<interval> e = compute<interval>(prepare<interval>(scene));
-    // relative widths of the components bounded away from 0 (a result that
-    // may be 0 has no relative accuracy to lose); absolute ones if all may be 0
-    double widest = 0, widest_abs = 0;
-    bool any_nonzero = false;
-    for (const auto& r : e.results)
-      for (const interval& x : r.values) {
-        const double w = boost::numeric::width(x);
-        widest_abs = std::max(widest_abs, w);
-        if (x.lower() > 0 || x.upper() < 0) {
-          any_nonzero = true;
-          widest = std::max(widest, w / std::min(std::abs(x.lower()), std::abs(x.upper())));
-        }
+namespace {
+
+/// The largest relative width of the results bounded away from 0 (a result that may be 0
+/// has no relative accuracy to lose; the absolute widths if all may be 0), over 2^-53;
+/// infinity where a result is not finite.
+template <class I>
+double amplification_of(const evaluation<I>& e) {
+  using B = bound_t<I>;
+  double widest = 0, widest_abs = 0;
+  bool any_nonzero = false;
+  for (const auto& r : e.results)
+    for (const I& x : r.values) {
+      if (!is_finite(x)) return std::numeric_limits<double>::infinity();
+      const B w = scalar_traits<I>::width(x), lo = scalar_traits<I>::lower(x), hi = scalar_traits<I>::upper(x);
+      widest_abs = std::max(widest_abs, approx_double(w));
+      if (lo > 0 || hi < 0) {
+        using std::abs;
+        any_nonzero = true;
+        const B m = abs(lo) < abs(hi) ? B(abs(lo)) : B(abs(hi));
+        widest = std::max(widest, approx_double(B(w / m)));
       }
-    return (any_nonzero ? widest : widest_abs) / std::ldexp(1.0, -53);
+    }
+  return (any_nonzero ? widest : widest_abs) / std::ldexp(1.0, -53);
+}
+
+}  // namespace
+
+double error_amplification(const scene_input& scene) {
+  // interval<double>: the rounding of double arithmetic, enclosed
+  try {
+    const double a = amplification_of(compute<interval>(prepare<interval>(scene)));
+    if (std::isfinite(a)) return a;
+  } catch (const std::exception&) {
+  }
+  // Outside double's range (results near 1e999999 in mpfr, say) the same interval evaluation
+  // with 53-bit bounds in MPFR's exponent range: mpfi at 53 bits in every operation (no guard
+  // bits, so its widths are double's), each operation rounded outward by MPFI.
+  try {
+    const mp_precision_scope bits(53);
+    return amplification_of(prepare<mpfi>(scene).run());
   } catch (const std::exception&) {
     return std::numeric_limits<double>::infinity();
   }

@@ -23,19 +23,27 @@
 
 namespace appell {
 
-/// The type-erased functions of Model in scalar T.
+/// The type-erased functions of Model in scalar T.  Defined out of the class, so not inline:
+/// the extern template in each model's header then keeps every other unit from instantiating
+/// them (GCC instantiates the inline members of an extern template to inline them, and with
+/// them the model in all seven scalars: a model's reader took 50 s to compile, 1 s without).
 template <class Model, Scalar T>
 struct model_functions {
-  static prepared_scene<T> prepare(const model_input& in) {
-    using prepared_t = typename Model::template prepared<T>;
-    auto p = std::make_shared<const prepared_t>(
-        Model::template prepare<T>(dynamic_cast<const typename Model::input&>(in)));
-    return prepared_scene<T>(std::move(p), &model_functions::compute);
-  }
-  static evaluation<T> compute(const void* p) {
-    return Model::template compute<T>(*static_cast<const typename Model::template prepared<T>*>(p));
-  }
+  static prepared_scene<T> prepare(const model_input& in);
+  static evaluation<T> compute(const void* p);
 };
+
+template <class Model, Scalar T>
+prepared_scene<T> model_functions<Model, T>::prepare(const model_input& in) {
+  using prepared_t = typename Model::template prepared<T>;
+  auto p = std::make_shared<const prepared_t>(Model::template prepare<T>(dynamic_cast<const typename Model::input&>(in)));
+  return prepared_scene<T>(std::move(p), &model_functions::compute);
+}
+
+template <class Model, Scalar T>
+evaluation<T> model_functions<Model, T>::compute(const void* p) {
+  return Model::template compute<T>(*static_cast<const typename Model::template prepared<T>*>(p));
+}
 
 namespace detail {
 template <class Model>

@@ -170,10 +170,13 @@ evaluation<T> compute(const prepared_scene<T>& scene) {
 }
 
 /// How much the scene amplifies rounding errors, measured: the largest relative
-/// width of the results of an interval<double> evaluation, divided by 2^-53
-/// (infinity where that evaluation cannot certify).  Point types carry it in
-/// "checks" as `error_amplification`: their relative error is expected below
+/// width of the results of an interval<double> evaluation, divided by 2^-53; where
+/// double's range does not hold the evaluation, the same with 53-bit mpfi bounds
+/// (MPFR's exponent range); infinity where neither can certify.  Point types carry
+/// it in "checks" as `error_amplification`: their relative error is expected below
 /// error_amplification * 2^(1 - precision) (tests/extremes.cpp holds them to 16x that).
+/// Where it is infinite the check is left out (a document never holds inf):
+/// the point values then carry no error estimate (SCENES.md).
 double error_amplification(const scene_input& scene);
 
 /// The scene's results in scalar T (mpfr/mpfi at the current mp precision).
@@ -182,7 +185,7 @@ evaluation<T> evaluate(const scene_input& scene) {
   evaluation<T> e = compute<T>(prepare<T>(scene));
   if constexpr (!scalar_traits<T>::is_interval) {
     const double a = error_amplification(scene);
-    e.checks.push_back(detail::scalar_result("error_amplification", T(a)));
+    if (std::isfinite(a)) e.checks.push_back(detail::scalar_result("error_amplification", T(a)));
   }
   return e;
 }

@@ -386,7 +386,6 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
   detail::affine_set<I> affine = detail::affine_set<I>::from_box(X, xh);
   I t = I(0);
   const double horizon = approx_double(t_end);
-  const double h_floor = 1e-9 * std::max(1.0, horizon);
   double h_next = 0, h_factor = 1;
   const I zero_h = I(0);
   while (true) {
@@ -426,6 +425,14 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // measured, the same steps as from a separate series at xh, which cost 12% of the run).
     double hd = step_from_coefficients(cX, tol) * h_factor;
     if (h_next > 0) hd = std::min(hd, 2 * h_next);
+    // Where the series ends (constant acceleration: the coefficients vanish past order 2) the
+    // tolerance allows any step: no step grows a component more than 2^10 times its size, and
+    // none is longer than the horizon (the sphere on a plane to t = 1e300 tried one step of
+    // infinite length, and its matrices overflowed).
+    hd = std::min({hd, step_within_growth(cX, 1024.0), horizon});
+    // The smallest step: relative to the time reached (a floor relative to the horizon would
+    // stop a long run, to t = 1e300, before its first step).
+    const double h_floor = 1e-9 * std::max(1.0, std::fabs(approx_double(t)));
     bool accepted = false, shrunk = false;
     std::string refusal;  // why the last a priori enclosure was refused, if a solve or a domain refused it
     vector_t<I> Y(n), cpB(n), B(n);
@@ -629,6 +636,11 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     } catch (const std::exception& e) {
       // a refusal of the right-hand side's own (an expression's derivative at a branch point is
       // std::invalid_argument) ends the motion as a domain error does; other errors are bugs
+      if (dynamic_cast<const run_stopped*>(&e)) {  // on request (--max-seconds): not a failure of the motion
+        st.complete = false;
+        st.reason = e.what();
+        break;
+      }
       if (!dynamic_cast<const certification_error*>(&e) && !dynamic_cast<const domain_error*>(&e) &&
           !dynamic_cast<const std::invalid_argument*>(&e))
         throw;

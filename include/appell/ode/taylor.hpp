@@ -182,6 +182,30 @@ double step_from_coefficients(const series<S>& c, double tol) {
   return h * std::exp(-0.7 / (p - 1));
 }
 
+/// The largest step over which no term of the series moves a component by more than `growth`
+/// times its size: |c_k(i)| h^k <= growth max(1, |x_i|) for k >= 1 (point magnitudes).  A bound
+/// that step_from_coefficients lacks where the series ends (a motion of constant acceleration:
+/// every coefficient past the second is 0, and the tolerance allows any step); infinity for a
+/// state that does not move.
+template <class S>
+double step_within_growth(const series<S>& c, double growth) {
+  double h = std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < c[0].size(); ++i) {
+    const double size = growth * std::max(1.0, std::fabs(approx_double(c[0](i))));
+    for (std::size_t k = 1; k < c.size(); ++k) {
+      const double m = std::fabs(approx_double(c[k](i)));
+      if (m > 0) h = std::min(h, std::pow(size / m, 1.0 / static_cast<double>(k)));
+    }
+  }
+  return h;
+}
+
+/// A run stopped on request before its end (--max-seconds): the motion commands write what
+/// was computed up to there, marked incomplete with this reason.
+struct run_stopped : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 struct simulate_options {
   std::string t_end;       ///< decimal
   std::string every;       ///< decimal; empty: the horizon / 100

@@ -20,6 +20,17 @@ linearization_report<T> linearize_scene(const system_input& in) {
   for (int i = 0; i < d.vars.coordinates; ++i) q(i) = value<T>(li.q[static_cast<std::size_t>(i)]);
   for (int j = 0; j < d.vars.speeds; ++j) u(j) = value<T>(li.u[static_cast<std::size_t>(j)]);
   const T t = value<T>(in.t);
+  // The reader checked the reference speed and g at 256 bits; a decimal that is not 0 may
+  // still round to 0 in T (1e-999999 in double): C1 and K2 divide by it, K0 by g.
+  {
+    const decimal_field& v = li.u[static_cast<std::size_t>(li.def.speed)];
+    if (possibly_zero(value<T>(v)))
+      throw input_error(v.path + ": the reference speed " + v.text + " is 0 in " + scalar_traits<T>::name +
+                        " (it underflows; a scalar of wider range, mpfr or mpfi, holds it)");
+    if (li.def.gravity >= 0 && possibly_zero(c.parameters[static_cast<std::size_t>(li.def.gravity)]))
+      throw input_error("linearize.gravity: the parameter " + d.names[static_cast<std::size_t>(li.def.gravity)] +
+                        " is 0 in " + scalar_traits<T>::name + " (it underflows; K0 is the stiffness per unit g)");
+  }
   linearized_equations<T>& r = out.equations;
   r = linearize(c, li.def, in.solved, q, u, t);
   const matrix_t<T> Minv = inverse_of(r.M);
@@ -41,15 +52,36 @@ linearization_report<T> linearize_scene(const system_input& in) {
   for (const T& v : speeds) out.spectra.push_back(eigenvalues_at(r, Minv, v));
   out.from = li.from ? P(scalar_traits<T>::lower(value<T>(*li.from))) : P(0);
   out.to = li.to ? P(scalar_traits<T>::upper(value<T>(*li.to))) : P(P(2) * scalar_traits<T>::upper(r.v0));
+  for (const auto& [name, b] : {std::pair<const char*, const P*>{"from", &out.from}, {"to", &out.to}})
+    if (!is_finite(detail::from_bound<T>(*b)))
+      throw certification_error(std::string("critical_speeds.") + name + ": not finite in " + scalar_traits<T>::name +
+                                " (an overflow? a scalar with a wider range may succeed)");
   out.steps = li.steps;
   out.critical = critical_speeds(r, Minv, out.from, out.to, li.steps);
 
-  for (matrix_t<T>* X : {&r.M, &r.C1, &r.K0, &r.K2, &r.stiffness_residual, &r.damping_residual, &r.damping_at_rest})
+  // Every number of the report finite in T, or exit 3 naming it (an overflow: never a
+  // number that is not one in the document).
+  auto finish = [&](T& x, const std::string& name) {
+    scope.finish(x);
+    if (!is_finite(x))
+      throw certification_error(name + ": not finite in " + scalar_traits<T>::name + " (" + to_string(x) +
+                                "; an overflow? a scalar with a wider range may succeed)");
+  };
+  for (const auto& [name, X] : {std::pair<const char*, matrix_t<T>*>{"M", &r.M}, {"C1", &r.C1}, {"K0", &r.K0}, {"K2", &r.K2},
+                                {"checks.stiffness_at_twice_the_speed", &r.stiffness_residual},
+                                {"checks.damping_at_twice_the_speed", &r.damping_residual},
+                                {"checks.damping_at_rest", &r.damping_at_rest}})
     for (Eigen::Index i = 0; i < X->rows(); ++i)
-      for (Eigen::Index j = 0; j < X->cols(); ++j) scope.finish((*X)(i, j));
-  for (auto& spectrum : out.spectra)
-    for (auto& e : spectrum) scope.finish(e.real_part), scope.finish(e.imaginary_part);
-  for (auto& cs : out.critical) scope.finish(cs.speed);
+      for (Eigen::Index j = 0; j < X->cols(); ++j)
+        finish((*X)(i, j), std::string(name) + "[" + std::to_string(i) + "][" + std::to_string(j) + "]");
+  for (std::size_t k = 0; k < out.spectra.size(); ++k)
+    for (std::size_t e = 0; e < out.spectra[k].size(); ++e) {
+      const std::string where = "eigenvalues at " + out.speed_texts[k] + "[" + std::to_string(e) + "]";
+      finish(out.spectra[k][e].real_part, where + ".re");
+      finish(out.spectra[k][e].imaginary_part, where + ".im");
+    }
+  for (std::size_t k = 0; k < out.critical.size(); ++k)
+    finish(out.critical[k].speed, "critical_speeds.found[" + std::to_string(k) + "].speed");
   return out;
 }
 
