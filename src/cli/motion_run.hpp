@@ -148,6 +148,14 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
   try {
     st = ode::simulate(prob, x0, t_end, every, order, tol,
                        [&](const ode::sample<T>& s) {
+                         // a result or invariant that is not finite in T ends the run there (exit 3
+                         // naming it; the rows before it are written): never a number that is not one
+                         for (const auto* group : {&s.results, &s.invariants})
+                           for (const auto& g : *group)
+                             for (const T& v : g.values)
+                               if (!is_finite(v))
+                                 throw certification_error(g.name + " is not finite in " + scalar_traits<T>::name +
+                                                           " at t = " + to_string(s.t) + " (an overflow?)");
                          rows.push_back(s);
                          rows.back().x = reported(prob, s.x);
                        },
