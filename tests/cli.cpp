@@ -232,10 +232,17 @@ BOOST_AUTO_TEST_CASE(bad_command_lines_exit_2_with_one_line) {
   expect_bad_input("eval " + good_scene + " --frobnicate", "unknown option '--frobnicate'");
   expect_bad_input("eval " + good_scene + " " + good_scene, "more than one scene");
   expect_bad_input("eval " + good_scene + " --scalar", "--scalar: missing value");
-  for (const char* bits : {"0", "1", "-5", "100000000", "1e3", "12x", ""})
-    expect_bad_input("eval " + good_scene + " --scalar mpfi --bits '" + std::string(bits) + "'", "--bits");
+  // one --bits parser for every command: digits only ("+64" and " 64" were taken by simulate,
+  // enclose and horizon, refused by eval)
+  for (const char* bits : {"0", "1", "-5", "100000000", "1e3", "12x", "", "+64", " 64", "64 "})
+    for (const std::string command : {"eval " + good_scene + " --scalar mpfi",
+                                      "simulate " + good_scene + " --scalar mpfr --t-end 1 --out " + (work / "bits").string(),
+                                      "reference " + good_scene + " --scalar mpfi --n 1 --out " + (work / "bits").string()})
+      expect_bad_input(command + " --bits '" + std::string(bits) + "'", "--bits");
   expect_bad_input("eval " + std::string(APPELL_SOURCE_DIR "/data/scenes"), "is a directory");
   expect_bad_input("eval /dev/null", "/dev/null: empty");
+  // reference reads its scene under eval's size guard: /dev/zero is refused, not read forever
+  expect_bad_input("reference /dev/zero --states /dev/zero --out " + (work / "zero").string(), "larger than the limit");
   expect_bad_input("extremes --frobnicate", "unknown argument");
   expect_bad_input("tradeoff", "no scene given");
 }
@@ -865,6 +872,14 @@ BOOST_AUTO_TEST_CASE(simulate_and_enclose_write_their_files_whole) {
   BOOST_TEST(summary.find("\"complete\": true") != std::string::npos, summary);
   for (const auto& entry : std::filesystem::directory_iterator(enc))
     BOOST_TEST(entry.path().filename().string()[0] != '.', "a temporary file was left: " << entry.path());
+  // Whole or not at all: a run killed on its way (SIGKILL after 1 s, long before its end) into
+  // the same folder leaves the files of the run before it byte for byte as they were.
+  const std::string steps = slurp(enc + "/steps.csv"), done = slurp(enc + "/summary.json");
+  const int killed = std::system(("timeout -s KILL 1 " APPELL_BINARY " enclose " APPELL_SOURCE_DIR
+                                  "/data/scenes/heavy_top.json --t-end 100000 --quiet --out " + enc + " >/dev/null 2>&1").c_str());
+  BOOST_TEST((WIFEXITED(killed) && WEXITSTATUS(killed) == 137), "the run was not killed: " << killed);
+  BOOST_TEST(slurp(enc + "/steps.csv") == steps);
+  BOOST_TEST(slurp(enc + "/summary.json") == done);
 }
 
 BOOST_AUTO_TEST_CASE(horizon_refuses_bad_input_and_meets_the_closed_form) {
@@ -1118,4 +1133,25 @@ BOOST_AUTO_TEST_CASE(no_command_prints_a_number_that_is_not_one) {
   BOOST_TEST(amp.status == 0, amp.err);
   BOOST_TEST(amp.out.find("\"error_amplification\"") != std::string::npos, amp.out);
   BOOST_TEST(amp.out.find("inf") == std::string::npos, amp.out);
+  // simulate: a particle falling at g = 1e154: its energy's v^2 (1e308 t^2) leaves double's range
+  // between t = 1 and 1.5, so the run ends at the sample t = 1.5 with exit 3 naming the
+  // invariant, the rows before it written and every one of them a number (summary.json: steps
+  // null, not a count it does not know); in mpfr the same run is complete.
+  const std::string fall = scene_file("fall_overflows", R"js({"model": "system", "coordinates": ["z"],
+    "gravity": ["0", "0", "-1e154"], "bodies": {"p": {"mass": "1", "center": ["0", "0", "z"]}},
+    "state": {"z": "0", "z_dot": "0"}})js");
+  const std::string dir = (work / "fall_overflows").string();
+  std::filesystem::remove_all(dir);
+  const outcome f = run("simulate " + fall + " --t-end 3 --every 0.5 --quiet --out " + dir);
+  BOOST_TEST(f.status == 3, f.out << f.err);
+  BOOST_TEST(f.out.find("energy at t = 1.5: not finite in double") != std::string::npos, f.out << f.err);
+  BOOST_TEST(f.out.find("stopped before t = 3") != std::string::npos, f.out);
+  BOOST_TEST(slurp(dir + "/summary.json").find("\"steps\": null") != std::string::npos);
+  const std::string rows = slurp(dir + "/trajectory.csv");
+  BOOST_TEST(csv_rows(dir + "/trajectory.csv").size() == 4u, rows);  // the header and t = 0, 0.5, 1
+  BOOST_TEST(rows.find("inf") == std::string::npos, rows);
+  BOOST_TEST(rows.find("nan") == std::string::npos, rows);
+  std::filesystem::remove_all(dir + "_mpfr");
+  const outcome fm = run("simulate " + fall + " --scalar mpfr --bits 64 --t-end 3 --every 0.5 --quiet --out " + dir + "_mpfr");
+  BOOST_TEST(fm.status == 0, fm.out << fm.err);
 }

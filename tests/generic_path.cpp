@@ -166,7 +166,7 @@ int outside = 0, checked = 0;
 std::string state_label;
 double worst_double = 0;
 /// The generic interval x encloses the closed form's value r (at 320 bits); the
-/// generic double d agrees with r to 1e-10 of the scale.
+/// generic double d agrees with r to 64 eps of the scale (measured: 1.4e-15, 6.3 eps).
 void expect(const char* what, const interval& x, double d, const ref_t& r, double scale) {
   ++checked;
   if (!(ref_t(lower(x)) <= r && r <= ref_t(upper(x)))) {
@@ -288,7 +288,7 @@ BOOST_AUTO_TEST_CASE(generic_path_encloses_and_agrees_with_the_closed_forms) {
     }
   }
   BOOST_TEST(outside == 0);
-  BOOST_TEST(worst_double <= 1e-10);
+  BOOST_TEST(worst_double <= 64 * std::ldexp(1.0, -53));
   BOOST_TEST_MESSAGE(checked << " results on " << states << " random states of each scene: " << outside
                              << " interval results miss the closed form at 320 bits; double's largest error "
                              << worst_double << " of the scale");

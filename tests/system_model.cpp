@@ -176,6 +176,83 @@ BOOST_AUTO_TEST_CASE(the_base_scene_is_valid_and_its_reaction_is_the_bead_s_weig
   BOOST_TEST((lo <= 0 && hi >= 0), "stop_reaction = " << to_string(e.result("stop_reaction").values[0]));
 }
 
+namespace {
+/// A random expression in x, y, z (and w when `with_w`), at most `depth` deep.
+std::string random_expression(std::mt19937_64& rng, int depth, bool with_w) {
+  std::uniform_int_distribution<int> pick(0, 9);
+  const char* vars[] = {"x", "y", "z", "w"};
+  const int leaf = pick(rng);
+  if (depth == 0 || leaf < 2) {
+    if (leaf % 2 == 0) return std::to_string(pick(rng) + 1) + ".25";
+    return vars[std::uniform_int_distribution<int>(0, with_w ? 3 : 2)(rng)];
+  }
+  const std::string a = random_expression(rng, depth - 1, with_w), b = random_expression(rng, depth - 1, with_w);
+  switch (pick(rng)) {
+    case 0: case 1: return "(" + a + " + " + b + ")";
+    case 2: return "(" + a + " - " + b + ")";
+    case 3: case 4: return a + "*" + b;
+    case 5: return "sin(" + a + ")";
+    case 6: return "cos(" + a + ")";
+    case 7: return "sqrt(1 + (" + a + ")^2)";
+    case 8: return "-(" + a + ")";
+    default: return a + "*0";  // a term that is 0 as written
+  }
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(a_difference_cancels_the_terms_both_share_and_keeps_the_value) {
+  // a = A + S, b = B + S written with S split into terms, nested and signed differently (S holds
+  // the variable w, A and B do not): expression::difference(a, b) must not depend on w (the
+  // terms of S cancelled: a P - G no longer carries the frame's origin), must equal a - b at
+  // 256 bits at random points, and its interval enclosure over random boxes must contain the
+  // 256-bit value at points of the box and be no wider than a - b evaluated as written.
+  std::mt19937_64 rng(20261127);
+  std::uniform_real_distribution<double> at(-2, 2);
+  const std::vector<std::string> vars{"x", "y", "z", "w"};
+  int narrower = 0, cases = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const std::string A = random_expression(rng, 4, false), B = random_expression(rng, 4, false);
+    const std::string S1 = "(w + " + random_expression(rng, 3, true) + ")", S2 = "w*" + random_expression(rng, 3, true),
+                      S3 = "cos(w)*" + random_expression(rng, 2, true);
+    // a = (S1 + A) + (S2 - S3);  b = S1 - (S3 - S2) + B  (the same signed terms of S in both)
+    const expression a = expression::parse("(" + S1 + " + " + A + ") + (" + S2 + " - " + S3 + ")", vars, "a");
+    const expression b = expression::parse(S1 + " - (" + S3 + " - " + S2 + ") + " + B, vars, "b");
+    const expression d = expression::difference(a, b, "a - b");
+    BOOST_TEST(!d.depends_on(3), "w left in " << d.to_string());
+    BOOST_TEST(a.depends_on(3));
+    for (int k = 0; k < 3; ++k) {
+      const double p[4] = {at(rng), at(rng), at(rng), at(rng)};
+      {
+        const mp_precision_scope scope(256);
+        const mpfr xs[4] = {mpfr(p[0]), mpfr(p[1]), mpfr(p[2]), mpfr(p[3])};
+        const mpfr ref = a.eval_at(xs) - b.eval_at(xs), got = d.eval_at(xs);
+        BOOST_TEST(abs(got - ref) <= mpfr("1e-60") * (1 + abs(ref)), d.to_string() << " at trial " << trial);
+      }
+      const evaluation_scope<interval> scope;
+      interval box[4];
+      for (int i = 0; i < 4; ++i) box[i] = interval(p[i], p[i] + 1e-3);
+      const interval enclosed = d.eval_at(box), naive = interval(a.eval_at(box) - b.eval_at(box));
+      BOOST_TEST(boost::numeric::width(enclosed) <= boost::numeric::width(naive) * (1 + 1e-9) + 1e-300,
+                 "trial " << trial << ": " << to_string(enclosed) << " wider than " << to_string(naive));
+      narrower += boost::numeric::width(enclosed) < 0.5 * boost::numeric::width(naive);
+      ++cases;
+      const mp_precision_scope mp(256);
+      for (int j = 0; j < 4; ++j) {
+        mpfr xs[4];
+        for (int i = 0; i < 4; ++i) xs[i] = mpfr(p[i]) + mpfr(j) / 3 * mpfr("1e-3");
+        const auto [lo, hi] = bounds_of(enclosed);
+        const ref_t truth(mpfr(a.eval_at(xs) - b.eval_at(xs)).str(80));
+        // the reference's own rounding (256 bits, terms summed in a's and b's orders): 1e-60
+        const ref_t slack = ref_t("1e-60") * (1 + abs(truth));
+        BOOST_TEST((lo <= truth + slack && truth - slack <= hi),
+                   "trial " << trial << ": " << to_string(enclosed) << " misses " << truth.str(30));
+      }
+    }
+  }
+  // the cancellation narrows: the shared terms' width was in a - b
+  BOOST_TEST(narrower > cases / 2, narrower << " of " << cases << " enclosures less than half as wide as a - b's");
+}
+
 BOOST_AUTO_TEST_CASE(bad_input_is_refused_naming_the_field) {
   expect_refused(replace(base, "l/2*sin(theta)", "l/2*sin(thetta)"), "unknown name 'thetta'");
   expect_refused(replace(base, R"~("g": "9.81")~", R"~("g": "h", "h": "2*g")~"), "circular definition");
@@ -783,8 +860,29 @@ BOOST_AUTO_TEST_CASE(a_sleeping_top_linearizes_to_its_closed_form) {
 }
 
 // The linearize section: bad input refused naming the field.
+namespace {
+/// The refusal of a scene's "linearize" section (what `appell linearize` reports), "" if it is
+/// accepted; the scene itself must be accepted (eval and the motion ignore the section).
+std::string linearize_refusal(const std::string& json) {
+  try {
+    const scene_input scene = read_scene(parse_json(json));
+    const system_input& in = scene.as<system_input>();
+    BOOST_TEST((in.linearize.has_value() == in.linearize_refusal.empty()));
+    return in.linearize_refusal;
+  } catch (const input_error& e) {
+    BOOST_TEST(false, "the scene is refused for its linearize section: " << e.what());
+    return e.what();
+  }
+}
+}  // namespace
+
 BOOST_AUTO_TEST_CASE(a_bad_linearize_section_is_refused) {
+  // by `linearize` only: the scene, read as eval reads it, is accepted
   const std::string bike = bicycle_text();
+  auto expect_refused = [](const std::string& json, const std::string& part) {
+    const std::string why = linearize_refusal(json);
+    BOOST_TEST(why.find(part) != std::string::npos, "expected a refusal containing '" << part << "', got '" << why << "'");
+  };
   BOOST_TEST_REQUIRE(bike.find(R"~("coordinates": [
    "phi",
    "delta"
@@ -818,6 +916,29 @@ BOOST_AUTO_TEST_CASE(a_bad_linearize_section_is_refused) {
 
 // Rolling written as point_velocity constraints, with the rolling rates solved from them
 // (solve_speeds), gives the disk of the hand-written rows and 90-digit rates.
+BOOST_AUTO_TEST_CASE(a_projected_state_is_linearized_at_its_projection) {
+  // A bicycle state a little off the front contact (theta 1e-9 where it holds at 0), with
+  // "project": the state is certified at its projection, and the linearize section's reference
+  // motion starts from the projected state too (it was checked unprojected, and refused).
+  const std::string off = replace(with_value(bicycle_text(), "theta", "1e-9"), R"~("state": {)~",
+                                  R"~("project": "1e-6", "state": {)~");
+  BOOST_TEST(refusal(off) == "");
+  BOOST_TEST(linearize_refusal(off) == "");
+  // Without project the state is refused (eval's contract), naming the constraint.
+  BOOST_TEST(refusal(with_value(bicycle_text(), "theta", "1e-9")).find("front_contact") != std::string::npos);
+  // All eight rates given, as a double engine prints them (17 digits: the solved ones off by up to
+  // 5e-16), and no solve_speeds: eval takes the state at its projection (solve_speeds is what
+  // linearize needs, and only linearize refuses its absence).
+  std::string all = bicycle_text();
+  const auto from = all.find("\"solve_speeds\"");
+  BOOST_TEST_REQUIRE(from != std::string::npos);
+  all.erase(from, all.find(']', from) + 2 - from);
+  all = replace(all, R"~("state": {)~", R"~("project": "1e-15", "state": {"yP_dot": "0", "psi_dot": "-0.014918533588943585", "theta_dot": "0", "thR_dot": "-16.666666666666667", "thF_dot": "-14.285714285714286",)~");
+  BOOST_TEST(refusal(all) == "");
+  BOOST_TEST(linearize_refusal(all).find("a constrained system needs solve_speeds") != std::string::npos,
+             linearize_refusal(all));
+}
+
 BOOST_AUTO_TEST_CASE(point_velocity_and_solve_speeds_give_the_hand_written_disk) {
   std::ifstream f(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk.json");
   const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());

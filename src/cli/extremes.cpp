@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "accuracy.hpp"
+#include "files.hpp"
 #include "extremes.hpp"
 
 namespace appell::cli {
@@ -62,7 +63,7 @@ int extremes(const extremes_options& o) {
   std::size_t done = 0, total = 0;
   for (const auto& w : sweeps) total += w.points.size();
   for (const auto& w : sweeps) {
-    std::ofstream csv(std::filesystem::path(o.out_dir) / (w.name + ".csv"));
+    std::ostringstream csv;  // written whole after the sweep (a temporary file, then rename)
     csv << "sweep,param,x,scalar,bits,status,correct_digits,rel_width,error_amplification,reason\n";
     std::cout << "\n" << w.what << "\n" << std::left << std::setw(22) << w.x_label;
     for (const std::string& s : scalars) std::cout << std::right << std::setw(12) << s;
@@ -110,15 +111,20 @@ int extremes(const extremes_options& o) {
         ++block;
       }
     }
+    write_whole(o.out_dir, w.name + ".csv", csv.str());
     const auto png = std::filesystem::path(o.out_dir) / (w.name + ".png");
-    const std::string script = "set terminal png size 900,600 noenhanced\nset output '" + png.string() +
+    const auto png_tmp = std::filesystem::path(o.out_dir) / ("." + w.name + ".png" + std::to_string(::getpid()));
+    const std::string script = "set terminal png size 900,600 noenhanced\nset output '" + png_tmp.string() +
                                "'\nset title \"" + w.what + "\"\nset xlabel \"" + w.x_label +
                                "\"\nset ylabel 'correct decimal digits (intervals: certified)'\nset grid\nset key outside right\nplot " +
                                plot + "\n";
+    bool plotted = false;
     if (FILE* gp = popen("gnuplot 2>/dev/null", "w")) {
       std::fputs(script.c_str(), gp);
-      pclose(gp);
+      plotted = pclose(gp) == 0 && std::filesystem::exists(png_tmp);
     }
+    if (plotted) std::filesystem::rename(png_tmp, png);
+    else std::filesystem::remove(png_tmp);
     std::filesystem::remove(dat);
   }
   std::cerr << "\r" << std::string(60, ' ') << "\r";

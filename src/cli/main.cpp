@@ -13,6 +13,7 @@
 #include "appell/io/scene.hpp"
 #include "appell/linalg/solve.hpp"
 #include "exit_status.hpp"
+#include "flags.hpp"
 #include "extremes.hpp"
 #include "linearize.hpp"
 #include "motion.hpp"
@@ -34,14 +35,17 @@ constexpr const char* usage_text =
     "                        [--bits N] [--inputs decimal|binary64] [--project TOL] --out DIR\n"
     "       appell score REFERENCE_DIR OTHER.csv [--min-digits D] [--plot FILE.png]\n"
     "       appell simulate SCENE --t-end T [--scalar NAME] [--bits N] [--order N] [--tol E] [--every DT]\n"
-    "                       [--max-seconds S] --out DIR\n"
+    "                       [--max-seconds S] [--quiet] --out DIR\n"
     "       appell enclose SCENE --t-end T [--scalar interval|mpfi] [--bits N] [--order N] [--tol E]\n"
-    "                      [--max-width W] [--max-seconds S] --out DIR\n"
-    "       appell horizon SCENE --t-end T [--every DT] [--scalars LIST] --out DIR\n"
+    "                      [--max-width W] [--max-seconds S] [--quiet] --out DIR\n"
+    "       appell horizon SCENE --t-end T [--every DT] [--scalars LIST] [--quiet] --out DIR\n"
     "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
     "  --bits N: precision of mpfr and mpfi (default 256): mpfi gets exactly N bits; mpfr the\n"
     "            smallest count >= N that Boost's decimal-digit precision can set (reported)\n"
-    "  tradeoff: speed and accuracy of every scalar; writes DIR/tradeoff.csv and DIR/tradeoff.png\n"
+    "  tradeoff: speed and accuracy of every scalar (median of N batches, default 200); writes\n"
+    "            DIR/tradeoff.csv and DIR/tradeoff.png (DIR default .)\n"
+    "  extremes: the stability sweeps (singular angles, near-equal inertias, huge spins, tiny radii)\n"
+    "            in every scalar; writes DIR/<sweep>.csv and .png (DIR default data/extremes)\n"
     "  linearize: the linearized equations of a system file about its \"linearize\" section's motion,\n"
     "             their eigenvalues and the speeds where a real part crosses 0 (enclosed in interval, mpfi)\n"
     "  reference: certified values of a scene's results at many states (FILE: CSV, a header naming the\n"
@@ -56,6 +60,7 @@ constexpr const char* usage_text =
     "           stops before T (what was enclosed is still written, marked incomplete)\n"
     "  --max-seconds S: simulate and enclose stop after S seconds, their files written and marked\n"
     "                   incomplete (exit 3); the progress line estimates the time left\n"
+    "  --quiet: simulate, enclose and horizon print no progress line on stderr\n"
     "  horizon: the long-horizon study: each point scalar in LIST (default double,long-double,dd,float128)\n"
     "           against a 256-bit reference (closed form where known); the error against time, Brouwer's\n"
     "           law as the goal line, digits kept per decade of periods; DIR/horizon.csv, summary.json,\n"
@@ -214,11 +219,8 @@ int main(int argc, char** argv) {
       if (a == "--scalar") o.scalar = value("--scalar");
       else if (a == "--format") o.format = value("--format");
       else if (a == "--bits") {
-        const std::string b = value("--bits");
-        if (b.empty() || b.find_first_not_of("0123456789") != std::string::npos || b.size() > 6 ||
-            std::stoul(b) < 2 || std::stoul(b) > 100000)
-          throw appell::input_error("--bits: expected an integer from 2 to 100000, got '" + b + "'");
-        o.bits = static_cast<unsigned>(std::stoul(b));
+        const std::string why = appell::cli::parse_bits(value("--bits"), o.bits);
+        if (!why.empty()) throw appell::input_error(why);
       } else if (!a.empty() && a[0] == '-') return usage("unknown option '" + a + "'");
       else if (o.scene.empty()) o.scene = a;
       else return usage("more than one scene given");

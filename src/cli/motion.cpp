@@ -1,5 +1,7 @@
 #include "motion.hpp"
 
+#include "flags.hpp"
+
 #include <cmath>
 #include <iostream>
 
@@ -44,14 +46,7 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
       else if (a == "--out") o.out = v;
       else if (a == "--scalar") o.scalar = v;
       else if (a == "--bits") {
-        try {
-          std::size_t used = 0;
-          const long b = std::stol(v, &used);
-          if (used != v.size() || b < 2 || b > 100000) return "--bits: expected an integer from 2 to 100000, got '" + v + "'";
-          o.bits = static_cast<unsigned>(b);
-        } catch (const std::exception&) {
-          return "--bits: expected an integer, got '" + v + "'";
-        }
+        if (std::string why = parse_bits(v, o.bits); !why.empty()) return why;
       } else if (a == "--order") {
         try {
           std::size_t used = 0;

@@ -144,6 +144,7 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
   std::vector<ode::sample<T>> rows;
   progress_meter meter("simulate", approx_double(t_end), o.quiet, o.max_seconds);
   ode::simulate_stats st;
+  const auto started = std::chrono::steady_clock::now();
   std::string failure;  // why the run stopped before T (the rows up to there are still written)
   try {
     st = ode::simulate(prob, x0, t_end, every, order, tol,
@@ -152,10 +153,7 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
                          // naming it; the rows before it are written): never a number that is not one
                          for (const auto* group : {&s.results, &s.invariants})
                            for (const auto& g : *group)
-                             for (const T& v : g.values)
-                               if (!is_finite(v))
-                                 throw certification_error(g.name + " is not finite in " + scalar_traits<T>::name +
-                                                           " at t = " + to_string(s.t) + " (an overflow?)");
+                             for (const T& v : g.values) require_finite(v, g.name + " at t = " + to_string(s.t));
                          rows.push_back(s);
                          rows.back().x = reported(prob, s.x);
                        },
@@ -168,6 +166,9 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
                                 dynamic_cast<const std::invalid_argument*>(&e) || dynamic_cast<const ode::run_stopped*>(&e);
     if (!motion_failure || rows.empty()) throw;  // a bug, or not even the initial state
     failure = e.what();
+    // the integrator's counts went with its exception: the time is measured here, the steps
+    // (and their sizes) are not known, null in summary.json
+    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   }
   column_names(rows.front().results, "", header);
   column_names(rows.front().invariants, "", header);
@@ -219,10 +220,10 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
                             {"complete", failure.empty()},
                             {"reason", failure},
                             {"t_reached", approx_double(rows.back().t)},
-                            {"steps", st.steps},
+                            {"steps", failure.empty() ? nlohmann::json(st.steps) : nlohmann::json()},
                             {"seconds", st.seconds},
-                            {"min_step", st.min_step},
-                            {"max_step", st.max_step},
+                            {"min_step", failure.empty() ? nlohmann::json(st.min_step) : nlohmann::json()},
+                            {"max_step", failure.empty() ? nlohmann::json(st.max_step) : nlohmann::json()},
                             {"final_state", final_state},
                             {"invariants", inv}};
   const std::filesystem::path dir(o.out);
@@ -251,8 +252,11 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
     }
   }
   std::ostringstream out;
-  out << "simulate " << scene.model << " in " << scalar_traits<T>::name << " (" << bits_text<T>() << "), order " << order << ", tol " << tol << ": " << st.steps << " steps to t = " << o.t_end << " in "
-      << st.seconds << " s\n";
+  out << "simulate " << scene.model << " in " << scalar_traits<T>::name << " (" << bits_text<T>() << "), order " << order
+      << ", tol " << tol << ": ";
+  if (failure.empty()) out << st.steps << " steps to t = " << o.t_end;
+  else out << "stopped before t = " << o.t_end;
+  out << " in " << st.seconds << " s\n";
   if (!failure.empty())
     out << "  INCOMPLETE: " << failure << "; written up to t = " << approx_double(rows.back().t) << "\n";
   for (const auto& j : inv) {

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "accuracy.hpp"
+#include "files.hpp"
 
 namespace appell::cli {
 namespace {
@@ -137,12 +138,13 @@ int tradeoff(const tradeoff_options& o) {
 
   std::filesystem::create_directories(o.out_dir);
   const std::filesystem::path csv = std::filesystem::path(o.out_dir) / "tradeoff.csv";
-  {
-    std::ofstream f(csv);
+  {  // written whole or not at all (a temporary file, then rename), as every command's files
+    std::ostringstream f;
     f << "scalar,bits,ns_per_eval,ratio_to_double,correct_digits,rel_width,batch,reps,note\n";
     for (const auto& r : rows)
       f << r.scalar << "," << r.bits << "," << figure(r.ns, 6) << "," << figure(r.ratio, 4) << "," << figure(r.digits, 4) << ","
         << figure(r.rel_width, 3) << "," << r.batch << "," << o.reps << ",\"" << r.note << "\"\n";
+    write_whole(o.out_dir, "tradeoff.csv", f.str());
   }
   std::cout << "appell tradeoff " << o.scene << " (" << scene.model << "), median of " << o.reps
             << " batches, reference: mpfr 4096 bits\n\n";
@@ -157,6 +159,7 @@ int tradeoff(const tradeoff_options& o) {
   // The plot: correct digits against cost (log scale), one labelled point per row.
   const std::filesystem::path dat = std::filesystem::temp_directory_path() / ("appell-tradeoff-" + std::to_string(::getpid()) + ".dat");
   const std::filesystem::path png = std::filesystem::path(o.out_dir) / "tradeoff.png";
+  const std::filesystem::path png_tmp = std::filesystem::path(o.out_dir) / (".tradeoff.png" + std::to_string(::getpid()));
   {
     std::ofstream f(dat);
     for (const auto& r : rows)
@@ -164,7 +167,7 @@ int tradeoff(const tradeoff_options& o) {
         f << r.ratio << " " << r.digits << " \"" << r.scalar << (r.bits > 64 && r.scalar.rfind("mp", 0) == 0 ? " " + std::to_string(r.bits) : "")
           << "\" " << (r.scalar == "interval" || r.scalar == "mpfi" ? 1 : 0) << "\n";
   }
-  const std::string script = "set terminal png size 900,600 noenhanced\nset output '" + png.string() +
+  const std::string script = "set terminal png size 900,600 noenhanced\nset output '" + png_tmp.string() +
                              "'\nset logscale x\nset xlabel 'cost: time per evaluation / double'\n"
                              "set ylabel 'correct decimal digits (intervals: certified)'\nset title 'appell tradeoff: " +
                              scene.model + "'\nset grid\nset key top left\n"
@@ -175,8 +178,10 @@ int tradeoff(const tradeoff_options& o) {
   bool plotted = false;
   if (gp) {
     std::fputs(script.c_str(), gp);
-    plotted = pclose(gp) == 0 && std::filesystem::exists(png);
+    plotted = pclose(gp) == 0 && std::filesystem::exists(png_tmp);
   }
+  if (plotted) std::filesystem::rename(png_tmp, png);
+  else std::filesystem::remove(png_tmp);
   std::filesystem::remove(dat);
   std::cout << "\nwrote " << csv.string();
   if (plotted) std::cout << " and " << png.string();

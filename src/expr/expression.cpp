@@ -319,6 +319,84 @@ expression expression::derivative(int variable) const {
   return out;
 }
 
+expression expression::difference(const expression& a, const expression& b, const std::string& where) {
+  if (a.variables_ != b.variables_) throw std::logic_error("expression::difference: operands in different variables");
+  expression out;
+  out.where_ = where;
+  out.variables_ = a.variables_;
+  // Both copied into out with structurally equal subtrees merged into one node, so that a
+  // term's node index is its identity.
+  std::map<std::tuple<int, int, int, int, std::string>, int> index;
+  auto copy_all = [&](const expression& e) {
+    std::vector<int> mapped(e.nodes_.size(), -1);
+    std::vector<char> reached(e.nodes_.size(), 0);
+    reached[static_cast<std::size_t>(e.root_)] = 1;
+    for (std::size_t i = e.nodes_.size(); i-- > 0;)
+      if (reached[i])
+        for (int c : {e.nodes_[i].a, e.nodes_[i].b})
+          if (c >= 0) reached[static_cast<std::size_t>(c)] = 1;
+    for (std::size_t i = 0; i < e.nodes_.size(); ++i) {  // operands have smaller indices
+      if (!reached[i]) continue;
+      const node& n = e.nodes_[i];
+      const int x = n.a >= 0 ? mapped[static_cast<std::size_t>(n.a)] : -1;
+      const int y = n.b >= 0 ? mapped[static_cast<std::size_t>(n.b)] : -1;
+      const int var = n.kind == op::variable ? n.var : 0;
+      const auto key = std::make_tuple(static_cast<int>(n.kind), x, y, var, n.number);
+      const auto found = index.find(key);
+      mapped[i] = found != index.end() ? found->second : index.emplace(key, out.add_node(n.kind, x, y, n.number, var)).first->second;
+    }
+    return mapped[static_cast<std::size_t>(e.root_)];
+  };
+  const int ra = copy_all(a), rb = copy_all(b);
+  // zero[i]: node i is 0 as written (a number 0, or a product with such a factor).
+  std::vector<char> zero(out.nodes_.size(), 0);
+  for (std::size_t i = 0; i < out.nodes_.size(); ++i) {
+    const node& n = out.nodes_[i];
+    if (n.kind == op::number) zero[i] = n.number.find_first_not_of("0.") == std::string::npos;
+    if (n.kind == op::mul) zero[i] = zero[static_cast<std::size_t>(n.a)] || zero[static_cast<std::size_t>(n.b)];
+    if (n.kind == op::neg) zero[i] = zero[static_cast<std::size_t>(n.a)];
+  }
+  // The signed terms of a node, through +, - and unary - (an explicit stack: sums may be long).
+  auto terms_of = [&](int root, int sign) {
+    std::vector<std::pair<int, int>> terms, todo{{root, sign}};
+    while (!todo.empty()) {
+      const auto [i, s] = todo.back();
+      todo.pop_back();
+      const node& n = out.nodes_[static_cast<std::size_t>(i)];
+      if (n.kind == op::add) {
+        todo.push_back({n.b, s});
+        todo.push_back({n.a, s});
+      } else if (n.kind == op::sub) {
+        todo.push_back({n.b, -s});
+        todo.push_back({n.a, s});
+      } else if (n.kind == op::neg) {
+        todo.push_back({n.a, -s});
+      } else if (!zero[static_cast<std::size_t>(i)]) {
+        terms.push_back({i, s});
+      }
+    }
+    return terms;
+  };
+  std::vector<std::pair<int, int>> kept = terms_of(ra, 1);
+  std::vector<char> cancelled(kept.size(), 0);
+  for (const auto& [i, s] : terms_of(rb, -1)) {
+    std::size_t k = 0;
+    while (k < kept.size() && (cancelled[k] || kept[k].first != i || kept[k].second != -s)) ++k;
+    if (k < kept.size()) cancelled[k] = 1;
+    else kept.push_back({i, s}), cancelled.push_back(0);
+  }
+  int root = -1;
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    if (cancelled[k]) continue;
+    const auto [i, s] = kept[k];
+    if (root < 0) root = s > 0 ? i : out.add_node(op::neg, i);
+    else root = out.add_node(s > 0 ? op::add : op::sub, root, i);
+  }
+  out.root_ = root < 0 ? out.add_node(op::number, -1, -1, "0") : root;
+  out.check_limits();
+  return out;
+}
+
 std::string expression::node_string(int i) const {
   const node& n = nodes_[static_cast<std::size_t>(i)];
   switch (n.kind) {

@@ -58,6 +58,16 @@ class expression {
                           const std::string& where);
   /// d/d(variable), symbolically (the only variable, or variable number `variable`).
   expression derivative(int variable = 0) const;
+  /// a - b, symbolically, with the terms that a and b share cancelled: both are
+  /// read as signed sums of terms (through +, - and unary -), a term of b equal
+  /// as a tree to a term of a with the same sign cancels it, and terms that are
+  /// 0 as written (a number 0, a product with one) are left out.  The value is
+  /// a - b exactly; an interval evaluation no longer carries what the two share
+  /// (a body's centre and a point of it both written from the frame's origin
+  /// (x + ...): their difference over a box is as wide as x twice, the
+  /// cancelled one as wide as the offset alone).  Both must be in the same
+  /// variables.
+  static expression difference(const expression& a, const expression& b, const std::string& where);
   /// Whether variable number `variable` occurs in the expression (its tree as
   /// written: x - x depends on x).
   bool depends_on(int variable) const;

@@ -161,10 +161,7 @@ evaluation<T> compute(const prepared_scene<T>& scene) {
     for (auto& r : *group)
       for (std::size_t i = 0; i < r.values.size(); ++i) {
         scope.finish(r.values[i]);
-        if (!is_finite(r.values[i]))
-          throw certification_error(r.name + (r.is_vector ? "[" + std::to_string(i) + "]" : std::string()) +
-                                    ": not finite in " + scalar_traits<T>::name + " (" + to_string(r.values[i]) +
-                                    "; an overflow? a scalar with a wider range may succeed)");
+        require_finite(r.values[i], r.name + (r.is_vector ? "[" + std::to_string(i) + "]" : std::string()));
       }
   return e;
 }

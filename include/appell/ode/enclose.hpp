@@ -442,8 +442,8 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     while (!accepted) {
       if (hd < h_floor) {
         st.complete = false;
-        st.reason = "step-size collapse at t = " + std::to_string(approx_double(t)) + " (no a priori enclosure with h >= " +
-                    std::to_string(h_floor) + (refusal.empty() ? ")" : "; the last refusal: " + refusal + ")");
+        st.reason = "step-size collapse at t = " + number_text(approx_double(t)) + " (no a priori enclosure with h >= " +
+                    number_text(h_floor) + (refusal.empty() ? ")" : "; the last refusal: " + refusal + ")");
         break;
       }
       // h is a double with at most 20 significant bits: t + h stays exact for t on the same grid.
@@ -628,8 +628,8 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     if (progress) progress(st.t_reached / horizon);
     if (detail::max_width(X) > max_width) {
       st.complete = false;
-      st.reason = "width blow-up at t = " + std::to_string(st.t_reached) + " (a state's width exceeds " +
-                  std::to_string(max_width) + ")";
+      st.reason = "width blow-up at t = " + number_text(st.t_reached) + " (a state's width exceeds " +
+                  number_text(max_width) + ")";
       break;
     }
     if (last) break;
@@ -645,7 +645,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
           !dynamic_cast<const std::invalid_argument*>(&e))
         throw;
       st.complete = false;
-      st.reason = "the motion cannot be continued at t = " + std::to_string(approx_double(t)) + ": " + e.what();
+      st.reason = "the motion cannot be continued at t = " + number_text(approx_double(t)) + ": " + e.what();
       break;
     }
   }

@@ -20,6 +20,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <functional>
 #include <type_traits>
 #include <vector>
@@ -29,6 +31,14 @@
 #include "appell/ode/problems.hpp"
 
 namespace appell::ode {
+
+/// A time or a step in a message: 9 significant digits, in exponent form when small or large
+/// (std::to_string's fixed six decimals printed a step of 1.6e-9 as 0.000000).
+inline std::string number_text(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.9g", x);
+  return b;
+}
 
 template <class S>
 using series = std::vector<vector_t<S>>;  // series[k](i): coefficient k of component i
@@ -271,8 +281,8 @@ simulate_stats simulate(const P& prob, const vector_t<T>& x0, const T& t_end, co
       } else if (!(approx_double(h) > h_floor * std::max(1.0, std::fabs(approx_double(t))))) {
         // Steps that no longer advance the time: the motion nears a singularity of its
         // right-hand side (a square root's branch point, a division by 0), which it cannot pass.
-        throw certification_error("step-size collapse at t = " + std::to_string(approx_double(t)) +
-                                  " (the series allow no step above " + std::to_string(h_floor) +
+        throw certification_error("step-size collapse at t = " + number_text(approx_double(t)) +
+                                  " (the series allow no step above " + number_text(h_floor) +
                                   " relative: a singularity of the motion)");
       }
       const vector_t<T> delta = horner(c, h, 1, order);
@@ -296,7 +306,7 @@ simulate_stats simulate(const P& prob, const vector_t<T>& x0, const T& t_end, co
       if (!hits) st.min_step = std::min(st.min_step, hd);
       st.max_step = std::max(st.max_step, hd);
       for (Eigen::Index i = 0; i < n; ++i)
-        if (!is_finite(x(i))) throw certification_error("the state is no longer finite at t = " + std::to_string(approx_double(t)));
+        if (!is_finite(x(i))) throw certification_error("the state is no longer finite at t = " + number_text(approx_double(t)));
       if (progress) progress(approx_double(t) / horizon);
     }
     record(t);

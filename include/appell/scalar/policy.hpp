@@ -12,6 +12,10 @@
 //       mpfi:     the working precision scalar_traits<mpfi>::working_bits(p)
 //                 (guard bits); finish(x) rounds x outward to the p bits asked for;
 //       others:   nothing.
+//   require_finite(x, name)
+//                         refuses (certification_error naming it: exit 3) a
+//                         value that is not finite in T, an overflow: every
+//                         command's numbers pass here before they are written.
 //   consistent_with_zero(residual, scale)
 //                         the admissibility test of a state against a
 //                         constraint: interval types, the enclosure holds 0;
@@ -27,6 +31,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "appell/scalar/format.hpp"
 #include "appell/scalar/functions.hpp"
 #include "appell/scalar/traits.hpp"
 
@@ -75,6 +80,16 @@ class evaluation_scope {
   std::optional<upward_rounding> mode_;
   std::optional<mp_precision_scope> precision_;
 };
+
+/// Refuses a value that is not finite in T (an overflow): certification_error naming it,
+/// with its value (exit 3; a scalar with a wider range may succeed).  Never a number that
+/// is not one in what a command writes.
+template <Scalar T>
+void require_finite(const T& x, const std::string& name) {
+  if (!is_finite(x))
+    throw certification_error(name + ": not finite in " + scalar_traits<T>::name + " (" + to_string(x) +
+                              "; an overflow? a scalar with a wider range may succeed)");
+}
 
 /// A constraint residual at a state is consistent with 0: for interval types
 /// the enclosure holds 0 (decided, not tolerated); for point types

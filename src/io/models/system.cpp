@@ -643,8 +643,9 @@ system_input system_model::read(object_reader& scene) {
     require_positive(scene, "project", *in.project, "a tolerance");
   }
 
-  // The linearization (optional): about the state with "about" applied.
-  if (scene.has("linearize")) {
+  // The linearization (optional): about the state with "about" applied.  Only `linearize` reads
+  // the section: a refusal of it is kept for that command (linearize_refusal), not raised here.
+  if (scene.has("linearize")) try {
     object_reader lr = scene.object("linearize");
     linearize_input li;
     linearize_definition& L = li.def;
@@ -720,9 +721,9 @@ system_input system_model::read(object_reader& scene) {
       for (const auto& m : object_value(lr, "about").members) {
         const auto q = std::find(coordinates.begin(), coordinates.end(), m.key);
         const auto u = std::find(speeds.begin(), speeds.end(), m.key);
-        if (q != coordinates.end()) li.q[static_cast<std::size_t>(q - coordinates.begin())] = about.number(m.key);
+        if (q != coordinates.end()) li.about_q.emplace_back(static_cast<int>(q - coordinates.begin()), about.number(m.key));
         else if (u != speeds.end() && !is_solved(static_cast<int>(u - speeds.begin())))
-          li.u[static_cast<std::size_t>(u - speeds.begin())] = about.number(m.key);
+          li.about_u.emplace_back(static_cast<int>(u - speeds.begin()), about.number(m.key));
         else
           throw input_error(about.path(m.key) + ": not a coordinate or a given speed");
       }
@@ -749,7 +750,12 @@ system_input system_model::read(object_reader& scene) {
       cs.finish();
     }
     lr.finish();
+    for (const auto& [i, v] : li.about_q) li.q[static_cast<std::size_t>(i)] = v;
+    for (const auto& [j, v] : li.about_u) li.u[static_cast<std::size_t>(j)] = v;
     in.linearize = std::move(li);
+  } catch (const input_error& e) {
+    in.linearize.reset();
+    in.linearize_refusal = e.what();
   }
 
   {  // the result names must be distinct
@@ -774,7 +780,16 @@ system_input system_model::read(object_reader& scene) {
     for (int i = 0; i < d.vars.coordinates; ++i) q(i) = value<mpfi>(in.q[static_cast<std::size_t>(i)]);
     for (int j = 0; j < d.vars.speeds; ++j) u(j) = value<mpfi>(in.u[static_cast<std::size_t>(j)]);
     const mpfi t = value<mpfi>(in.t);
-    if (in.project) project_state(in, q, u);
+    if (in.project) {
+      project_state(in, q, u);
+      if (in.linearize) {  // the reference motion from the projected state, "about" applied
+        linearize_input& li = *in.linearize;
+        li.q = in.q;
+        li.u = in.u;
+        for (const auto& [i, v] : li.about_q) li.q[static_cast<std::size_t>(i)] = v;
+        for (const auto& [j, v] : li.about_u) li.u[static_cast<std::size_t>(j)] = v;
+      }
+    }
     for (std::size_t r = 0; r < d.constraints.size(); ++r) {  // point_velocity directions, before any solve
       const auto& kc = sys.constraints[r];
       if (kc.body < 0) continue;
@@ -943,7 +958,7 @@ system_input system_model::read(object_reader& scene) {
         }
       }
     }
-    if (in.linearize) {  // the reference motion on the holonomic constraints; a nonzero speed; a range
+    if (in.linearize) try {  // the reference motion on the holonomic constraints; a nonzero speed; a range
       const linearize_input& li = *in.linearize;
       vector_t<mpfi> ql(d.vars.coordinates);
       for (int i = 0; i < d.vars.coordinates; ++i) ql(i) = value<mpfi>(li.q[static_cast<std::size_t>(i)]);
@@ -961,6 +976,12 @@ system_input system_model::read(object_reader& scene) {
         throw input_error("linearize.critical_speeds: from must be less than to");
       if (li.def.gravity >= 0 && possibly_zero(sys.parameters[static_cast<std::size_t>(li.def.gravity)]))
         throw input_error("linearize.gravity: the parameter is 0 (K0 is the stiffness per unit g)");
+    } catch (const input_error& e) {
+      in.linearize.reset();
+      in.linearize_refusal = e.what();
+    } catch (const certification_error& e) {
+      in.linearize.reset();
+      in.linearize_refusal = std::string(e.what()) + " (within 2^-256 of it: taken as exact)";
     }
   } catch (const certification_error& e) {
     throw input_error(std::string(e.what()) + " (within 2^-256 of it: taken as exact)");

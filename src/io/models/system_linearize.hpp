@@ -9,7 +9,9 @@ namespace appell {
 
 template <Scalar T>
 linearization_report<T> linearize_scene(const system_input& in) {
-  if (!in.linearize) throw input_error("linearize: the scene has no \"linearize\" section (SCENES.md)");
+  if (!in.linearize)
+    throw input_error(!in.linearize_refusal.empty() ? in.linearize_refusal
+                                                    : "linearize: the scene has no \"linearize\" section (SCENES.md)");
   const linearize_input& li = *in.linearize;
   const system_definition& d = *in.def;
   using P = bound_t<T>;
@@ -53,9 +55,7 @@ linearization_report<T> linearize_scene(const system_input& in) {
   out.from = li.from ? P(scalar_traits<T>::lower(value<T>(*li.from))) : P(0);
   out.to = li.to ? P(scalar_traits<T>::upper(value<T>(*li.to))) : P(P(2) * scalar_traits<T>::upper(r.v0));
   for (const auto& [name, b] : {std::pair<const char*, const P*>{"from", &out.from}, {"to", &out.to}})
-    if (!is_finite(detail::from_bound<T>(*b)))
-      throw certification_error(std::string("critical_speeds.") + name + ": not finite in " + scalar_traits<T>::name +
-                                " (an overflow? a scalar with a wider range may succeed)");
+    require_finite(detail::from_bound<T>(*b), std::string("critical_speeds.") + name);
   out.steps = li.steps;
   out.critical = critical_speeds(r, Minv, out.from, out.to, li.steps);
 
@@ -63,9 +63,7 @@ linearization_report<T> linearize_scene(const system_input& in) {
   // number that is not one in the document).
   auto finish = [&](T& x, const std::string& name) {
     scope.finish(x);
-    if (!is_finite(x))
-      throw certification_error(name + ": not finite in " + scalar_traits<T>::name + " (" + to_string(x) +
-                                "; an overflow? a scalar with a wider range may succeed)");
+    require_finite(x, name);
   };
   for (const auto& [name, X] : {std::pair<const char*, matrix_t<T>*>{"M", &r.M}, {"C1", &r.C1}, {"K0", &r.K0}, {"K2", &r.K2},
                                 {"checks.stiffness_at_twice_the_speed", &r.stiffness_residual},

@@ -22,7 +22,8 @@ namespace appell {
 /// The file's "linearize" section (`appell linearize`).
 struct linearize_input {
   linearize_definition def;
-  std::vector<decimal_field> q, u;               ///< the reference motion: the state with "about" applied
+  std::vector<decimal_field> q, u;               ///< the reference motion: the state (projected, with "project") with "about" applied
+  std::vector<std::pair<int, decimal_field>> about_q, about_u;  ///< what "about" sets: (coordinate or speed, value)
   std::vector<decimal_field> eigenvalue_speeds;  ///< where to enclose the eigenvalues (default: the reference speed)
   std::optional<decimal_field> from, to;         ///< where to look for critical speeds (default 0 to twice the reference speed)
   int steps = 200;                               ///< grid intervals of that search
@@ -34,7 +35,10 @@ struct system_input : model_input {
   decimal_field t;                  ///< the time (default 0)
   std::vector<int> solved;          ///< speeds computed from the constraints (solve_speeds)
   std::vector<std::string> acceleration_names;  ///< per speed: q_ddot (rates) or u_dot
-  std::optional<linearize_input> linearize;     ///< the "linearize" section, if any
+  std::optional<linearize_input> linearize;     ///< the "linearize" section, if any and valid
+  /// Why the "linearize" section was refused, if it was: `eval` and the motion ignore the
+  /// section (SCENES.md), `linearize` reports this (exit 2).
+  std::string linearize_refusal;
   /// "project": accept a state off the constraints and certify the values at its projection
   /// onto them (SCENES.md), moved by at most this in q and in u.  The reader replaces q and u
   /// by the projection, at 256 bits written as 90-digit decimals; the state as given is kept.
