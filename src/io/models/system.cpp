@@ -289,6 +289,15 @@ void project_state(system_input& in, vector_t<mpfi>& q, vector_t<mpfi>& u) {
   check_projection_moves(in, q, u);
 }
 
+/// The linearization's reference motion: the state (the projected one, with "project") with
+/// what "about" sets.
+void set_reference_motion(linearize_input& li, const system_input& in) {
+  li.q = in.q;
+  li.u = in.u;
+  for (const auto& [i, v] : li.about_q) li.q[static_cast<std::size_t>(i)] = v;
+  for (const auto& [j, v] : li.about_u) li.u[static_cast<std::size_t>(j)] = v;
+}
+
 }  // namespace
 
 system_input system_model::read(object_reader& scene) {
@@ -714,8 +723,6 @@ system_input system_model::read(object_reader& scene) {
       throw input_error(scene.path("linearize") + ": " + std::to_string(L.holonomic_rows.size()) +
                         " holonomic constraints involve " + std::to_string(L.dependent_coordinates.size()) +
                         " other coordinates: name the ones they determine in solve_coordinates");
-    li.q = in.q;
-    li.u = in.u;
     if (lr.has("about")) {
       object_reader about = lr.object("about");
       for (const auto& m : object_value(lr, "about").members) {
@@ -750,8 +757,7 @@ system_input system_model::read(object_reader& scene) {
       cs.finish();
     }
     lr.finish();
-    for (const auto& [i, v] : li.about_q) li.q[static_cast<std::size_t>(i)] = v;
-    for (const auto& [j, v] : li.about_u) li.u[static_cast<std::size_t>(j)] = v;
+    set_reference_motion(li, in);
     in.linearize = std::move(li);
   } catch (const input_error& e) {
     in.linearize.reset();
@@ -782,13 +788,7 @@ system_input system_model::read(object_reader& scene) {
     const mpfi t = value<mpfi>(in.t);
     if (in.project) {
       project_state(in, q, u);
-      if (in.linearize) {  // the reference motion from the projected state, "about" applied
-        linearize_input& li = *in.linearize;
-        li.q = in.q;
-        li.u = in.u;
-        for (const auto& [i, v] : li.about_q) li.q[static_cast<std::size_t>(i)] = v;
-        for (const auto& [j, v] : li.about_u) li.u[static_cast<std::size_t>(j)] = v;
-      }
+      if (in.linearize) set_reference_motion(*in.linearize, in);  // from the projected state
     }
     for (std::size_t r = 0; r < d.constraints.size(); ++r) {  // point_velocity directions, before any solve
       const auto& kc = sys.constraints[r];
