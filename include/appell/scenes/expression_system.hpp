@@ -130,8 +130,6 @@ struct system_definition {
 };
 
 namespace detail {
-/// An optional expression on a tape (an empty one is 0): at(v) reads its value
-/// from the node values v of one evaluation of the tape.
 /// P - G for a point P of a body and its centre G (either null: 0), with the
 /// terms they share cancelled (expression::difference): both are usually written
 /// from the same origin (x + ...), and over a box of states the difference
@@ -147,6 +145,8 @@ inline shared_expression offset(const shared_expression& point, const shared_exp
       expression::difference(p, *center, p.where() + " - (" + center->where() + ")"));
 }
 
+/// An optional expression on a tape (an empty one is 0): at(v) reads its value
+/// from the node values v of one evaluation of the tape.
 template <Scalar T>
 struct compiled_term {
   int node = -1;
