@@ -37,7 +37,10 @@ constexpr const char* usage_text =
     "       appell simulate SCENE --t-end T [--scalar NAME] [--bits N] [--order N] [--tol E] [--every DT]\n"
     "                       [--max-seconds S] [--quiet] --out DIR\n"
     "       appell enclose SCENE --t-end T [--scalar interval|mpfi] [--bits N] [--order N] [--tol E]\n"
-    "                      [--max-width W] [--max-seconds S] [--quiet] --out DIR\n"
+    "                      [--max-width W] [--max-seconds S] [--locate TOL] [--until-contact-fails] [--quiet]\n"
+    "                      --out DIR\n"
+    "       appell validity SCENE --vary FIELD=lo:hi --t-end T [--resolution R] [--scalar interval|mpfi]\n"
+    "                       [--bits N] [--order N] [--tol E] [--max-seconds S] [--quiet] --out DIR\n"
     "       appell horizon SCENE --t-end T [--every DT] [--scalars LIST] [--quiet] --out DIR\n"
     "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
     "  --bits N: precision of mpfr and mpfi (default 256): mpfi gets exactly N bits; mpfr the\n"
@@ -57,7 +60,13 @@ constexpr const char* usage_text =
     "            every DT), summary.json, drift.png\n"
     "  enclose: a rigorous enclosure of the motion up to T; DIR/steps.csv (each step, the state at its end\n"
     "           and over it, the results and invariants over it), summary.json, widths.png; exit 3 if it\n"
-    "           stops before T (what was enclosed is still written, marked incomplete)\n"
+    "           stops before T (what was enclosed is still written, marked incomplete); a scene with\n"
+    "           contacts also gets each contact's verdict (holds, fails: when first, undecided) in\n"
+    "           summary.json, contacts.csv and contacts.png; --locate TOL narrows a failure's time to TOL,\n"
+    "           --until-contact-fails stops after the first step that proves one (exit 0)\n"
+    "  validity: over which range of FIELD (a state component of the motion, or mu) do the scene's\n"
+    "            contacts hold on [0, T]? The range split until each piece is proved to hold or to fail\n"
+    "            or is narrower than R (default the range / 64); DIR/validity.csv, summary.json, validity.png\n"
     "  --max-seconds S: simulate and enclose stop after S seconds, their files written and marked\n"
     "                   incomplete (exit 3); the progress line estimates the time left\n"
     "  --quiet: simulate, enclose and horizon print no progress line on stderr\n"
@@ -158,7 +167,7 @@ int main(int argc, char** argv) {
       return exit_status_of_current_exception();
     }
   }
-  if (command == "simulate" || command == "enclose") {
+  if (command == "simulate" || command == "enclose" || command == "validity") {
     appell::cli::motion_options m;
     m.command = command;
     const std::string error = appell::cli::parse_motion_arguments(argc, argv, 2, m);

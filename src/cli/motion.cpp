@@ -39,7 +39,8 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
     };
     std::string v;
     if (a == "--t-end" || a == "--every" || a == "--out" || a == "--scalar" || a == "--bits" || a == "--order" ||
-        a == "--tol" || a == "--max-width" || a == "--max-seconds") {
+        a == "--tol" || a == "--max-width" || a == "--max-seconds" || a == "--locate" || a == "--vary" ||
+        a == "--resolution") {
       if (!value(v)) return a + ": missing value";
       if (a == "--t-end") o.t_end = v;
       else if (a == "--every") o.every = v;
@@ -64,6 +65,34 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
         }
         // A relative tolerance of 1 or more lets a step's error be as large as the state itself.
         if (*o.tol >= 1) return "--tol: expected a positive decimal below 1 (a relative error per step), got '" + v + "'";
+      } else if (a == "--vary") {
+        const auto eq = v.find('='), colon = v.find(':', eq == std::string::npos ? 0 : eq);
+        if (eq == std::string::npos || eq == 0 || colon == std::string::npos)
+          return "--vary: expected FIELD=lo:hi, got '" + v + "'";
+        o.vary_field = v.substr(0, eq);
+        o.vary_lo = v.substr(eq + 1, colon - eq - 1);
+        o.vary_hi = v.substr(colon + 1);
+        for (const std::string* d : {&o.vary_lo, &o.vary_hi}) {
+          try {
+            (void)decimal_sign_of_sum({{1, *d}});
+          } catch (const std::exception&) {
+            return "--vary: expected FIELD=lo:hi with decimal bounds, got '" + v + "'";
+          }
+        }
+        if (decimal_sign_of_sum({{1, o.vary_hi}, {-1, o.vary_lo}}) <= 0)
+          return "--vary: the range's lower bound must be below its upper bound, got '" + v + "'";
+      } else if (a == "--resolution") {
+        try {
+          o.resolution = positive_decimal("--resolution", v);
+        } catch (const input_error& e) {
+          return e.what();
+        }
+      } else if (a == "--locate") {
+        try {
+          o.locate = positive_decimal("--locate", v);
+        } catch (const input_error& e) {
+          return e.what();
+        }
       } else if (a == "--max-seconds") {
         try {
           o.max_seconds = positive_decimal("--max-seconds", v);
@@ -77,6 +106,8 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
           return e.what();
         }
       }
+    } else if (a == "--until-contact-fails") {
+      o.until_contact_fails = true;
     } else if (const std::string e = parse_common_argument(a, o.scene, o.quiet); !e.empty()) {
       return e;
     }
@@ -101,7 +132,21 @@ int motion(const motion_options& given) {
   } else if (!o.every.empty()) {
     throw input_error("--every: enclose writes every step; --every applies to simulate");
   }
+  if (o.command == "validity") {
+    if (o.vary_field.empty()) throw input_error("--vary: required (FIELD=lo:hi, the range to split)");
+    if (o.locate || o.until_contact_fails)
+      throw input_error(std::string(o.locate ? "--locate" : "--until-contact-fails") + ": applies to enclose, not validity");
+    if (o.resolution && *o.resolution >= from_decimal<double>(o.vary_hi) - from_decimal<double>(o.vary_lo))
+      throw input_error("--resolution: as wide as the range or wider: nothing would be split");
+  } else if (!o.vary_field.empty() || o.resolution) {
+    throw input_error(std::string(o.resolution ? "--resolution" : "--vary") + ": applies to validity");
+  }
+  if (o.command != "enclose" && (o.locate || o.until_contact_fails))
+    throw input_error(std::string(o.locate ? "--locate" : "--until-contact-fails") +
+                      ": the contacts' verdicts over time are enclose's (simulate's point values prove nothing)");
   if (o.scalar.empty()) o.scalar = o.command == "simulate" ? "double" : "interval";
+  if (o.command == "validity" && o.scalar != "interval" && o.scalar != "mpfi")
+    throw input_error("--scalar: validity proves its verdicts and needs an interval scalar (interval or mpfi), not " + o.scalar);
   const scene_input scene = read_scene_file(o.scene);
   const motion_outcome r = with_scalar(o.scalar, o.bits, [&]<class T>(std::type_identity<T>) { return run_motion<T>(scene, o); });
   std::cout << r.summary;

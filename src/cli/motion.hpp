@@ -41,6 +41,12 @@ struct motion_options {
   double max_width = 1.0;
   std::optional<double> max_seconds;  ///< stop cleanly after this long, files written (exit 3)
   bool quiet = false;  ///< no progress line
+  std::optional<double> locate;      ///< enclose: narrow each contact's first failure to this width
+  bool until_contact_fails = false;  ///< enclose: stop after the first step in which a contact is proved to fail
+  /// validity: the range of one field (a state component of the motion, or "mu") split into
+  /// pieces until each is proved to hold or to fail over [0, T], or is narrower than resolution.
+  std::string vary_field, vary_lo, vary_hi;
+  std::optional<double> resolution;
 };
 
 /// What a run reports back to the command (the files are written by then).

@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -20,6 +21,7 @@
 #include "appell/io/model_motion.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/taylor.hpp"
+#include "contact_track.hpp"
 
 namespace appell::cli {
 
@@ -269,6 +271,69 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
   return {failure.empty() ? 0 : 3, out.str()};
 }
 
+/// DIR/contacts.png from contacts.csv's rows: per contact, the normal force over each step
+/// (its bounds) and, with mu, the margin mu - required mu (or the required mu without it);
+/// a margin below 0, or a normal force below 0, is a contact that fails.
+template <Scalar I>
+bool plot_contacts(const std::filesystem::path& dir, const std::string& csv, const std::vector<contact_track<I>>& tracks,
+                   const std::string& title) {
+  std::ostringstream dat;
+  std::string force_plot, margin_plot;
+  bool any_mu = false;
+  for (std::size_t k = 0; k < tracks.size(); ++k) {
+    const auto& c = tracks[k];
+    const double mu = c.mu_text.empty() ? 0.0 : from_decimal<double>(c.mu_text);
+    any_mu = any_mu || !c.mu_text.empty();
+    std::istringstream in(csv);
+    std::string line;
+    while (std::getline(in, line)) {
+      std::vector<std::string> f;
+      std::stringstream ls(line);
+      for (std::string x; std::getline(ls, x, ',');) f.push_back(x);
+      if (f.size() < 10 || f[0] != c.name) continue;
+      const double t = (std::stod(f[1]) + std::stod(f[2])) / 2;
+      dat << t << " " << f[3] << " " << f[4];
+      if (!f[7].empty() && !f[8].empty()) {
+        const double lo = std::stod(f[7]), hi = std::stod(f[8]);
+        if (c.mu_text.empty()) dat << " " << lo << " " << hi << "\n";
+        else dat << " " << mu - hi << " " << mu - lo << "\n";
+      } else {
+        dat << " NaN NaN\n";
+      }
+    }
+    dat << "\n\n";
+    const std::string idx = std::to_string(k);
+    force_plot += std::string(k ? ", " : "") + "DAT index " + idx + " using 1:2:3 with filledcurves title '" + c.name +
+                  ": normal force (enclosure over each step)'";
+    margin_plot += std::string(k ? ", " : "") + "DAT index " + idx + " using 1:4:5 with filledcurves title '" + c.name +
+                   (c.mu_text.empty() ? ": required mu'" : ": mu - required mu (mu = " + c.mu_text + ")'");
+  }
+  const std::filesystem::path datf = dir / (".contacts.dat" + std::to_string(::getpid()));
+  { std::ofstream(datf) << dat.str(); }
+  const std::filesystem::path tmp = dir / (".contacts.png" + std::to_string(::getpid()));
+  auto with_file = [&](std::string p) {
+    for (std::size_t at; (at = p.find("DAT")) != std::string::npos;) p.replace(at, 3, "'" + datf.string() + "'");
+    return p;
+  };
+  std::string marks;  // each failing contact's first failure: a line at its time, labelled
+  for (const auto& c : tracks)
+    if (c.verdict() == contact_verdict::fails && c.hi) {
+      const double t = approx_double(*c.hi);
+      marks += "set arrow from " + std::to_string(t) + ", graph 0 to " + std::to_string(t) +
+               ", graph 1 nohead lc rgb 'red' dt 2\nset label '" + c.name + " fails by t = " + upper_string(*c.hi) +
+               "' at " + std::to_string(t) + ", graph 0.92 right offset -0.5,0 tc rgb 'red'\n";
+    }
+  plot("set terminal png size 900,700 noenhanced\nset output '" + tmp.string() + "'\nset multiplot layout 2,1 title '" +
+       title + ": can the contacts hold?'\nset grid\nset key below\nset xlabel 't'\nset ylabel 'N'\nset xzeroaxis lw 2\n" +
+       marks + "plot " + with_file(force_plot) + "\nset ylabel '" + (any_mu ? "mu - required mu" : "required mu") + "'\nplot " +
+       with_file(margin_plot) + "\nunset multiplot\n");
+  std::filesystem::remove(datf);
+  std::error_code ec;
+  if (!std::filesystem::exists(tmp)) return false;
+  std::filesystem::rename(tmp, dir / "contacts.png", ec);
+  return !ec;
+}
+
 template <Scalar I>
 std::string bounds(const I& x) {
   return lower_string(x) + "," + upper_string(x);
@@ -299,6 +364,28 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   std::size_t result_values = 0;  // value_names: the results' first, then the invariants'
   vector_t<I> last_end = reported(prob, x0);
   progress_meter meter("enclose", approx_double(t_end), o.quiet, o.max_seconds);
+  // The contacts' verdicts (contact_track.hpp), when the scene has contacts.
+  std::vector<contact_track<I>> tracks;
+  if constexpr (requires { prob.contacts(); })
+    for (const auto& [name, mu] : prob.contacts()) {
+      contact_track<I> c;
+      c.name = name;
+      c.mu_text = mu;
+      if (!mu.empty()) c.mu = from_decimal<I>(mu);
+      tracks.push_back(std::move(c));
+    }
+  auto contact_at = [&](const vector_t<I>& x, const std::string& name) {
+    std::vector<ode::named_values<I>> r;
+    try {
+      prob.results(x, r);
+    } catch (const std::exception&) {  // not evaluable over that box: nothing is decided there
+      return contact_values<I>{I(0), I(0), false};
+    }
+    return find_contact(r, name);
+  };
+  std::ostringstream contact_csv, contact_dat;
+  std::string contact_stop;  // --until-contact-fails: why the run stops after this step
+  vector_t<I> step_start = x0;
   const ode::enclose_stats st = ode::enclose(
       prob, x0, t_end, order, tol, o.max_width, 2,
       [&](const ode::enclosed_step<I>& s) {
@@ -338,8 +425,59 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
         worst_end = std::max(worst_end, we);
         dat << approx_double(s.t1) << " " << std::max(we, 1e-300) << " " << std::max(wr, 1e-300) << "\n";
         last_end = end;
+        for (auto& c : tracks) {
+          const contact_values<I> over = find_contact(s.results, c.name);
+          const bool failed_before = c.any_fails;
+          c.step(s.t0, s.t1, step_start, s.end, over, contact_at(s.end, c.name), contact_csv);
+          if (o.until_contact_fails && !failed_before && c.any_fails && contact_stop.empty())
+            contact_stop = "contact " + c.name + " fails (--until-contact-fails) by t = " + upper_string(*c.steps.back().fails_at);
+        }
+        step_start = s.end;
       },
-      [&](double f) { meter(f); });
+      [&](double f) {
+        if (!contact_stop.empty()) throw ode::run_stopped(contact_stop);
+        meter(f);
+      });
+  // Undecided steps enclosed again in 8 pieces; then --locate: each failing contact's first
+  // failure narrowed by enclosing again from its last holding state over shorter horizons.
+  for (auto& c : tracks) {
+    auto run = [&](const vector_t<I>& x, double h, const auto& on_step) {
+      const ode::enclose_stats s2 = ode::enclose(prob, x, I(h), order, tol, o.max_width, 2, [&](const ode::enclosed_step<I>& s) {
+        on_step(s.t0, s.t1, find_contact(s.results, c.name), s.end);
+      });
+      return s2.complete;
+    };
+    auto at = [&](const vector_t<I>& x) { return contact_at(x, c.name); };
+    c.refine(8, run, at);
+    c.finish(x0);
+    if (o.locate) c.locate(*o.locate, run, at);
+  }
+  nlohmann::json contacts_json = nlohmann::json::object();
+  std::ostringstream contact_lines;
+  for (const auto& c : tracks) {
+    nlohmann::json j = {{"verdict", verdict_name(c.verdict())}, {"refined_steps", c.refined}};
+    if (!c.mu_text.empty()) j["mu"] = c.mu_text;
+    if (c.least_normal) j["least_normal_force"] = lower_string(*c.least_normal);
+    j["largest_required_mu"] = c.largest_mu && !c.mu_unbounded ? nlohmann::json(upper_string(*c.largest_mu)) : nlohmann::json();
+    contact_lines << "  contact " << c.name << ": ";
+    if (c.verdict() == contact_verdict::fails) {
+      j["first_failure"] = {{"from", lower_string(c.lo)}, {"to", upper_string(*c.hi)}};
+      if (!c.located.empty()) j["located"] = c.located;
+      contact_lines << "FAILS: the first failure lies in [" << lower_string(c.lo) << ", " << upper_string(*c.hi) << "]"
+                    << (c.located.empty() ? "" : " (" + c.located + ")");
+    } else if (c.verdict() == contact_verdict::undecided) {
+      j["undecided_from"] = lower_string(c.lo);
+      contact_lines << "holds up to t = " << lower_string(c.lo) << ", undecided from there";
+    } else {
+      j["holds_until"] = upper_string(c.lo);
+      contact_lines << "holds up to t = " << upper_string(c.lo);
+    }
+    if (c.least_normal) contact_lines << "; least normal force >= " << lower_string(*c.least_normal);
+    if (c.largest_mu && !c.mu_unbounded) contact_lines << "; required mu <= " << upper_string(*c.largest_mu);
+    if (!c.mu_text.empty()) contact_lines << " (mu = " << c.mu_text << ")";
+    contact_lines << "\n";
+    contacts_json[c.name] = j;
+  }
   std::ostringstream csv;
   for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << header[i];
   for (const auto& h : group_header) csv << "," << h;
@@ -367,11 +505,19 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
                             {"final_state", final_state},
                             {"final_largest_width", final_width},
                             {"largest_width_over_a_step", widths}};
+  if (!tracks.empty()) summary["contacts"] = contacts_json;
+  if (!contact_stop.empty()) summary["stopped_at_contact_failure"] = true;
   const std::filesystem::path dir(o.out);
   std::filesystem::create_directories(dir);
   write_whole(dir, "steps.csv", csv.str());
+  if (!tracks.empty())
+    write_whole(dir, "contacts.csv",
+                "contact,t0,t1,normal_force_lo,normal_force_hi,tangential_force_lo,tangential_force_hi,required_mu_lo,"
+                "required_mu_hi,verdict\n" + contact_csv.str());
   write_whole(dir, "summary.json", summary.dump(2) + "\n");
   std::string plotted;
+  if (!tracks.empty() && plot_contacts(dir, contact_csv.str(), tracks, scene.model + ", " + scalar_traits<I>::name))
+    plotted += ", contacts.png";
   {
     const std::filesystem::path datf = dir / (".widths.dat" + std::to_string(::getpid()));
     { std::ofstream(datf) << dat.str(); }
@@ -386,27 +532,236 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
     std::error_code ec;
     if (std::filesystem::exists(tmp)) {
       std::filesystem::rename(tmp, dir / "widths.png", ec);
-      plotted = ", widths.png";
+      plotted = ", widths.png" + plotted;
     }
   }
   std::ostringstream out;
   out << "enclose " << scene.model << " in " << scalar_traits<I>::name << " (" << bits_text<I>() << "), order " << order << ": " << st.steps << " steps (" << st.rejected << " rejected) in " << st.seconds
       << " s\n";
   if (st.complete) out << "  certified up to t = " << o.t_end << "; the state's largest width there " << final_width << "\n";
+  else if (!contact_stop.empty()) out << "  stopped: " << contact_stop << "\n";
   else out << "  INCOMPLETE: " << st.reason << "; enclosed up to t = " << st.t_reached << "\n";
+  out << contact_lines.str();
   for (std::size_t i = 0; i < value_names.size(); ++i)
     out << "  " << value_names[i] << ": enclosed over every whole step; widest " << worst_over[i]
         << (i < result_values ? " (its variation over the step included)\n" : " (constant in truth)\n");
-  out << "wrote " << (dir / "steps.csv").string() << ", summary.json" << plotted << "\n";
-  return {st.complete ? 0 : 3, out.str()};
+  out << "wrote " << (dir / "steps.csv").string() << (tracks.empty() ? "" : ", contacts.csv") << ", summary.json" << plotted << "\n";
+  return {st.complete || !contact_stop.empty() ? 0 : 3, out.str()};
+}
+
+/// `appell validity`: over which range of one field do the scene's contacts hold on [0, T]?
+/// Each piece of the range is enclosed whole (the field an interval: a state component of the
+/// motion, or every contact's mu), so a piece's verdict holds for every value in it: `holds`
+/// when every step proves every contact; `fails` when one contact's failure is proved (for every
+/// value, no later than the time given); otherwise the piece is split in two, down to the
+/// resolution (then `undecided`).
+template <Scalar I, class P>
+motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scene_input& scene, const motion_options& o) {
+  if constexpr (!requires { prob.contacts(); }) {
+    throw input_error("validity: the model " + scene.model + " has no contacts (a system file's \"contacts\")");
+  } else {
+    const auto contacts = prob.contacts();
+    if (contacts.empty()) throw input_error("validity: the scene has no contacts to judge (SCENES.md, \"contacts\")");
+    const bool vary_mu = o.vary_field == "mu";
+    const std::vector<std::string> names = prob.state_names();
+    int index = -1;
+    if (!vary_mu) {
+      for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == o.vary_field) index = static_cast<int>(i);
+      if (index < 0) {
+        std::string known;
+        for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+        throw input_error("--vary: '" + o.vary_field + "' is not a component of the motion's state (" + known + ") nor mu");
+      }
+      if (prob.on_holonomic_constraint(index))
+        throw input_error("--vary: " + o.vary_field + " is held by a holonomic constraint (a range of it would leave the "
+                          "constraint); vary a free speed or a coordinate no holonomic constraint involves");
+    }
+    const I t_end = from_decimal<I>(o.t_end);
+    const int order = o.order.value_or(default_order<I>());
+    const double tol = o.tol.value_or(default_tol<I>());
+    const I lo0 = from_decimal<I>(o.vary_lo), hi0 = from_decimal<I>(o.vary_hi);
+    const double total = span(lo0, hi0), resolution = o.resolution.value_or(total / 64);
+    struct piece {
+      I lo, hi;
+      contact_verdict verdict = contact_verdict::undecided;
+      std::optional<I> fail_from, fail_to;
+      long steps = 0;
+      double seconds = 0;
+      std::string why;  // of an undecided piece
+    };
+    std::vector<piece> done;
+    std::vector<std::pair<I, I>> todo{{lo0, hi0}};
+    const auto started = std::chrono::steady_clock::now();
+    double decided = 0;
+    std::string stopped;
+    progress_meter meter("validity", 1.0, o.quiet);
+    while (!todo.empty() && stopped.empty()) {
+      const auto [a, b] = todo.back();
+      todo.pop_back();
+      const I box = scalar_traits<I>::hull(a, b);
+      vector_t<I> x = x0;
+      if (!vary_mu) x(index) = box;
+      std::vector<contact_track<I>> tracks;
+      for (const auto& [name, mu] : contacts) {
+        contact_track<I> c;
+        c.name = name;
+        c.mu_text = mu;
+        if (vary_mu) c.mu = box;
+        else if (!mu.empty()) c.mu = from_decimal<I>(mu);
+        tracks.push_back(std::move(c));
+      }
+      auto contact_at = [&](const vector_t<I>& s, const std::string& name) {
+        std::vector<ode::named_values<I>> r;
+        try {
+          prob.results(s, r);
+        } catch (const std::exception&) {
+          return contact_values<I>{I(0), I(0), false};
+        }
+        return find_contact(r, name);
+      };
+      std::ostringstream sink;
+      bool out_of_time = false;
+      vector_t<I> step_start = x;
+      const ode::enclose_stats st = ode::enclose(
+          prob, x, t_end, order, tol, o.max_width, 2,
+          [&](const ode::enclosed_step<I>& s) {
+            for (auto& c : tracks)
+              c.step(s.t0, s.t1, step_start, s.end, find_contact(s.results, c.name), contact_at(s.end, c.name), sink);
+            step_start = s.end;
+          },
+          [&](double f) {
+            const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+            if (o.max_seconds && elapsed >= *o.max_seconds) {
+              out_of_time = true;
+              throw ode::run_stopped("--max-seconds");
+            }
+            meter((decided + f * span(a, b) * 0.5) / total);
+          });
+      if (out_of_time) {
+        stopped = "--max-seconds " + ode::number_text(*o.max_seconds) + " reached";
+        todo.emplace_back(a, b);
+        break;
+      }
+      for (auto& c : tracks) {  // undecided steps enclosed again in 8 pieces
+        c.refine(
+            8,
+            [&](const vector_t<I>& s0, double h, const auto& on_step) {
+              return ode::enclose(prob, s0, I(h), order, tol, o.max_width, 2, [&](const ode::enclosed_step<I>& s) {
+                       on_step(s.t0, s.t1, find_contact(s.results, c.name), s.end);
+                     }).complete;
+            },
+            [&](const vector_t<I>& s0) { return contact_at(s0, c.name); });
+        c.finish(x);
+      }
+      piece p{a, b};
+      p.steps = st.steps;
+      p.seconds = st.seconds;
+      bool all_hold = st.complete;
+      for (const auto& c : tracks) {
+        if (c.verdict() == contact_verdict::fails && (!p.fail_to || upper(*c.hi) < upper(*p.fail_to))) {
+          p.verdict = contact_verdict::fails;
+          p.fail_from = c.lo;
+          p.fail_to = *c.hi;
+        }
+        if (c.verdict() != contact_verdict::holds) all_hold = false;
+      }
+      if (p.verdict != contact_verdict::fails && all_hold) p.verdict = contact_verdict::holds;
+      if (p.verdict == contact_verdict::undecided) {
+        p.why = st.complete ? "the enclosures straddle a boundary" : st.reason;
+        if (span(a, b) > resolution) {
+          const I m = (a + b) / I(2);
+          todo.emplace_back(m, b);
+          todo.emplace_back(a, m);  // the lower half first
+          continue;
+        }
+      }
+      decided += span(a, b);
+      done.push_back(std::move(p));
+    }
+    std::sort(done.begin(), done.end(), [](const piece& x, const piece& y) { return lower(x.lo) < lower(y.lo); });
+    // The pieces, and the ranges of each verdict (adjacent pieces merged).
+    std::ostringstream csv, dat[3];
+    csv << "lo,hi,verdict,first_failure_from,first_failure_to,steps,seconds\n";
+    nlohmann::json ranges = {{"holds", nlohmann::json::array()}, {"fails", nlohmann::json::array()}, {"undecided", nlohmann::json::array()}};
+    std::string last;
+    for (const piece& p : done) {
+      const std::string v = verdict_name(p.verdict);
+      csv << lower_string(p.lo) << "," << upper_string(p.hi) << "," << v << ","
+          << (p.fail_from ? lower_string(*p.fail_from) : "") << "," << (p.fail_to ? upper_string(*p.fail_to) : "") << ","
+          << p.steps << "," << p.seconds << "\n";
+      nlohmann::json& list = ranges[v];
+      if (v == last && !list.empty()) list.back()[1] = upper_string(p.hi);
+      else list.push_back({lower_string(p.lo), upper_string(p.hi)});
+      last = v;
+      const int k = p.verdict == contact_verdict::holds ? 0 : p.verdict == contact_verdict::fails ? 1 : 2;
+      const double x = (approx_double(p.lo) + approx_double(p.hi)) / 2, dx = (approx_double(p.hi) - approx_double(p.lo)) / 2;
+      const double T = approx_double(t_end);
+      const double y0 = p.fail_from ? approx_double(*p.fail_from) : k == 0 ? T : 0, y1 = p.fail_to ? approx_double(*p.fail_to) : T;
+      dat[k] << x << " " << (y0 + y1) / 2 << " " << x - dx << " " << x + dx << " " << y0 << " " << y1 << "\n";
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    nlohmann::json summary = {{"command", "validity"},
+                              {"scene", o.scene},
+                              {"model", scene.model},
+                              {"scalar", scalar_traits<I>::name},
+                              {"bits", requested_bits ? requested_bits : scalar_traits<I>::precision_bits()},
+                              {"field", o.vary_field},
+                              {"range", {o.vary_lo, o.vary_hi}},
+                              {"t_end", o.t_end},
+                              {"resolution", resolution},
+                              {"pieces", done.size()},
+                              {"complete", stopped.empty()},
+                              {"reason", stopped},
+                              {"ranges", ranges},
+                              {"seconds", seconds},
+                              {"seconds_per_piece", done.empty() ? 0.0 : seconds / static_cast<double>(done.size())}};
+    const std::filesystem::path dir(o.out);
+    std::filesystem::create_directories(dir);
+    write_whole(dir, "validity.csv", csv.str());
+    write_whole(dir, "summary.json", summary.dump(2) + "\n");
+    std::string plotted;
+    {
+      const std::filesystem::path datf = dir / (".validity.dat" + std::to_string(::getpid()));
+      { std::ofstream(datf) << dat[0].str() << "\n\n" << dat[1].str() << "\n\n" << dat[2].str() << "\n"; }
+      const std::filesystem::path tmp = dir / (".validity.png" + std::to_string(::getpid()));
+      const std::string f = "'" + datf.string() + "'";
+      plot("set terminal png size 900,500 noenhanced\nset output '" + tmp.string() + "'\nset title '" + o.scene +
+           ": can the contacts hold on [0, " + o.t_end + "]? (" + scalar_traits<I>::name + ")'\nset xlabel '" + o.vary_field +
+           "'\nset ylabel 'first failure within (t)'\nset yrange [0:" + std::to_string(approx_double(t_end) * 1.1) +
+           "]\nset grid\nset key below\nset style fill solid 0.5\nplot " + f +
+           " index 0 using 1:2:3:4:5:6 with boxxyerror lc rgb 'forest-green' title 'holds up to T (proved)', " + f +
+           " index 1 using 1:2:3:4:5:6 with boxxyerror lc rgb 'red' title 'fails (proved): the first failure lies in the box', " + f +
+           " index 2 using 1:2:3:4:5:6 with boxxyerror lc rgb 'gray' title 'undecided at the resolution'\n");
+      std::filesystem::remove(datf);
+      std::error_code ec;
+      if (std::filesystem::exists(tmp)) {
+        std::filesystem::rename(tmp, dir / "validity.png", ec);
+        plotted = ", validity.png";
+      }
+    }
+    std::ostringstream out;
+    out << "validity of " << o.scene << "'s contacts on [0, " << o.t_end << "] for " << o.vary_field << " in [" << o.vary_lo
+        << ", " << o.vary_hi << "] (" << scalar_traits<I>::name << ", " << bits_text<I>() << "): " << done.size()
+        << " pieces in " << seconds << " s\n";
+    if (!stopped.empty()) out << "  INCOMPLETE: " << stopped << "; " << todo.size() << " piece(s) not run\n";
+    for (const char* v : {"holds", "fails", "undecided"})
+      for (const auto& r : ranges[v])
+        out << "  " << v << " for " << o.vary_field << " in [" << r[0].get<std::string>() << ", " << r[1].get<std::string>() << "]\n";
+    out << "wrote " << (dir / "validity.csv").string() << ", summary.json" << plotted << "\n";
+    return {stopped.empty() ? 0 : 3, out.str()};
+  }
 }
 
 template <Scalar T, class P>
 motion_outcome run_problem(const P& prob, const vector_t<T>& x0, const scene_input& scene, const motion_options& o) {
   if constexpr (scalar_traits<T>::is_interval) {
-    if (o.command != "enclose")
+    if (o.command != "enclose" && o.command != "validity")
       throw input_error("--scalar: simulate runs point scalars (double, long-double, dd, float128, mpfr); use enclose for " +
                         std::string(scalar_traits<T>::name));
+    auto run = [&](const auto& p, const vector_t<T>& x) {
+      return o.command == "validity" ? validity_problem<T>(p, x, scene, o) : enclose_problem<T>(p, x, scene, o);
+    };
     if constexpr (requires { prob.template with_capacity<6>(); }) {
       // A state whose size is known at run time (a system file): its Jacobians and slopes are
       // carried in the smallest capacity that holds it, the state padded with constant zeros.
@@ -416,12 +771,12 @@ motion_outcome run_problem(const P& prob, const vector_t<T>& x0, const scene_inp
         x.head(n) = x0.head(n);
         return x;
       };
-      if (n <= 6) return enclose_problem<T>(prob.template with_capacity<6>(), padded(6), scene, o);
-      if (n <= 12) return enclose_problem<T>(prob.template with_capacity<12>(), padded(12), scene, o);
+      if (n <= 6) return run(prob.template with_capacity<6>(), padded(6));
+      if (n <= 12) return run(prob.template with_capacity<12>(), padded(12));
       throw input_error("enclose: the motion's state has " + std::to_string(n) +
                         " components; enclose carries at most 12 (the coordinates, the free speeds and t)");
     } else {
-      return enclose_problem<T>(prob, x0, scene, o);
+      return run(prob, x0);
     }
   } else {
     if (o.command != "simulate")

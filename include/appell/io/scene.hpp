@@ -56,6 +56,12 @@ struct named_result {
   bool is_vector = false;
 };
 
+/// A contact's verdict (reactions/contact.hpp): "holds", "fails" or "undecided", and its mu
+/// as written (empty: none given).
+struct contact_judgement {
+  std::string name, verdict, mu;
+};
+
 template <Scalar T>
 struct evaluation {
   std::vector<named_result<T>> results;
@@ -63,6 +69,8 @@ struct evaluation {
   /// The state the scene's inputs imply but do not give (psi = f(theta) on the cone, the
   /// sphere's contact point): echoed so that other programs need not rebuild it (may be empty).
   std::vector<named_result<T>> derived;
+  /// Per contact of the scene, its verdict (SCENES.md "contacts"; may be empty).
+  std::vector<contact_judgement> contacts;
   const named_result<T>& result(const std::string& name) const { return find(results, name); }
   const named_result<T>& check(const std::string& name) const { return find(checks, name); }
   const named_result<T>& derived_result(const std::string& name) const { return find(derived, name); }
@@ -222,9 +230,14 @@ std::string format_json(const scene_input& scene, const evaluation<T>& e) {
     }
     return s + "}";
   };
+  std::string contacts;
+  for (std::size_t i = 0; i < e.contacts.size(); ++i)
+    contacts += std::string(i ? ",\n    \"" : ",\n  \"contacts\": {\n    \"") + e.contacts[i].name + "\": {\"verdict\": \"" +
+                e.contacts[i].verdict + "\"" + (e.contacts[i].mu.empty() ? "" : ", \"mu\": \"" + e.contacts[i].mu + "\"") + "}" +
+                (i + 1 == e.contacts.size() ? "}" : "");
   return "{\"model\": \"" + scene.model + "\", " + format_scalar_fields<T>() +
          ",\n  \"results\": " + group(e.results) + ",\n  \"checks\": " + group(e.checks) +
-         (e.derived.empty() ? std::string() : ",\n  \"derived\": " + group(e.derived)) + "}\n";
+         (e.derived.empty() ? std::string() : ",\n  \"derived\": " + group(e.derived)) + contacts + "}\n";
 }
 
 /// A human-readable rendering of the same numbers.
@@ -243,6 +256,9 @@ std::string format_text(const scene_input& scene, const evaluation<T>& e) {
   lines(e.results, "results:\n");
   lines(e.checks, "checks (0 if consistent):\n");
   if (!e.derived.empty()) lines(e.derived, "derived state:\n");
+  if (!e.contacts.empty()) s += "contacts (" + std::string(scalar_traits<T>::is_rigorous ? "proved" : "not proved: point values") + "):\n";
+  for (const auto& c : e.contacts)
+    s += "  " + c.name + ": " + c.verdict + (c.mu.empty() ? " (the normal force's sign only)" : " (mu = " + c.mu + ")") + "\n";
   return s;
 }
 

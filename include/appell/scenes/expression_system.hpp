@@ -97,6 +97,9 @@ struct system_constraint_definition {
   /// (point and direction on the fixed axes, functions of q and t).
   int body = -1;
   std::array<shared_expression, 3> point, direction;
+  /// point_velocity on a moving support: the support's velocity at the point (fixed axes, a
+  /// function of q and t; null: 0), so that n . (v - support) = 0.
+  std::array<shared_expression, 3> support;
 };
 
 /// The wrench that some constraints exert on one body, reduced to a point of
@@ -114,6 +117,29 @@ struct system_wrench_definition {
   std::vector<int> constraints;            ///< the constraints whose reactions it gathers
 };
 
+/// A contact (SCENES.md, "contacts"): the force that some constraints exert on
+/// one body at one point, split into its normal component N (along the side the
+/// support pushes from) and its tangential part F_t, so that the contact can be
+/// judged: it holds while N > 0 and |F_t| < mu N.  The force of each constraint c
+/// per unit of its reaction is d_c: a point_velocity constraint's direction, or
+/// (with `body` and `point`) the force of the wrench its unit reaction exerts
+/// there (system_wrench_definition), which must be a force alone (no couple
+/// about the point: checked when the file is read).
+struct system_contact_definition {
+  std::string name;
+  std::vector<int> constraints;
+  /// The body and point the force acts at; -1 when every constraint is a point_velocity
+  /// constraint at one point of one body (then d_c is the direction, no wrench is solved).
+  int body = -1;
+  std::array<shared_expression, 3> point;
+  /// An omega body (SCENES.md): d omega_i / du_j, the columns of its angular velocity.
+  std::array<std::vector<std::pair<int, shared_expression>>, 3> omega_du;
+  int normal = -1;  ///< the constraint whose force is along the normal, or -1: `direction` gives it
+  int side = 1;     ///< +1: the support pushes along d_normal (or `direction`); -1: against it
+  std::array<shared_expression, 3> direction;
+  std::string mu;   ///< the friction coefficient as written (a decimal), empty: none given
+};
+
 /// A whole system file's mechanics, independent of any scalar.
 struct system_definition {
   system_variables vars;
@@ -127,6 +153,7 @@ struct system_definition {
   std::vector<system_body_definition> bodies;
   std::vector<system_constraint_definition> constraints;
   std::vector<system_wrench_definition> wrenches;
+  std::vector<system_contact_definition> contacts;
 };
 
 namespace detail {
@@ -216,6 +243,7 @@ struct compiled_system {
     std::vector<std::pair<int, detail::compiled_differentiated<T>>> rotations;
     std::array<detail::compiled_term<T>, 3> point, direction;
     std::array<detail::compiled_term<T>, 3> rel;  ///< P - G, the terms both share cancelled (detail::offset)
+    std::array<detail::compiled_term<T>, 3> support;  ///< the support's velocity at the point (0: a fixed support)
   };
   struct wrench {  ///< on the constraint tape
     int body = -1;
@@ -235,6 +263,13 @@ struct compiled_system {
   std::vector<body> bodies;
   std::vector<constraint> constraints;
   std::vector<wrench> wrenches;
+  struct contact {  ///< on the constraint tape
+    wrench frame;   ///< the body, its centre and angles, the point (frame.body < 0: the directions serve)
+    bool omega_body = false;
+    std::array<std::vector<std::pair<int, detail::compiled_term<T>>>, 3> omega_du;
+    std::array<detail::compiled_term<T>, 3> direction;
+  };
+  std::vector<contact> contacts;
 
   explicit compiled_system(const system_definition& d) : def(&d) {
     parameters.assign(d.parameters.size(), T(0));
@@ -299,6 +334,7 @@ struct compiled_system {
           c.point[i] = detail::compiled_term<T>(constraint_tape, k.point[i]);
           c.rel[i] = detail::compiled_term<T>(constraint_tape, detail::offset(k.point[i], b.center[i].value));
           c.direction[i] = detail::compiled_term<T>(constraint_tape, k.direction[i]);
+          c.support[i] = detail::compiled_term<T>(constraint_tape, k.support[i]);
         }
         for (const auto& [axis, angle] : b.rotations)
           c.rotations.emplace_back(axis, detail::compiled_differentiated<T>(constraint_tape, angle));
@@ -317,6 +353,24 @@ struct compiled_system {
       for (const auto& [axis, angle] : b.rotations)
         c.rotations.emplace_back(axis, detail::compiled_differentiated<T>(constraint_tape, angle));
       wrenches.push_back(std::move(c));
+    }
+    for (const auto& k : d.contacts) {
+      contact c;
+      c.frame.body = k.body;
+      if (k.body >= 0) {
+        const system_body_definition& b = d.bodies[static_cast<std::size_t>(k.body)];
+        c.omega_body = b.has_omega;
+        for (std::size_t i = 0; i < 3; ++i) {
+          c.frame.center[i] = detail::compiled_differentiated<T>(constraint_tape, b.center[i]);
+          c.frame.point[i] = detail::compiled_term<T>(constraint_tape, k.point[i]);
+          c.frame.rel[i] = detail::compiled_term<T>(constraint_tape, detail::offset(k.point[i], b.center[i].value));
+          for (const auto& [j, e] : k.omega_du[i]) c.omega_du[i].emplace_back(j, detail::compiled_term<T>(constraint_tape, e));
+        }
+        for (const auto& [axis, angle] : b.rotations)
+          c.frame.rotations.emplace_back(axis, detail::compiled_differentiated<T>(constraint_tape, angle));
+      }
+      for (std::size_t i = 0; i < 3; ++i) c.direction[i] = detail::compiled_term<T>(constraint_tape, k.direction[i]);
+      contacts.push_back(std::move(c));
     }
   }
 
@@ -588,6 +642,8 @@ void expression_constraints<T>::point_velocity_row(const typename compiled_syste
     for (const auto& [j, wij] : c->kinematics_du[static_cast<std::size_t>(i)]) A(r, j) += ci * wij.at(v);
     rhs += ci * c->kinematics_on_constraint_tape[static_cast<std::size_t>(i)].at(v);
   }
+  for (int i = 0; i < 3; ++i)  // a moving support: n . v_P = n . v_support
+    if (k.support[static_cast<std::size_t>(i)]) rhs -= n(i) * k.support[static_cast<std::size_t>(i)].at(v);
   a(r) = -rhs;
 }
 
@@ -704,6 +760,117 @@ std::vector<constraint_wrench_result<S>> constraint_wrenches(const compiled_syst
     }
     using std::sqrt;
     out.push_back({vec3<S>(w(0), w(1), w(2)), vec3<S>(w(3), w(4), w(5)), S(sqrt(sq))});
+  }
+  return out;
+}
+
+template <class S>
+struct contact_force_result {
+  S normal;           ///< N: the force's component along the normal, on the side the support pushes from
+  vec3<S> tangential; ///< F_t: the rest of the force, on the fixed axes (|F_t| is the friction needed)
+  vec3<S> moment;     ///< the couple about the point (0 for a point contact; checked when the file is read)
+  vec3<S> unit_normal;
+};
+
+/// The twist Jacobian (6 x n) of a contact's body at its point: point_twist_jacobian
+/// for a body given by rotations; for a body given by omega (affine in u),
+///   dv_P/du_j = sum_i dG/dq_i dq'_i/du_j + domega/du_j x (P - G),  domega/du_j from the file.
+template <Scalar T, class S>
+matrix_t<S> contact_twist_jacobian(const compiled_system<T>& c, const typename compiled_system<T>::contact& k,
+                                   const S* v) {
+  if (!k.omega_body) return point_twist_jacobian<T, S>(c, k.frame, v);
+  const int n = c.def->vars.speeds;
+  vec3<S> rel;
+  for (int i = 0; i < 3; ++i) rel(i) = k.frame.rel[static_cast<std::size_t>(i)].at(v);
+  matrix_t<S> J = matrix_t<S>::Zero(6, n);
+  for (int x = 0; x < 3; ++x)
+    for (const auto& [i, d] : k.frame.center[static_cast<std::size_t>(x)].dq) {
+      const S g = d.at(v);
+      if (c.def->rates_as_speeds) {
+        J(x, i) += g;
+        continue;
+      }
+      for (const auto& [j, wij] : c.kinematics_du[static_cast<std::size_t>(i)]) J(x, j) += g * wij.at(v);
+    }
+  for (int x = 0; x < 3; ++x)
+    for (const auto& [j, e] : k.omega_du[static_cast<std::size_t>(x)]) J(3 + x, j) += e.at(v);
+  for (int j = 0; j < n; ++j) {
+    const vec3<S> w(J(3, j), J(4, j), J(5, j));
+    const vec3<S> m = cross(w, rel);
+    for (int r = 0; r < 3; ++r) J(r, j) += m(r);
+  }
+  return J;
+}
+
+/// Each contact's force at (q, t) from the constraints' reactions (Cotton's Q'_c):
+/// d_c the force of constraint c per unit of its reaction (system_contact_definition),
+/// n = side d_normal / |d_normal| (or the given direction, normalized),
+///   N = sum_c Q'_c d_c . n,   F_t = sum_c Q'_c (d_c - (d_c . n) n),
+/// the normal constraint's own term taken as side Q' |d_normal| (no tangential part),
+/// exactly, so that intervals do not widen it.  S: T, or jets of T (over a whole step).
+template <Scalar T, class S = T>
+std::vector<contact_force_result<S>> contact_forces(const compiled_system<T>& c, const vector_t<S>& q, const S& t,
+                                                    const vector_t<S>& reactions) {
+  std::vector<contact_force_result<S>> out;
+  if (c.contacts.empty()) return out;
+  using std::sqrt;
+  const int n = c.def->vars.speeds, s = static_cast<int>(c.constraints.size());
+  const vector_t<S> u0 = vector_t<S>::Zero(n);
+  const std::vector<S> values = c.evaluate(c.constraint_tape, c.template variables<S>(q, u0, t));
+  const S* v = values.data();
+  matrix_t<S> A;
+  vector_t<S> a;
+  for (std::size_t k = 0; k < c.contacts.size(); ++k) {
+    const auto& ck = c.contacts[k];
+    const system_contact_definition& dk = c.def->contacts[k];
+    std::vector<vec3<S>> d, m;
+    if (ck.frame.body < 0) {
+      for (int r : dk.constraints) {
+        vec3<S> x;
+        for (int i = 0; i < 3; ++i) x(i) = c.constraints[static_cast<std::size_t>(r)].direction[static_cast<std::size_t>(i)].at(v);
+        d.push_back(x);
+        m.push_back(zero_matrix<vec3<S>>());
+      }
+    } else {
+      if (A.size() == 0) {
+        A.resize(s, n);
+        a.resize(s);
+        expression_constraints<T>{&c}.template eval<S>(q, t, A, a);
+      }
+      const matrix_t<S> J = contact_twist_jacobian<T, S>(c, ck, v);
+      for (int r : dk.constraints) {
+        const vector_t<S> g = A.row(r).transpose();
+        const auto [N, rhs] = wrench_normal_equations(J, g);
+        const vector_t<S> w = solve_spd(N, rhs);
+        d.push_back(vec3<S>(w(0), w(1), w(2)));
+        m.push_back(vec3<S>(w(3), w(4), w(5)));
+      }
+    }
+    vec3<S> nv;
+    std::size_t normal_at = dk.constraints.size();
+    if (dk.normal >= 0) {
+      normal_at = static_cast<std::size_t>(std::find(dk.constraints.begin(), dk.constraints.end(), dk.normal) - dk.constraints.begin());
+      nv = d[normal_at];
+    } else {
+      for (int i = 0; i < 3; ++i) nv(i) = ck.direction[static_cast<std::size_t>(i)].at(v);
+    }
+    const S len = sqrt(dot(nv, nv));
+    const S side = S(dk.side);
+    vec3<S> un;
+    for (int i = 0; i < 3; ++i) un(i) = nv(i) * side / len;
+    contact_force_result<S> res{S(0), zero_matrix<vec3<S>>(), zero_matrix<vec3<S>>(), un};
+    for (std::size_t i = 0; i < dk.constraints.size(); ++i) {
+      const S lambda = reactions(dk.constraints[i]);
+      for (int x = 0; x < 3; ++x) res.moment(x) += m[i](x) * lambda;
+      if (i == normal_at) {
+        res.normal += side * lambda * len;
+        continue;
+      }
+      const S along = dot(d[i], un);
+      res.normal += lambda * along;
+      for (int x = 0; x < 3; ++x) res.tangential(x) += (d[i](x) - un(x) * along) * lambda;
+    }
+    out.push_back(std::move(res));
   }
   return out;
 }

@@ -567,6 +567,7 @@ system_input system_model::read(object_reader& scene) {
         k.body = body_on_fixed_axes(p, "a point velocity");
         k.point = point_of_q_t(p, "point");
         k.direction = point_of_q_t(p, "direction");
+        if (p.has("support")) k.support = point_of_q_t(p, "support");
         p.finish();
         r.finish();
         def.constraints.push_back(std::move(k));
@@ -620,6 +621,84 @@ system_input system_model::read(object_reader& scene) {
       if (w.constraints.empty()) throw input_error(r.path("constraints") + ": name at least one constraint");
       r.finish();
       def.wrenches.push_back(std::move(w));
+    }
+  }
+
+  // Contacts: which constraints make one, its normal, its friction (SCENES.md "contacts").
+  if (scene.has("contacts")) {
+    const json_value& cs = object_value(scene, "contacts");
+    require_at_most(cs.members.size(), system_limits::names, "contacts");
+    for (const auto& m : cs.members) {
+      object_reader r(m.value, "contacts." + m.key);
+      system_contact_definition k;
+      k.name = m.key;
+      if (!is_identifier(k.name))
+        throw input_error("contacts: '" + printable(k.name) + "' is not a name (a letter or _, then letters, digits, _)");
+      auto constraint_index = [&](const std::string& name, const std::string& where) {
+        const auto it = std::find_if(def.constraints.begin(), def.constraints.end(),
+                                     [&](const system_constraint_definition& x) { return x.name == name; });
+        if (it == def.constraints.end()) throw input_error(where + ": no constraint named '" + printable(name) + "'");
+        return static_cast<int>(it - def.constraints.begin());
+      };
+      for (const std::string& name : name_list(r.raw("constraints"), r.path("constraints"))) {
+        const int c = constraint_index(name, r.path("constraints"));
+        if (std::find(k.constraints.begin(), k.constraints.end(), c) != k.constraints.end())
+          throw input_error(r.path("constraints") + ": '" + name + "' twice");
+        k.constraints.push_back(c);
+      }
+      if (k.constraints.empty()) throw input_error(r.path("constraints") + ": name at least one constraint");
+      const json_value& nv = r.raw("normal");
+      if (nv.type == json_value::kind::string) {
+        std::string name = nv.text;
+        if (!name.empty() && name[0] == '-') {
+          k.side = -1;
+          name.erase(0, 1);
+        }
+        k.normal = constraint_index(name, r.path("normal"));
+        if (std::find(k.constraints.begin(), k.constraints.end(), k.normal) == k.constraints.end())
+          throw input_error(r.path("normal") + ": '" + name + "' is not one of the contact's constraints");
+      } else if (nv.type == json_value::kind::array) {
+        k.direction = point_of_q_t(r, "normal");
+      } else {
+        throw input_error(r.path("normal") + ": expected a constraint's name (\"-name\" for the other side) or a "
+                                             "direction, 3 expressions in q and t");
+      }
+      if (r.has("mu")) {
+        const decimal_field mu = r.number("mu");
+        if (decimal_sign_of_sum({{1, mu.text}}) < 0)
+          throw input_error(r.path("mu") + ": a friction coefficient must not be negative, got " + mu.text);
+        k.mu = mu.text;
+      }
+      if (r.has("body") != r.has("point"))
+        throw input_error(r.path(r.has("body") ? "point" : "body") + ": give the contact's body and point together");
+      if (r.has("body")) {
+        const std::string body = r.string("body");
+        const auto it = std::find_if(def.bodies.begin(), def.bodies.end(),
+                                     [&](const system_body_definition& x) { return x.name == body; });
+        if (it == def.bodies.end()) throw input_error(r.path("body") + ": no body named '" + printable(body) + "'");
+        if (it->body_axes || it->has_matrix || (!it->has_omega && it->rotations.empty()))
+          throw input_error(r.path("body") + ": a contact's body needs its centre on the fixed axes and an orientation "
+                                             "as rotations, or omega on the fixed axes");
+        k.body = static_cast<int>(it - def.bodies.begin());
+        k.point = point_of_q_t(r, "point");
+        if (it->has_omega)
+          for (std::size_t i = 0; i < 3; ++i)
+            k.omega_du[i] = b.speed_coefficients(*it->omega[i], "bodies." + body + ".omega[" + std::to_string(i) + "]");
+      } else {
+        // every constraint a point_velocity constraint at one point of one body
+        const system_constraint_definition& c0 = def.constraints[static_cast<std::size_t>(k.constraints[0])];
+        for (int c : k.constraints) {
+          const system_constraint_definition& ci = def.constraints[static_cast<std::size_t>(c)];
+          bool same = ci.body >= 0 && ci.body == c0.body;
+          for (std::size_t i = 0; same && i < 3; ++i) same = ci.point[i]->to_string() == c0.point[i]->to_string();
+          if (!same)
+            throw input_error(r.path("constraints") + ": " + ci.name + " is not a point_velocity constraint at the point "
+                              "of " + c0.name + " (give the contact's body and point: its force then comes from the "
+                              "constraints' virtual work)");
+        }
+      }
+      r.finish();
+      def.contacts.push_back(std::move(k));
     }
   }
 
@@ -773,6 +852,10 @@ system_input system_model::read(object_reader& scene) {
       for (const char* suffix : {"_force", "_moment"})
         if (!results.insert(w.name + suffix).second)
           throw input_error("wrenches." + w.name + ": its result " + w.name + suffix + " has the name of another result");
+    for (const auto& k : def.contacts)
+      for (const char* suffix : {"_normal_force", "_friction_force", "_tangential_force", "_required_mu"})
+        if (!results.insert(k.name + suffix).second)
+          throw input_error("contacts." + k.name + ": its result " + k.name + suffix + " has the name of another result");
   }
   auto shared = std::make_shared<system_definition>(std::move(b.def));
   in.def = shared;
@@ -954,6 +1037,72 @@ system_input system_model::read(object_reader& scene) {
                                 " is not a constraint on " + d.bodies[static_cast<std::size_t>(wd.body)].name +
                                 " alone (its virtual work involves " + d.names[static_cast<std::size_t>(d.vars.u(j))] +
                                 " beyond the body's motion)");
+          }
+        }
+      }
+    }
+    // Each contact: a body that moves in 6 independent ways (its force from the virtual work),
+    // each constraint's force at the point a force alone, a normal that is not 0, and the
+    // other constraints' forces orthogonal to a normal constraint's.
+    if (!d.contacts.empty()) {
+      const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
+      const std::vector<mpfi> w0 = sys.evaluate(sys.constraint_tape, sys.variables(q, vector_t<mpfi>(vector_t<mpfi>::Zero(n)), t));
+      matrix_t<mpfi> A(s, n);
+      vector_t<mpfi> a(s);
+      expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
+      for (std::size_t k = 0; k < d.contacts.size(); ++k) {
+        const system_contact_definition& kd = d.contacts[k];
+        const std::string where = "contacts." + kd.name;
+        if (kd.body >= 0) {
+          const matrix_t<mpfi> J = contact_twist_jacobian(sys, sys.contacts[k], w0.data());
+          matrix_t<mpfi> N = wrench_normal_equations(J, vector_t<mpfi>(vector_t<mpfi>::Zero(n))).first;
+          for (int p = 0; p < 6; ++p) {
+            if (!certainly_positive(N(p, p)))
+              throw input_error(where + ".body: the speeds move " + d.bodies[static_cast<std::size_t>(kd.body)].name +
+                                " in fewer than 6 independent ways at the state, so the constraints' virtual work does "
+                                "not fix the contact's force (describe the body free: 6 speeds, the constraints as rows)");
+            for (int r = p + 1; r < 6; ++r) {
+              const mpfi f = N(r, p) / N(p, p);
+              for (int c = p; c < 6; ++c) N(r, c) -= f * N(p, c);
+            }
+          }
+          for (int c : kd.constraints) {  // a constraint on that body alone
+            const vector_t<mpfi> g = A.row(c).transpose();
+            const auto [Nc, rhs] = wrench_normal_equations(J, g);
+            const vector_t<mpfi> y = solve_spd(Nc, rhs);
+            for (int j = 0; j < n; ++j) {
+              mpfi e = -g(j);
+              for (int r = 0; r < 6; ++r) e += J(r, j) * y(r);
+              if (!possibly_zero(e))
+                throw input_error(where + ".constraints: " + d.constraints[static_cast<std::size_t>(c)].name +
+                                  " is not a constraint on " + d.bodies[static_cast<std::size_t>(kd.body)].name +
+                                  " alone (its virtual work involves " + d.names[static_cast<std::size_t>(d.vars.u(j))] +
+                                  " beyond the body's motion)");
+            }
+          }
+        }
+        if (kd.normal < 0) {
+          mpfi nn = 0;
+          for (const auto& e : sys.contacts[k].direction) nn += sqr(e.at(w0.data()));
+          if (!certainly_positive(nn)) throw input_error(where + ".normal: 0 at the state");
+        }
+        for (std::size_t i = 0; i < kd.constraints.size(); ++i) {  // unit reactions, one at a time
+          vector_t<mpfi> unit = vector_t<mpfi>::Zero(s);
+          unit(kd.constraints[i]) = 1;
+          const contact_force_result<mpfi> f = contact_forces<mpfi, mpfi>(sys, q, t, unit)[k];
+          const std::string cname = d.constraints[static_cast<std::size_t>(kd.constraints[i])].name;
+          for (int x = 0; x < 3; ++x)
+            if (!possibly_zero(f.moment(x)))
+              throw input_error(where + ".point: " + cname + " exerts a couple about the point (a contact transmits a "
+                                "force at its point: leave pivoting or rolling constraints out of it)");
+          if (kd.constraints[i] == kd.normal && !certainly_positive(kd.side > 0 ? f.normal : mpfi(-f.normal)))
+            throw input_error(where + ".normal: " + cname + "'s force at the point is 0 at the state (no normal)");
+          if (kd.normal >= 0 && kd.constraints[i] != kd.normal) {
+            const mpfi along = f.normal;  // d_c . n for a unit reaction
+            if (!possibly_zero(along))
+              throw input_error(where + ".constraints: " + cname + " is not orthogonal to the normal " +
+                                d.constraints[static_cast<std::size_t>(kd.normal)].name + " at the state (its force along "
+                                "the normal per unit reaction: " + short_text(along) + ")");
           }
         }
       }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "appell/io/model.hpp"
+#include "appell/reactions/contact.hpp"
 #include "appell/scenes/expression_system.hpp"
 #include "appell/scenes/linearize.hpp"
 
@@ -86,6 +87,23 @@ struct system_model {
       }
       for (std::size_t k = 0; k < wrenches.size(); ++k)
         wrench_checks.push_back(detail::scalar_result(wrenches[k].name + "_virtual_work", w[k].residual));
+    }
+    if (!m.in->def->contacts.empty()) {  // can each contact hold? (reactions/contact.hpp)
+      using std::sqrt;
+      const auto& contacts = m.in->def->contacts;
+      const std::vector<contact_force_result<T>> f = contact_forces(m.sys, m.q, m.t, r.reactions);
+      for (std::size_t k = 0; k < contacts.size(); ++k) {
+        const std::string& name = contacts[k].name;
+        const T tangential = sqrt(dot(f[k].tangential, f[k].tangential));
+        e.results.push_back(detail::scalar_result(name + "_normal_force", f[k].normal));
+        e.results.push_back(detail::vector_result(name + "_friction_force", f[k].tangential));
+        e.results.push_back(detail::scalar_result(name + "_tangential_force", tangential));
+        if (certainly_positive(f[k].normal))
+          e.results.push_back(detail::scalar_result(name + "_required_mu", T(tangential / f[k].normal)));
+        std::optional<T> mu;
+        if (!contacts[k].mu.empty()) mu = from_decimal<T>(contacts[k].mu);
+        e.contacts.push_back({name, verdict_name(judge_contact(f[k].normal, tangential, mu ? &*mu : nullptr)), contacts[k].mu});
+      }
     }
     e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
     for (std::size_t c = 0; c < constraints.size(); ++c) {

@@ -22,7 +22,8 @@
 //
 // Results along the motion (each enclosed over whole steps by `enclose`): every
 // speed's acceleration (as eval names them), the solved speeds, each
-// constraint's reaction (Cotton's Q'_c) and each wrench's force and moment.
+// constraint's reaction (Cotton's Q'_c), each wrench's force and moment, and
+// each contact's normal force and friction force (the commands judge them).
 // Invariants: the energy when it is conserved (energy_conserved below), and
 // the holonomic constraints' residuals.
 #pragma once
@@ -63,7 +64,7 @@ inline bool depends_on_time(const system_definition& d) {
   for (const auto& c : d.constraints) {
     if (timed_d(c.f) || timed(c.g)) return true;
     for (std::size_t i = 0; i < 3; ++i)
-      if (timed(c.point[i]) || timed(c.direction[i])) return true;
+      if (timed(c.point[i]) || timed(c.direction[i]) || timed(c.support[i])) return true;
   }
   return false;
 }
@@ -85,8 +86,10 @@ inline bool energy_conserved(const system_definition& d) {
       if (b.force[i] || b.couple[i]) return false;
     if (has_gravity && b.body_axes && !b.center[0].value && !b.center[1].value && !b.center[2].value) return false;
   }
-  for (const auto& c : d.constraints)
+  for (const auto& c : d.constraints) {
     if (!c.holonomic && c.body < 0 && !c.g->vanishes_when_zero(speeds)) return false;
+    if (c.support[0] || c.support[1] || c.support[2]) return false;  // a moving support works
+  }
   return true;
 }
 
@@ -203,6 +206,30 @@ struct system_problem {
         out.push_back({d.wrenches[k].name + "_moment", {w[k].moment(0), w[k].moment(1), w[k].moment(2)}});
       }
     }
+    if (!d.contacts.empty()) {  // the contacts' normal force and friction (judged by the commands: contact.hpp)
+      const auto f = contact_forces<T, S>(model->sys, a.q, a.t, reactions);
+      for (std::size_t k = 0; k < f.size(); ++k) {
+        out.push_back({d.contacts[k].name + "_normal_force", {f[k].normal}});
+        out.push_back({d.contacts[k].name + "_friction_force", {f[k].tangential(0), f[k].tangential(1), f[k].tangential(2)}});
+      }
+    }
+  }
+
+  /// Whether state component i is a coordinate that a holonomic constraint involves (so that a
+  /// range of values for it would leave the constraint: `appell validity` refuses to vary it).
+  bool on_holonomic_constraint(int i) const {
+    if (i >= coordinates()) return false;
+    const system_definition& d = *model->in->def;
+    for (const auto& c : d.constraints)
+      if (c.holonomic && c.f.value->depends_on(d.vars.q(i))) return true;
+    return false;
+  }
+
+  /// The contacts to judge along the motion: each one's name and mu as written (empty: none).
+  std::vector<std::pair<std::string, std::string>> contacts() const {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& k : model->in->def->contacts) out.emplace_back(k.name, k.mu);
+    return out;
   }
 
   /// The energy (when conserved) and each holonomic constraint's residual f(q, t) (0 in truth).

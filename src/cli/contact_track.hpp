@@ -1,0 +1,223 @@
+// contact_track.hpp -- `appell enclose`'s verdict on each contact of a scene
+// (SCENES.md "contacts"), from the enclosures of its normal force N and friction
+// force F_t over every whole step (reactions/contact.hpp judges them):
+//   holds      up to T: every step proves N > 0 and |F_t| < mu N;
+//   fails      the first failure t* lies in [lo, hi]: every step before lo holds
+//              (so t* >= lo), and failure is proved at hi (over a whole step
+//              starting there, or at a step's end state); --locate TOL narrows
+//              [lo, hi] by enclosing again from the state at lo with shorter
+//              horizons (bisection) until hi - lo <= TOL or the enclosures no
+//              longer decide;
+//   undecided  from lo on no step decides and none fails.
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "appell/ode/enclose.hpp"
+#include "appell/reactions/contact.hpp"
+#include "appell/scalar/format.hpp"
+
+namespace appell::cli::motion_detail {
+
+/// A contact's normal force and tangential force's length in one set of results
+/// (`<name>_normal_force`, `<name>_friction_force` [3]).
+template <Scalar I>
+struct contact_values {
+  I normal, tangential;
+  bool known = true;  ///< false: the results could not be evaluated there (then nothing is decided)
+};
+
+template <Scalar I>
+contact_values<I> find_contact(const std::vector<ode::named_values<I>>& results, const std::string& name) {
+  const ode::named_values<I>* n = nullptr;
+  const ode::named_values<I>* f = nullptr;
+  for (const auto& r : results) {
+    if (r.name == name + "_normal_force") n = &r;
+    if (r.name == name + "_friction_force") f = &r;
+  }
+  if (!n || !f || f->values.size() != 3) throw std::logic_error("contact " + name + ": its results are missing");
+  using std::sqrt;
+  I s = sqr(f->values[0]) + sqr(f->values[1]) + sqr(f->values[2]);
+  return {n->values[0], I(sqrt(s)), true};
+}
+
+/// An upper bound (to within rounding) of b - a, as a double: how far apart two times are.
+template <Scalar I>
+double span(const I& a, const I& b) {
+  const I d = b - a;
+  return approx_double(d) + approx_double(I(scalar_traits<I>::width(d)));
+}
+
+template <Scalar I>
+struct contact_track {
+  std::string name, mu_text;
+  std::optional<I> mu;
+  /// Each step: its times, the state at its start, and its verdicts over the step and at its end.
+  struct record {
+    I t0, t1;
+    vector_t<I> start, end;
+    contact_verdict over, at_end;
+    std::optional<I> fails_at;  ///< where failure is proved in it (refinement: inside the step)
+  };
+  std::vector<record> steps;
+  // What the steps prove (finish()):
+  bool prefix_holds = true;         ///< every step holds
+  I lo = I(0);                      ///< the end of the holding prefix
+  vector_t<I> lo_state;             ///< the state there
+  std::optional<I> hi;              ///< the earliest time at which failure is proved
+  bool any_fails = false;
+  std::optional<I> least_normal;    ///< the enclosure whose lower bound is least
+  std::optional<I> largest_mu;      ///< required mu: the enclosure whose upper bound is largest
+  bool mu_unbounded = false;        ///< a step where N > 0 is not proved (required mu has no bound)
+  std::string located;              ///< how --locate ended
+  long refined = 0;                 ///< undecided steps enclosed again in pieces
+
+  contact_verdict verdict_of(const contact_values<I>& v) const {
+    if (!v.known) return contact_verdict::undecided;
+    return judge_contact(v.normal, v.tangential, mu ? &*mu : nullptr);
+  }
+
+  /// One main step [t0, t1] from `start` to `end`: its values over the step and at its end;
+  /// a row of contacts.csv.
+  void step(const I& t0, const I& t1, const vector_t<I>& start, const vector_t<I>& end, const contact_values<I>& over,
+            const contact_values<I>& at_end, std::ostringstream& csv) {
+    const contact_verdict v = verdict_of(over);
+    if (!least_normal || lower(over.normal) < lower(*least_normal)) least_normal = over.normal;
+    std::string mu_lo, mu_hi;
+    if (over.known && certainly_positive(over.normal)) {
+      const I r = over.tangential / over.normal;
+      if (!largest_mu || upper(r) > upper(*largest_mu)) largest_mu = r;
+      mu_lo = lower_string(r);
+      mu_hi = upper_string(r);
+    } else {
+      mu_unbounded = true;
+    }
+    csv << name << "," << lower_string(t0) << "," << upper_string(t1) << "," << lower_string(over.normal) << ","
+        << upper_string(over.normal) << "," << lower_string(over.tangential) << "," << upper_string(over.tangential) << ","
+        << mu_lo << "," << mu_hi << "," << verdict_name(v) << "\n";
+    record r{t0, t1, start, end, v, verdict_of(at_end), {}};
+    if (v == contact_verdict::fails) r.fails_at = t0;
+    else if (r.at_end == contact_verdict::fails) r.fails_at = t1;
+    if (r.fails_at) any_fails = true;
+    steps.push_back(std::move(r));
+  }
+
+  /// The first undecided steps enclosed again from their start in `pieces` shorter horizons
+  /// (over a shorter time a step's enclosure holds less of the motion's variation, and may
+  /// decide), in order, until one proves a failure or stays undecided (the holding prefix
+  /// ends there; the main steps after it still prove failures).  run(x, h, on_step) as for
+  /// locate().
+  template <class Run, class At>
+  void refine(int pieces, const Run& run, const At& at) {
+    for (record& r : steps) {
+      if (r.fails_at) break;  // what follows a proved failure does not move the first one
+      if (r.over == contact_verdict::holds) continue;
+      ++refined;
+      const double h = approx_double(I(r.t1 - r.t0)) / pieces;
+      vector_t<I> x = r.start;
+      I offset = r.t0;
+      bool all_hold = true;
+      for (int k = 0; k < pieces && !r.fails_at; ++k) {
+        vector_t<I> end;
+        bool hold = true;
+        const bool reached = run(x, h, [&](const I& t0, const I& t1, const contact_values<I>& over, const vector_t<I>& e) {
+          const contact_verdict v = verdict_of(over);
+          if (v != contact_verdict::holds) hold = false;
+          if (!r.fails_at && v == contact_verdict::fails) r.fails_at = I(offset + t0);
+          else if (!r.fails_at && verdict_of(at(e)) == contact_verdict::fails) r.fails_at = I(offset + t1);
+          end = e;
+        });
+        if (!reached) {
+          all_hold = false;
+          break;
+        }
+        all_hold = all_hold && hold;
+        x = end;
+        offset = I(offset + I(h));
+      }
+      if (r.fails_at) {
+        any_fails = true;
+        r.over = contact_verdict::fails;  // somewhere in the step
+        break;
+      }
+      if (!all_hold) break;  // the holding prefix ends here: later steps cannot extend it
+      r.over = contact_verdict::holds;
+    }
+  }
+
+  /// The verdict over the run from the steps: the holding prefix, the first proved failure.
+  void finish(const vector_t<I>& x0) {
+    prefix_holds = true;
+    any_fails = false;
+    hi.reset();
+    lo = I(0);
+    lo_state = x0;
+    for (const record& r : steps) {
+      if (r.fails_at) {
+        any_fails = true;
+        if (!hi || upper(*r.fails_at) < upper(*hi)) hi = *r.fails_at;
+      }
+      if (prefix_holds && !any_fails && r.over == contact_verdict::holds) {
+        lo = r.t1;
+        lo_state = r.end;
+      } else {
+        prefix_holds = false;
+      }
+    }
+  }
+  contact_verdict verdict() const {
+    if (any_fails) return contact_verdict::fails;
+    return prefix_holds ? contact_verdict::holds : contact_verdict::undecided;
+  }
+
+  /// --locate: narrow [lo, hi] by enclosing again from lo's state over shorter horizons.
+  /// `run(x, h, on_step)` encloses from state x for a time h (an autonomous motion: the time
+  /// is carried in the state when the scene depends on it), calls on_step(t0, t1, values over
+  /// the step, end state) for each step, and returns whether it reached h; `at(state)` gives the
+  /// contact's values at a state.
+  template <class Run, class At>
+  void locate(double tol, const Run& run, const At& at) {
+    if (!any_fails || !hi) return;
+    double h = approx_double(I(*hi - lo)) / 2;
+    int rounds = 0;
+    while (span(lo, *hi) > tol && rounds++ < 400) {
+      h = std::min(h, approx_double(I(*hi - lo)));
+      if (!(h > 0)) break;
+      bool all_hold = true;
+      std::optional<I> failed;  // relative to lo
+      vector_t<I> end;
+      const bool reached = run(lo_state, h, [&](const I& t0, const I& t1, const contact_values<I>& over, const vector_t<I>& e) {
+        const contact_verdict v = verdict_of(over);
+        if (v != contact_verdict::holds) all_hold = false;
+        if (v == contact_verdict::fails && !failed) failed = t0;
+        else if (!failed && verdict_of(at(e)) == contact_verdict::fails) failed = t1;
+        end = e;
+      });
+      if (reached && all_hold) {
+        lo = I(lo + I(h));
+        lo_state = end;
+        h = approx_double(I(*hi - lo)) / 2;
+      } else if (failed) {
+        const I t = I(lo + *failed);
+        if (upper(t) < upper(*hi)) hi = t;
+        h = approx_double(I(*hi - lo)) / 2;
+      } else {
+        h /= 2;
+        if (h < tol / 64) {
+          located = "stopped at width " + ode::number_text(span(lo, *hi)) +
+                    ": the enclosures no longer decide there";
+          return;
+        }
+      }
+    }
+    located = span(lo, *hi) <= tol ? "located to within " + ode::number_text(tol) : "stopped after 400 rounds";
+  }
+};
+
+}  // namespace appell::cli::motion_detail

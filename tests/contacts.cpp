@@ -1,0 +1,397 @@
+// Can the constraint hold? (issue 31): a system file's "contacts" judged at an
+// instant (`eval`) and along a motion (`enclose`), against truth derived here:
+//   - a sphere rolling on a horizontal plane under a horizontal force F_h through
+//     G (gravity's horizontal part and an applied force) and a couple about the
+//     vertical (which the pivoting constraint takes): Newton-Euler with the
+//     rolling condition gives the friction force -A/(A + M a^2) F_h = -2/7 F_h
+//     (homogeneous sphere) and the normal force M g_z's opposite, whatever the
+//     state; so required mu = 2/7 |F_h| / (M |g_z|);
+//   - a sphere rolling inside a spherical bowl (its centre on the sphere of radius
+//     r = |c| about the bowl's centre O): c . v = 0 along the motion, so
+//     c . a = -|v|^2, and the normal component of Newton's law along -c/r gives
+//       N = M (|v|^2 + g . c) / r      (g the gravity vector),
+//     a closed form of the state, at 200 random states (their speeds solved from
+//     the rolling constraints at 332 bits here, independently of appell);
+//   - the rolling disk: its floor pushes vertically, so N = m (g + z'');
+//   - a sphere looping inside the bowl in a vertical plane, from the bottom at
+//     speed v0: energy (7/10 M v^2 + M g z constant) gives v(theta)^2 = v0^2 -
+//     10/7 g r (1 - cos theta) and, above, N / M = v0^2 / r - 10/7 g + 17/7 g
+//     cos theta, zero at cos theta* = (10 g - 7 v0^2 / r) / (17 g); the friction
+//     it needs is 2/7 M g sin theta (the incline's).  The time to reach an angle
+//     is the quadrature t(theta) = int_0^theta r / v (Boost.Math's Gauss-Kronrod
+//     at 100 digits).  `enclose --locate` must put the first failure, with and
+//     without friction, in an interval that holds that time.
+#define BOOST_TEST_MODULE contacts
+#include <boost/test/unit_test.hpp>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <boost/multiprecision/mpfr.hpp>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+
+#include "appell/io/scene.hpp"
+#include "appell/scalar/standard_scalars.hpp"
+#include "affine_check.hpp"
+
+using namespace appell;
+using truth_t = boost::multiprecision::mpfr_float_100;
+using affine_check::holds;
+
+namespace {
+
+scene_input scene_of(const std::string& json) { return read_scene(parse_json(json)); }
+std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+std::string scene_text(const std::string& file) { return slurp(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file); }
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  const auto at = s.find(from);
+  BOOST_TEST_REQUIRE(at != std::string::npos, "'" << from << "' not in the scene");
+  return s.replace(at, from.size(), to);
+}
+std::string decimal(const truth_t& x) { return x.str(95, std::ios_base::scientific); }
+
+/// f(std::type_identity<T>{}) in every standard scalar (mpfr and mpfi at 256 bits).
+template <class F>
+void every_scalar(F&& f) {
+  for (const scalar_info& s : standard_scalar_infos()) with_scalar(s.name, std::nullopt, f);
+}
+
+template <class T>
+const T& result(const evaluation<T>& e, const std::string& name, std::size_t i = 0) {
+  return e.result(name).values.at(i);
+}
+template <class T>
+std::string verdict(const evaluation<T>& e, const std::string& contact) {
+  for (const auto& c : e.contacts)
+    if (c.name == contact) return c.verdict;
+  return "absent";
+}
+
+/// x holds v (interval types) or is within rel of it (point types, relative to scale).
+template <class T>
+bool agrees(const T& x, const truth_t& v, const truth_t& scale) {
+  if constexpr (scalar_traits<T>::is_interval) {
+    return holds(x, v);
+  } else {
+    const truth_t err = abs(truth_t(to_string(x)) - v);
+    return err <= scale * std::ldexp(1.0, 8 - static_cast<int>(scalar_traits<T>::precision_bits()));
+  }
+}
+
+template <class T>
+void sphere_on_plane_in(const scene_input& scene, const std::string& mu_text) {
+  const evaluation<T> e = evaluate<T>(scene);
+  // F_h = (M g_x + F_x, M g_y + F_y) = (1.5 * 1.2, 0.5); N = M * 9.7
+  const truth_t M("1.5"), N = M * truth_t("9.7"), fx = M * truth_t("1.2"), fy("0.5");
+  const truth_t ft = 2 * sqrt(fx * fx + fy * fy) / 7;
+  BOOST_TEST(agrees(result(e, "table_normal_force"), N, N), scalar_traits<T>::name << ": N " << to_string(result(e, "table_normal_force")));
+  BOOST_TEST(agrees(result(e, "table_friction_force", 0), truth_t(-2 * fx / 7), N));
+  BOOST_TEST(agrees(result(e, "table_friction_force", 1), truth_t(-2 * fy / 7), N));
+  BOOST_TEST(agrees(result(e, "table_friction_force", 2), truth_t(0), N));
+  BOOST_TEST(agrees(result(e, "table_tangential_force"), ft, N));
+  BOOST_TEST(agrees(result(e, "table_required_mu"), truth_t(ft / N), truth_t(1)),
+             scalar_traits<T>::name << ": required mu " << to_string(result(e, "table_required_mu")));
+  // required mu = 0.0366846...: mu 0.05 holds, 0.03 fails
+  const std::string expected = mu_text == "0.05" ? "holds" : "fails";
+  BOOST_TEST(verdict(e, "table") == expected, scalar_traits<T>::name << " mu " << mu_text << ": " << verdict(e, "table"));
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(a_sphere_on_a_plane_needs_two_sevenths_of_the_horizontal_force) {
+  const std::string text = scene_text("system_rolling_sphere_plane_contact.json");
+  std::mt19937_64 rng(31);
+  std::uniform_int_distribution<int> digit(-999, 999);
+  auto d = [&] { return std::to_string(digit(rng)) + "e-2"; };
+  int states = 0;
+  for (int k = 0; k < 40; ++k) {
+    // any consistent state: vx = a wy, vy = -a wx, wz = 0, z = a (a = 0.2)
+    const std::string wx = d(), wy = d();
+    const truth_t a("0.2");
+    const std::string state = "\"state\": {\"x\": \"" + d() + "\", \"y\": \"" + d() + "\", \"z\": \"0.2\", \"vx\": \"" +
+                              decimal(a * truth_t(wy)) + "\", \"vy\": \"" + decimal(-a * truth_t(wx)) +
+                              "\", \"vz\": \"0\", \"wx\": \"" + wx + "\", \"wy\": \"" + wy + "\", \"wz\": \"0\"}}";
+    const std::string mu = k % 2 ? "0.03" : "0.05";
+    std::string s = replaced(text, "\"mu\": \"0.05\"", "\"mu\": \"" + mu + "\"");
+    s = s.substr(0, s.find("\"state\"")) + state;
+    const scene_input scene = scene_of(s);
+    auto each = [&]<class T>(std::type_identity<T>) { sphere_on_plane_in<T>(scene, mu); };
+    every_scalar(each);
+    ++states;
+  }
+  BOOST_TEST(states == 40);
+  // Without mu only the sign of N is judged; mutating the normal's side turns the verdict.
+  const std::string no_mu = replaced(text, ", \"mu\": \"0.05\"", "");
+  BOOST_TEST(verdict(evaluate<interval>(scene_of(no_mu)), "table") == "holds");
+  const evaluation<interval> flipped = evaluate<interval>(scene_of(replaced(no_mu, "\"normal\": \"contact\"", "\"normal\": \"-contact\"")));
+  BOOST_TEST(verdict(flipped, "table") == "fails");
+  BOOST_TEST(holds(result(flipped, "table_normal_force"), truth_t("-14.55")));
+}
+
+BOOST_AUTO_TEST_CASE(a_sphere_in_a_bowl_is_pushed_by_the_closed_form_of_its_state) {
+  // The bowl file (the sphere may pivot: the contact transmits a force only, and a pivoting
+  // constraint would tie wz to the others) at random states, vx, vy, vz solved from rolling.
+  const std::string text = scene_text("system_sphere_in_bowl_contact.json");
+  const std::string head = text.substr(0, text.find("\"solve_speeds\""));
+  std::mt19937_64 rng(1907);
+  auto dec = [&](double lo, double hi) {
+    std::uniform_int_distribution<long> n(static_cast<long>(lo * 1e6), static_cast<long>(hi * 1e6));
+    return std::to_string(n(rng)) + "e-6";
+  };
+  long contained = 0, checked = 0, signs = 0;
+  const truth_t M(2), a("0.1"), g("9.81");
+  for (int k = 0; k < 200; ++k) {
+    std::string x, y, z;
+    do {  // the centre anywhere in the bowl, at least 0.3 from its centre (above the equator too)
+      x = dec(-1, 1), y = dec(-1, 1), z = dec(-1, 1);
+    } while (truth_t(x) * truth_t(x) + truth_t(y) * truth_t(y) + truth_t(z) * truth_t(z) < truth_t("0.09"));
+    const std::string wx = dec(-20, 20), wy = dec(-20, 20), wz = dec(-20, 20);
+    const truth_t X(x), Y(y), Z(z), WX(wx), WY(wy), WZ(wz);
+    // truth: v = -omega x (a c / r), N = M (|v|^2 + g . c) / r
+    const truth_t r = sqrt(X * X + Y * Y + Z * Z);
+    const truth_t px = a * X / r, py = a * Y / r, pz = a * Z / r;
+    const truth_t vx = -(WY * pz - WZ * py), vy = -(WZ * px - WX * pz), vz = -(WX * py - WY * px);
+    const truth_t N = M * (vx * vx + vy * vy + vz * vz - g * Z) / r;
+    const std::string scene_json = head + "\"solve_speeds\": [\"vx\", \"vy\", \"vz\"],\n \"state\": {\"x\": \"" + x +
+                                   "\", \"y\": \"" + y + "\", \"z\": \"" + z + "\", \"wx\": \"" + wx + "\", \"wy\": \"" + wy + "\", \"wz\": \"" + wz + "\"}}";
+    const scene_input scene = scene_of(scene_json);
+    const evaluation<interval> ei = evaluate<interval>(scene);
+    {
+      const mp_precision_scope bits(128);
+      const evaluation<mpfi> em = evaluate<mpfi>(scene);
+      contained += holds(result(em, "bowl_normal_force"), N);
+      ++checked;
+      BOOST_TEST(holds(result(em, "bowl_normal_force"), N), "state " << k << ": mpfi N " << to_string(result(em, "bowl_normal_force")) << " vs " << N);
+      // without mu the verdict is the closed form's sign (the friction is judged in the loop below)
+      const evaluation<mpfi> sign_only = evaluate<mpfi>(scene_of(replaced(scene_json, ",\n                       \"mu\": \"0.5\"", "")));
+      BOOST_TEST(verdict(sign_only, "bowl") == (N > 0 ? "holds" : "fails"), "state " << k << ": N " << N);
+      signs += N > 0 ? 1 : 0;
+    }
+    contained += holds(result(ei, "bowl_normal_force"), N);
+    ++checked;
+    BOOST_TEST(holds(result(ei, "bowl_normal_force"), N), "state " << k << ": interval N " << to_string(result(ei, "bowl_normal_force")) << " vs " << N);
+    const evaluation<double> ed = evaluate<double>(scene);
+    BOOST_TEST(agrees(result(ed, "bowl_normal_force"), N, truth_t(abs(N) + M * g)));
+    // a wrong truth is refused: N without the centripetal part
+    BOOST_TEST(!holds(result(ei, "bowl_normal_force"), truth_t(M * (-g * Z) / r)));
+  }
+  BOOST_TEST(contained == checked);
+  BOOST_TEST(signs > 20);  // both verdicts were seen
+  BOOST_TEST(signs < 180);
+  BOOST_TEST_MESSAGE("sphere in a bowl: N enclosed at " << checked << " (state, scalar) pairs, " << contained << " contain the closed form");
+}
+
+BOOST_AUTO_TEST_CASE(the_rolling_disk_is_pushed_by_its_weight_and_its_fall) {
+  const scene_input scene = read_scene_file(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk_friction.json");
+  const truth_t m(2), g("9.81");
+  {
+    const mp_precision_scope bits(256);
+    const evaluation<mpfi> e = evaluate<mpfi>(scene);
+    const mpfi& N = result(e, "floor_normal_force");
+    const mpfi& zdd = result(e, "z_ddot");
+    // N = m (g + z''): both enclosed; their difference within 2^-200 of 0
+    const mpfi diff = N - mpfi(2) * (from_decimal<mpfi>("9.81") + zdd);
+    BOOST_TEST(affine_check::upper_of(diff) < truth_t("1e-60"));
+    BOOST_TEST(affine_check::lower_of(diff) > truth_t("-1e-60"));
+    // the contact force is the wrench's force (the same constraints, reduced to the same point)
+    for (std::size_t i = 0; i < 3; ++i) {
+      const mpfi f = (i == 2 ? N : mpfi(0)) + result(e, "floor_friction_force", i) - result(e, "contact_force", i);
+      BOOST_TEST(affine_check::upper_of(f) < truth_t("1e-60"));
+      BOOST_TEST(affine_check::lower_of(f) > truth_t("-1e-60"));
+    }
+  }
+  auto each = [&]<class T>(std::type_identity<T>) {
+    const evaluation<T> e = evaluate<T>(scene);
+    const T& N = result(e, "floor_normal_force");
+    const T expect = T(2) * (from_decimal<T>("9.81") + result(e, "z_ddot"));
+    if constexpr (scalar_traits<T>::is_interval) {
+      BOOST_TEST(!certainly_less(N, expect));
+      BOOST_TEST(!certainly_less(expect, N));
+    } else {
+      BOOST_TEST(std::abs(approx_double(T(N - expect))) < 1e-9 * 20, scalar_traits<T>::name);
+    }
+    BOOST_TEST(verdict(e, "floor") == "holds", scalar_traits<T>::name);
+  };
+  every_scalar(each);
+}
+
+namespace {
+/// The loop in the bowl (the top of this file): the angle theta* where N = 0, the angle
+/// theta_f where the friction needed reaches mu, and the time t(theta).
+struct loop_truth {
+  truth_t g{"9.81"}, r{"0.9"}, v0{"4.5"};
+  truth_t n_over_m(const truth_t& th) const { return v0 * v0 / r - 10 * g / 7 + 17 * g * cos(th) / 7; }
+  truth_t friction_over_m(const truth_t& th) const { return 2 * g * sin(th) / 7; }
+  truth_t lift_off() const { return acos((10 * g - 7 * v0 * v0 / r) / (17 * g)); }
+  /// mu N = friction, the first root in (0, theta*): bisection (mu N - friction decreases there).
+  truth_t slip(const truth_t& mu) const {
+    truth_t lo = 0, hi = lift_off();
+    for (int i = 0; i < 300; ++i) {
+      const truth_t m = (lo + hi) / 2;
+      (mu * n_over_m(m) - friction_over_m(m) > 0 ? lo : hi) = m;
+    }
+    return (lo + hi) / 2;
+  }
+  truth_t time_to(const truth_t& th) const {
+    auto f = [&](const truth_t& x) -> truth_t { return r / sqrt(v0 * v0 - 10 * g * r * (1 - cos(x)) / 7); };
+    return boost::math::quadrature::gauss_kronrod<truth_t, 61>::integrate(f, truth_t(0), th, 15, truth_t("1e-60"));
+  }
+};
+
+struct run_result {
+  int status;
+  nlohmann::json summary;
+  std::string out;
+};
+run_result enclose(const std::string& json, const std::string& args, const std::string& name) {
+  const auto dir = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts" / name;
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "scene.json") << json;
+  const std::string cmd = std::string(APPELL_BINARY) + " enclose " + (dir / "scene.json").string() + " " + args +
+                          " --quiet --out " + dir.string() + " >" + (dir / "stdout").string() + " 2>&1";
+  const int raw = std::system(cmd.c_str());
+  const int status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  nlohmann::json s;
+  if (std::filesystem::exists(dir / "summary.json")) s = nlohmann::json::parse(slurp((dir / "summary.json").string()));
+  return {status, s, slurp((dir / "stdout").string())};
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(a_sphere_looping_in_a_bowl_loses_its_contact_when_the_closed_form_says) {
+  const loop_truth L;
+  const std::string text = scene_text("system_sphere_in_bowl_contact.json");
+  // Without mu: the normal force's sign, zero at theta*.
+  {
+    const truth_t th = L.lift_off(), t_star = L.time_to(th);
+    const run_result r = enclose(replaced(text, ",\n                       \"mu\": \"0.5\"", ""),
+                                 "--t-end 0.8 --locate 1e-6 --until-contact-fails", "lift_off");
+    BOOST_TEST_REQUIRE(r.status == 0, r.out);
+    const nlohmann::json& c = r.summary["contacts"]["bowl"];
+    BOOST_TEST_REQUIRE(c["verdict"] == "fails", r.out);
+    const truth_t from(c["first_failure"]["from"].get<std::string>()), to(c["first_failure"]["to"].get<std::string>());
+    BOOST_TEST(from <= t_star);
+    BOOST_TEST(t_star <= to);
+    BOOST_TEST(to - from <= truth_t("1e-6"), "located to " << (to - from));
+    BOOST_TEST(r.summary["stopped_at_contact_failure"] == true);
+    BOOST_TEST_MESSAGE("lift-off at theta* = " << th << ", t* = " << t_star << ": located in [" << from << ", " << to << "]");
+  }
+  // With mu = 0.5: the friction needed reaches mu first.
+  {
+    const truth_t th = L.slip(truth_t("0.5")), t_slip = L.time_to(th);
+    BOOST_TEST(th < L.lift_off());
+    const run_result r = enclose(text, "--t-end 0.5 --locate 1e-5", "slip");
+    BOOST_TEST_REQUIRE(r.status == 0, r.out);
+    const nlohmann::json& c = r.summary["contacts"]["bowl"];
+    BOOST_TEST_REQUIRE(c["verdict"] == "fails", r.out);
+    const truth_t from(c["first_failure"]["from"].get<std::string>()), to(c["first_failure"]["to"].get<std::string>());
+    BOOST_TEST(from <= t_slip);
+    BOOST_TEST(t_slip <= to);
+    BOOST_TEST(to - from <= truth_t("1e-5"));
+    BOOST_TEST(r.summary["complete"] == true);
+    BOOST_TEST_MESSAGE("slip at theta = " << th << ", t = " << t_slip << ": located in [" << from << ", " << to << "]");
+    // Before the slip the contact holds: a run that stops before it says so.
+    const run_result early = enclose(text, "--t-end 0.1", "early");
+    BOOST_TEST(early.status == 0, early.out);
+    BOOST_TEST(early.summary["contacts"]["bowl"]["verdict"] == "holds", early.out);
+    BOOST_TEST(truth_t(early.summary["contacts"]["bowl"]["largest_required_mu"].get<std::string>()) < truth_t("0.5"));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(validity_splits_the_initial_spin_at_the_closed_form_s_boundary) {
+  // The sphere oscillating in the bowl from the bottom with spin wy (v0 = a wy): the friction it
+  // needs grows with the angle up to the turning angle theta_max, where v = 0 and it is
+  // 2/7 tan theta_max (N = M g cos theta_max there); cos theta_max = 1 - 7 v0^2 / (10 g r).  So
+  // with mu the contact holds for all time iff 2/7 tan theta_max < mu: wy < wy* with
+  //   cos theta* = 1 / sqrt(1 + (7 mu / 2)^2),  v0*^2 = 10/7 g r (1 - cos theta*).
+  // T = 1 passes the turning point (about 0.6 s) for every spin of the range.
+  const truth_t g("9.81"), r("0.9"), a("0.1"), mu("0.5");
+  const truth_t c = 1 / sqrt(1 + (7 * mu / 2) * (7 * mu / 2)), wy_star = sqrt(10 * g * r * (1 - c) / 7) / a;
+  const auto dir = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts" / "validity";
+  std::filesystem::create_directories(dir);
+  const std::string cmd = std::string(APPELL_BINARY) + " validity " APPELL_SOURCE_DIR
+                          "/data/scenes/system_sphere_in_bowl_contact.json --vary wy=20:30 --t-end 1 --resolution 0.1 "
+                          "--quiet --out " + dir.string() + " >" + (dir / "stdout").string() + " 2>&1";
+  const int raw = std::system(cmd.c_str());
+  BOOST_TEST_REQUIRE(WEXITSTATUS(raw) == 0, slurp((dir / "stdout").string()));
+  const nlohmann::json s = nlohmann::json::parse(slurp((dir / "summary.json").string()));
+  int holds_pieces = 0, fails_pieces = 0;
+  truth_t covered_to("20");
+  std::istringstream csv(slurp((dir / "validity.csv").string()));
+  std::string line;
+  std::getline(csv, line);
+  while (std::getline(csv, line)) {
+    std::vector<std::string> f;
+    std::stringstream ls(line);
+    for (std::string x; std::getline(ls, x, ',');) f.push_back(x);
+    BOOST_TEST_REQUIRE(f.size() >= 3);
+    const truth_t lo(f[0]), hi(f[1]);
+    BOOST_TEST(lo <= covered_to, "a gap before " << lo);  // the pieces cover the range
+    covered_to = std::max(covered_to, hi);
+    if (f[2] == "holds") {
+      ++holds_pieces;
+      BOOST_TEST(hi < wy_star, "holds on [" << lo << ", " << hi << "] past wy* = " << wy_star);
+    } else if (f[2] == "fails") {
+      ++fails_pieces;
+      BOOST_TEST(lo > wy_star, "fails on [" << lo << ", " << hi << "] before wy* = " << wy_star);
+    } else {
+      BOOST_TEST(hi - lo <= truth_t("0.1") * (1 + truth_t("1e-9")));
+      BOOST_TEST(lo - truth_t("0.2") < wy_star);  // undecided only near the boundary
+      BOOST_TEST(hi + truth_t("0.2") > wy_star);
+    }
+  }
+  BOOST_TEST(covered_to >= truth_t("30"));
+  BOOST_TEST(holds_pieces > 0);
+  BOOST_TEST(fails_pieces > 0);
+  // the ranges: holds from 20 to within 0.3 of wy*, fails from within 0.3 of it to 30
+  const truth_t holds_to(s["ranges"]["holds"].back()[1].get<std::string>()), fails_from(s["ranges"]["fails"].front()[0].get<std::string>());
+  BOOST_TEST(holds_to > wy_star - truth_t("0.3"));
+  BOOST_TEST(fails_from < wy_star + truth_t("0.3"));
+  BOOST_TEST_MESSAGE("validity over wy in [20, 30]: holds up to " << holds_to << ", fails from " << fails_from << ", wy* = "
+                                                                  << wy_star << "; " << s["pieces"] << " pieces in "
+                                                                  << s["seconds"] << " s");
+}
+
+BOOST_AUTO_TEST_CASE(bad_contacts_are_refused_naming_the_field) {
+  const std::string plane = scene_text("system_rolling_sphere_plane_contact.json");
+  auto refused = [&](const std::string& json, const std::string& mention) {
+    try {
+      (void)scene_of(json);
+      BOOST_ERROR("accepted; expected a refusal naming " << mention);
+    } catch (const input_error& e) {
+      BOOST_TEST(std::string(e.what()).find(mention) != std::string::npos, e.what() << " lacks " << mention);
+    }
+  };
+  refused(replaced(plane, "\"normal\": \"contact\"", "\"normal\": \"pivot\""), "contacts.table.normal");
+  refused(replaced(plane, "\"normal\": \"contact\"", "\"normal\": \"nothing\""), "contacts.table.normal");
+  refused(replaced(plane, "\"mu\": \"0.05\"", "\"mu\": \"-0.05\""), "contacts.table.mu");
+  refused(replaced(plane, "\"mu\": \"0.05\"", "\"mu\": \"x\""), "contacts.table.mu");
+  refused(replaced(plane, "[\"contact\", \"slip_x\", \"slip_y\"]", "[\"contact\", \"slip_x\", \"slip_x\"]"), "contacts.table.constraints");
+  refused(replaced(plane, "[\"contact\", \"slip_x\", \"slip_y\"]", "[]"), "contacts.table.constraints");
+  // the pivoting constraint exerts a couple, not a force at the point
+  refused(replaced(plane, "[\"contact\", \"slip_x\", \"slip_y\"]", "[\"contact\", \"slip_x\", \"slip_y\", \"pivot\"]"),
+          "contacts.table.point");
+  // the point off the contact: the normal force then has a moment about it
+  refused(replaced(plane, "\"point\": [\"x\", \"y\", \"z - a\"]", "\"point\": [\"x\", \"y\", \"z\"]"), "contacts.table.point");
+  refused(replaced(plane, ", \"point\": [\"x\", \"y\", \"z - a\"]", ""), "contacts.table");
+  refused(replaced(plane, "\"body\": \"sphere\"", "\"body\": \"moon\""), "contacts.table.body");
+  refused(replaced(plane, "\"mu\": \"0.05\"", "\"mu\": \"0.05\", \"friction\": 1"), "friction");
+  refused(replaced(plane, "\"table\"", "\"1table\""), "is not a name");
+  // a tangential constraint that is not orthogonal to the normal: slip_x tilted toward z
+  refused(replaced(plane, "\"slip_x\": {\"nonholonomic\": \"vx - a*wy\"}", "\"slip_x\": {\"nonholonomic\": \"vx + vz - a*wy\"}"),
+          "not orthogonal to the normal");
+  refused(replaced(plane, "\"normal\": \"contact\"", "\"normal\": [\"0\", \"0\", \"0*x\"]"), "contacts.table.normal");
+  // without a body, every constraint must be a point_velocity one at one point
+  refused(replaced(plane, "\"body\": \"sphere\", \"point\": [\"x\", \"y\", \"z - a\"], ", ""), "point_velocity");
+  // --locate and --until-contact-fails belong to enclose
+  const std::string cmd = std::string(APPELL_BINARY) + " simulate " APPELL_SOURCE_DIR
+                          "/data/scenes/system_rolling_sphere_plane_contact.json --t-end 1 --locate 1e-3 --out /tmp/x >/dev/null 2>&1";
+  const int raw = std::system(cmd.c_str());
+  BOOST_TEST(WEXITSTATUS(raw) == 2);
+}
