@@ -621,16 +621,19 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
         return find_contact(r, name);
       };
       std::ostringstream sink;
-      bool out_of_time = false;
+      bool out_of_time = false, proved_failure = false;
       vector_t<I> step_start = x;
       const ode::enclose_stats st = ode::enclose(
           prob, x, t_end, order, tol, o.max_width, 2,
           [&](const ode::enclosed_step<I>& s) {
-            for (auto& c : tracks)
+            for (auto& c : tracks) {
               c.step(s.t0, s.t1, step_start, s.end, find_contact(s.results, c.name), contact_at(s.end, c.name), sink);
+              proved_failure = proved_failure || c.any_fails;
+            }
             step_start = s.end;
           },
           [&](double f) {
+            if (proved_failure) throw ode::run_stopped("a contact fails");  // the piece's verdict is known
             const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
             if (o.max_seconds && elapsed >= *o.max_seconds) {
               out_of_time = true;
@@ -654,7 +657,9 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
             [&](const vector_t<I>& s0) { return contact_at(s0, c.name); });
         c.finish(x);
       }
-      piece p{a, b};
+      piece p;
+      p.lo = a;
+      p.hi = b;
       p.steps = st.steps;
       p.seconds = st.seconds;
       bool all_hold = st.complete;
