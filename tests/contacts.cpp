@@ -296,6 +296,34 @@ BOOST_AUTO_TEST_CASE(a_sphere_looping_in_a_bowl_loses_its_contact_when_the_close
     BOOST_TEST(to - from <= truth_t("1e-5"));
     BOOST_TEST(r.summary["complete"] == true);
     BOOST_TEST_MESSAGE("slip at theta = " << th << ", t = " << t_slip << ": located in [" << from << ", " << to << "]");
+    // Along the motion: N / M = v0^2 / r - 10/7 g - 17/7 g z / r (energy; cos theta = -z / r) at
+    // each step's end z (steps.csv) lies in the step's enclosure of N (contacts.csv), which holds
+    // N over the whole step, its end included.
+    const auto dir = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts" / "slip";
+    std::istringstream steps(slurp((dir / "steps.csv").string())), contacts(slurp((dir / "contacts.csv").string()));
+    auto fields = [](const std::string& line) {
+      std::vector<std::string> f;
+      std::stringstream ls(line);
+      for (std::string x; std::getline(ls, x, ',');) f.push_back(x);
+      return f;
+    };
+    std::string sl, cl;
+    std::getline(steps, sl);
+    std::getline(contacts, cl);
+    BOOST_TEST_REQUIRE(fields(sl).at(6) == "z_lo");
+    long rows = 0;
+    const truth_t M(2);
+    while (std::getline(steps, sl) && std::getline(contacts, cl)) {
+      const auto a = fields(sl), b = fields(cl);
+      const truth_t z_lo(a.at(6)), z_hi(a.at(7)), n_lo(b.at(3)), n_hi(b.at(4));
+      auto N = [&](const truth_t& z) -> truth_t { return M * (L.v0 * L.v0 / L.r - 10 * L.g / 7 - 17 * L.g * z / (7 * L.r)); };
+      // N decreases in z: the true N at the step's end lies in [N(z_hi), N(z_lo)]
+      BOOST_TEST(N(z_hi) <= n_hi, "step " << rows);
+      BOOST_TEST(N(z_lo) >= n_lo, "step " << rows);
+      BOOST_TEST(z_hi - z_lo < truth_t("1e-9"));
+      ++rows;
+    }
+    BOOST_TEST(rows > 20);
     // Before the slip the contact holds: a run that stops before it says so.
     const run_result early = enclose(text, "--t-end 0.1", "early");
     BOOST_TEST(early.status == 0, early.out);

@@ -586,6 +586,7 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
       I lo, hi;
       contact_verdict verdict = contact_verdict::undecided;
       std::optional<I> fail_from, fail_to;
+      std::optional<I> holds_until;  ///< every contact proved to hold up to there
       long steps = 0;
       double seconds = 0;
       std::string why;  // of an undecided piece
@@ -670,6 +671,7 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
           p.fail_to = *c.hi;
         }
         if (c.verdict() != contact_verdict::holds) all_hold = false;
+        if (!p.holds_until || lower(c.lo) < lower(*p.holds_until)) p.holds_until = c.lo;
       }
       if (p.verdict != contact_verdict::fails && all_hold) p.verdict = contact_verdict::holds;
       if (p.verdict == contact_verdict::undecided) {
@@ -687,13 +689,13 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
     std::sort(done.begin(), done.end(), [](const piece& x, const piece& y) { return lower(x.lo) < lower(y.lo); });
     // The pieces, and the ranges of each verdict (adjacent pieces merged).
     std::ostringstream csv, dat[3];
-    csv << "lo,hi,verdict,first_failure_from,first_failure_to,steps,seconds\n";
+    csv << "lo,hi,verdict,holds_until,first_failure_from,first_failure_to,steps,seconds\n";
     nlohmann::json ranges = {{"holds", nlohmann::json::array()}, {"fails", nlohmann::json::array()}, {"undecided", nlohmann::json::array()}};
     std::string last;
     for (const piece& p : done) {
       const std::string v = verdict_name(p.verdict);
       csv << lower_string(p.lo) << "," << upper_string(p.hi) << "," << v << ","
-          << (p.fail_from ? lower_string(*p.fail_from) : "") << "," << (p.fail_to ? upper_string(*p.fail_to) : "") << ","
+          << (p.holds_until ? lower_string(*p.holds_until) : "") << "," << (p.fail_from ? lower_string(*p.fail_from) : "") << "," << (p.fail_to ? upper_string(*p.fail_to) : "") << ","
           << p.steps << "," << p.seconds << "\n";
       nlohmann::json& list = ranges[v];
       if (v == last && !list.empty()) list.back()[1] = upper_string(p.hi);
@@ -702,7 +704,9 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
       const int k = p.verdict == contact_verdict::holds ? 0 : p.verdict == contact_verdict::fails ? 1 : 2;
       const double x = (approx_double(p.lo) + approx_double(p.hi)) / 2, dx = (approx_double(p.hi) - approx_double(p.lo)) / 2;
       const double T = approx_double(t_end);
-      const double y0 = p.fail_from ? approx_double(*p.fail_from) : k == 0 ? T : 0, y1 = p.fail_to ? approx_double(*p.fail_to) : T;
+      const double y0 = p.fail_from ? approx_double(*p.fail_from)
+                        : k == 2 && p.holds_until ? approx_double(*p.holds_until) : 0,
+                   y1 = p.fail_to ? approx_double(*p.fail_to) : T;
       dat[k] << x << " " << (y0 + y1) / 2 << " " << x - dx << " " << x + dx << " " << y0 << " " << y1 << "\n";
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -733,11 +737,11 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
       const std::string f = "'" + datf.string() + "'";
       plot("set terminal png size 900,500 noenhanced\nset output '" + tmp.string() + "'\nset title '" + o.scene +
            ": can the contacts hold on [0, " + o.t_end + "]? (" + scalar_traits<I>::name + ")'\nset xlabel '" + o.vary_field +
-           "'\nset ylabel 'first failure within (t)'\nset yrange [0:" + std::to_string(approx_double(t_end) * 1.1) +
+           "'\nset ylabel 't'\nset yrange [0:" + std::to_string(approx_double(t_end) * 1.1) +
            "]\nset grid\nset key below\nset style fill solid 0.5\nplot " + f +
-           " index 0 using 1:2:3:4:5:6 with boxxyerror lc rgb 'forest-green' title 'holds up to T (proved)', " + f +
-           " index 1 using 1:2:3:4:5:6 with boxxyerror lc rgb 'red' title 'fails (proved): the first failure lies in the box', " + f +
-           " index 2 using 1:2:3:4:5:6 with boxxyerror lc rgb 'gray' title 'undecided at the resolution'\n");
+           " index 0 using 1:2:3:4:5:6 with boxxyerror lc rgb 'forest-green' title 'holds over [0, T] (proved)', " + f +
+           " index 1 using 1:2:3:4:5:6 with boxxyerror lc rgb 'red' title 'fails (proved): the first failure lies within the box', " + f +
+           " index 2 using 1:2:3:4:5:6 with boxxyerror lc rgb 'gray' title 'undecided at the resolution (holds below the box)'\n");
       std::filesystem::remove(datf);
       std::error_code ec;
       if (std::filesystem::exists(tmp)) {
