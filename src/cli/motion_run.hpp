@@ -315,17 +315,22 @@ bool plot_contacts(const std::filesystem::path& dir, const std::string& csv, con
     for (std::size_t at; (at = p.find("DAT")) != std::string::npos;) p.replace(at, 3, "'" + datf.string() + "'");
     return p;
   };
-  std::string marks;  // each failing contact's first failure: a line at its time, labelled
+  // each failing contact's first failure: a line at its time, labelled at the top of the force
+  // panel and at the foot of the margin panel (where the margin, still positive, leaves room)
+  std::string marks, marks_low;
   for (const auto& c : tracks)
     if (c.verdict() == contact_verdict::fails && c.hi) {
       const double t = approx_double(*c.hi);
-      marks += "set arrow from " + std::to_string(t) + ", graph 0 to " + std::to_string(t) +
-               ", graph 1 nohead lc rgb 'red' dt 2\nset label '" + c.name + " fails by t = " + upper_string(*c.hi) +
-               "' at " + std::to_string(t) + ", graph 0.92 right offset -0.5,0 tc rgb 'red'\n";
+      const std::string line = "set arrow from " + std::to_string(t) + ", graph 0 to " + std::to_string(t) +
+                               ", graph 1 nohead lc rgb 'red' dt 2\n";
+      const std::string text = "set label '" + c.name + " fails by t = " + upper_string(*c.hi) + "' at " + std::to_string(t);
+      marks += line + text + ", graph 0.92 right offset -0.5,0 tc rgb 'red'\n";
+      marks_low += line + text + ", graph 0.08 right offset -0.5,0 tc rgb 'red'\n";
     }
   plot("set terminal png size 900,700 noenhanced\nset output '" + tmp.string() + "'\nset multiplot layout 2,1 title '" +
        title + ": can the contacts hold?'\nset grid\nset key below\nset xlabel 't'\nset ylabel 'N'\nset xzeroaxis lw 2\n" +
-       marks + "plot " + with_file(force_plot) + "\nset ylabel '" + (any_mu ? "mu - required mu" : "required mu") + "'\nplot " +
+       marks + "plot " + with_file(force_plot) + "\nunset arrow\nunset label\n" + marks_low + "set ylabel '" +
+       (any_mu ? "mu - required mu" : "required mu") + "'\nplot " +
        with_file(margin_plot) + "\nunset multiplot\n");
   std::filesystem::remove(datf);
   std::error_code ec;
