@@ -56,10 +56,13 @@ struct named_result {
   bool is_vector = false;
 };
 
-/// A contact's verdict (reactions/contact.hpp): "holds", "fails" or "undecided", and its mu
-/// as written (empty: none given).
+/// A contact's verdict (reactions/contact.hpp): "holds", "fails" or "undecided", its mu as
+/// written (empty: none given), and the friction coefficient it requires as the eval document
+/// prints a number (empty where the normal force is not proved positive).  Kept out of the
+/// results, whose list must not depend on the values (reference, tradeoff and the error
+/// amplification compare the scalars' results by position).
 struct contact_judgement {
-  std::string name, verdict, mu;
+  std::string name, verdict, mu, required_mu;
 };
 
 template <Scalar T>
@@ -233,7 +236,8 @@ std::string format_json(const scene_input& scene, const evaluation<T>& e) {
   std::string contacts;
   for (std::size_t i = 0; i < e.contacts.size(); ++i)
     contacts += std::string(i ? ",\n    \"" : ",\n  \"contacts\": {\n    \"") + e.contacts[i].name + "\": {\"verdict\": \"" +
-                e.contacts[i].verdict + "\"" + (e.contacts[i].mu.empty() ? "" : ", \"mu\": \"" + e.contacts[i].mu + "\"") + "}" +
+                e.contacts[i].verdict + "\"" + (e.contacts[i].mu.empty() ? "" : ", \"mu\": \"" + e.contacts[i].mu + "\"") +
+                (e.contacts[i].required_mu.empty() ? "" : ", \"required_mu\": " + e.contacts[i].required_mu) + "}" +
                 (i + 1 == e.contacts.size() ? "}" : "");
   return "{\"model\": \"" + scene.model + "\", " + format_scalar_fields<T>() +
          ",\n  \"results\": " + group(e.results) + ",\n  \"checks\": " + group(e.checks) +
@@ -258,7 +262,8 @@ std::string format_text(const scene_input& scene, const evaluation<T>& e) {
   if (!e.derived.empty()) lines(e.derived, "derived state:\n");
   if (!e.contacts.empty()) s += "contacts (" + std::string(scalar_traits<T>::is_rigorous ? "proved" : "not proved: point values") + "):\n";
   for (const auto& c : e.contacts)
-    s += "  " + c.name + ": " + c.verdict + (c.mu.empty() ? " (the normal force's sign only)" : " (mu = " + c.mu + ")") + "\n";
+    s += "  " + c.name + ": " + c.verdict + (c.mu.empty() ? " (the normal force's sign only)" : " (mu = " + c.mu + ")") +
+         (c.required_mu.empty() ? "" : "; required mu " + c.required_mu) + "\n";
   return s;
 }
 
