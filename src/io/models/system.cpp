@@ -289,6 +289,40 @@ void project_state(system_input& in, vector_t<mpfi>& q, vector_t<mpfi>& u) {
   check_projection_moves(in, q, u);
 }
 
+/// At 256 bits, at the state: the speeds move `body` in 6 independent ways (J J^T, Gaussian
+/// elimination with every pivot certainly positive), so that the constraints' virtual work fixes
+/// `what` (a wrench, a contact's force); and each named constraint's row is a virtual power of
+/// that body alone (A_c^T in the range of J^T).  input_error naming `where` otherwise.
+void check_body_fixes_force(const system_definition& d, const std::string& where, int body, const matrix_t<mpfi>& J,
+                            const matrix_t<mpfi>& A, const std::vector<int>& constraints, const std::string& what) {
+  const int n = d.vars.speeds;
+  const std::string& name = d.bodies[static_cast<std::size_t>(body)].name;
+  matrix_t<mpfi> N = wrench_normal_equations(J, vector_t<mpfi>(vector_t<mpfi>::Zero(n))).first;
+  for (int p = 0; p < 6; ++p) {
+    if (!certainly_positive(N(p, p)))
+      throw input_error(where + ".body: the speeds move " + name +
+                        " in fewer than 6 independent ways at the state, so the constraints' virtual work does "
+                        "not fix " + what + " (describe the body free: 6 speeds, the constraints as rows)");
+    for (int r = p + 1; r < 6; ++r) {
+      const mpfi f = N(r, p) / N(p, p);
+      for (int c = p; c < 6; ++c) N(r, c) -= f * N(p, c);
+    }
+  }
+  for (int c : constraints) {
+    const vector_t<mpfi> g = A.row(c).transpose();
+    const auto [Nc, rhs] = wrench_normal_equations(J, g);
+    const vector_t<mpfi> y = solve_spd(Nc, rhs);
+    for (int j = 0; j < n; ++j) {
+      mpfi e = -g(j);
+      for (int r = 0; r < 6; ++r) e += J(r, j) * y(r);
+      if (!possibly_zero(e))
+        throw input_error(where + ".constraints: " + d.constraints[static_cast<std::size_t>(c)].name +
+                          " is not a constraint on " + name + " alone (its virtual work involves " +
+                          d.names[static_cast<std::size_t>(d.vars.u(j))] + " beyond the body's motion)");
+    }
+  }
+}
+
 /// The linearization's reference motion: the state (the projected one, with "project") with
 /// what "about" sets.
 void set_reference_motion(linearize_input& li, const system_input& in) {
@@ -1014,31 +1048,7 @@ system_input system_model::read(object_reader& scene) {
         const system_wrench_definition& wd = d.wrenches[k];
         const std::string where = "wrenches." + wd.name;
         const matrix_t<mpfi> J = point_twist_jacobian(sys, sys.wrenches[k], w0.data());
-        matrix_t<mpfi> N = wrench_normal_equations(J, vector_t<mpfi>(vector_t<mpfi>::Zero(n))).first;
-        for (int p = 0; p < 6; ++p) {  // Gaussian elimination: every pivot certainly positive
-          if (!certainly_positive(N(p, p)))
-            throw input_error(where + ".body: the speeds move " + d.bodies[static_cast<std::size_t>(wd.body)].name +
-                              " in fewer than 6 independent ways at the state, so the constraints' virtual work does "
-                              "not fix a wrench (describe the body free: 6 speeds, the constraints as rows)");
-          for (int r = p + 1; r < 6; ++r) {
-            const mpfi f = N(r, p) / N(p, p);
-            for (int c = p; c < 6; ++c) N(r, c) -= f * N(p, c);
-          }
-        }
-        for (int c : wd.constraints) {
-          const vector_t<mpfi> g = A.row(c).transpose();
-          const auto [Nc, rhs] = wrench_normal_equations(J, g);
-          const vector_t<mpfi> y = solve_spd(Nc, rhs);
-          for (int j = 0; j < n; ++j) {
-            mpfi e = -g(j);
-            for (int r = 0; r < 6; ++r) e += J(r, j) * y(r);
-            if (!possibly_zero(e))
-              throw input_error(where + ".constraints: " + d.constraints[static_cast<std::size_t>(c)].name +
-                                " is not a constraint on " + d.bodies[static_cast<std::size_t>(wd.body)].name +
-                                " alone (its virtual work involves " + d.names[static_cast<std::size_t>(d.vars.u(j))] +
-                                " beyond the body's motion)");
-          }
-        }
+        check_body_fixes_force(d, where, wd.body, J, A, wd.constraints, "a wrench");
       }
     }
     // Each contact: a body that moves in 6 independent ways (its force from the virtual work),
@@ -1055,31 +1065,7 @@ system_input system_model::read(object_reader& scene) {
         const std::string where = "contacts." + kd.name;
         if (kd.body >= 0) {
           const matrix_t<mpfi> J = contact_twist_jacobian(sys, sys.contacts[k], w0.data());
-          matrix_t<mpfi> N = wrench_normal_equations(J, vector_t<mpfi>(vector_t<mpfi>::Zero(n))).first;
-          for (int p = 0; p < 6; ++p) {
-            if (!certainly_positive(N(p, p)))
-              throw input_error(where + ".body: the speeds move " + d.bodies[static_cast<std::size_t>(kd.body)].name +
-                                " in fewer than 6 independent ways at the state, so the constraints' virtual work does "
-                                "not fix the contact's force (describe the body free: 6 speeds, the constraints as rows)");
-            for (int r = p + 1; r < 6; ++r) {
-              const mpfi f = N(r, p) / N(p, p);
-              for (int c = p; c < 6; ++c) N(r, c) -= f * N(p, c);
-            }
-          }
-          for (int c : kd.constraints) {  // a constraint on that body alone
-            const vector_t<mpfi> g = A.row(c).transpose();
-            const auto [Nc, rhs] = wrench_normal_equations(J, g);
-            const vector_t<mpfi> y = solve_spd(Nc, rhs);
-            for (int j = 0; j < n; ++j) {
-              mpfi e = -g(j);
-              for (int r = 0; r < 6; ++r) e += J(r, j) * y(r);
-              if (!possibly_zero(e))
-                throw input_error(where + ".constraints: " + d.constraints[static_cast<std::size_t>(c)].name +
-                                  " is not a constraint on " + d.bodies[static_cast<std::size_t>(kd.body)].name +
-                                  " alone (its virtual work involves " + d.names[static_cast<std::size_t>(d.vars.u(j))] +
-                                  " beyond the body's motion)");
-            }
-          }
+          check_body_fixes_force(d, where, kd.body, J, A, kd.constraints, "the contact's force");
         }
         if (kd.normal < 0) {
           mpfi nn = 0;
