@@ -5,7 +5,7 @@
 # is capped at MAX seconds (--max-seconds): where the cap stops it, the row says how far it got,
 # and the time per simulated second measured up to there.
 #   bench/system_motion_cost.sh [BUILD_DIR] [MAX]
-# The profile of the bicycle's run (README, "A system of your own in motion"):
+# The profile of the bicycle's run (docs/motion.md, "A system of your own in motion"):
 #   perf record -g BUILD/appell enclose data/scenes/system_whipple_bicycle.json --t-end 0.2 --quiet --out OUT
 #   perf report --no-children
 set -euo pipefail

@@ -58,7 +58,7 @@ int main() {
   });
   std::ostringstream s;
   s << "part 2: " << boxes << " sub-boxes, enclosures intersect on all; widest enclosure of H on a sub-box "
-    << widest << " (naive interval evaluation over a box: wrapping, see README)";
+    << widest << " (naive interval evaluation over a box: wrapping, see docs/proofs.md)";
   v.note(s.str());
   return v.finish();
 }

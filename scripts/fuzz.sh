@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# One fuzzing campaign (README "Hardening"):  scripts/fuzz.sh HARNESS [SECONDS]
+# One fuzzing campaign (docs/testing.md):  scripts/fuzz.sh HARNESS [SECONDS]
 #   HARNESS: scene (scene files, then `appell eval` in every scalar) or
 #            expression (cone expressions, their derivatives and evaluation).
 # Builds the library and the harness with Clang, libFuzzer, ASan and UBSan in

@@ -272,7 +272,7 @@ BOOST_AUTO_TEST_CASE(linearize_the_bicycle_in_every_scalar) {
   expect_bad_input("linearize " + bike + " --scalar double --bits 64", "--bits");
 }
 
-// Bounded time and memory on any input (README "Bad input"): what exceeds a
+// Bounded time and memory on any input (docs/testing.md, "Bad input, limits and fuzzing"): what exceeds a
 // limit is bad input naming it; a result that overflows the scalar is exit 3.
 BOOST_AUTO_TEST_CASE(inputs_beyond_the_limits_exit_2_and_overflow_exits_3) {
   expect_bad_input("eval " + scene_file("large", std::string((1 << 20) + 1, ' ')), "larger than the limit of 1048576 bytes");

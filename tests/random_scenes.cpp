@@ -13,7 +13,7 @@
 // own error is ~1e-118 times the terms that cancel; the enclosures tested are
 // 1e-38 wide at best).  The relative widths are reported as quantiles.
 //
-// Count per model: test_random_scenes -- --n N (default 1000; the README's
+// Count per model: test_random_scenes -- --n N (default 1000; docs/testing.md's
 // figures come from N = 100000).
 #define BOOST_TEST_MODULE random_scenes
 #include <boost/test/unit_test.hpp>

@@ -1,4 +1,4 @@
-# The README's plot of the nonlinear Whipple bicycle's lean, enclosed over every step:
+# docs/motion.md's plot of the nonlinear Whipple bicycle's lean, enclosed over every step:
 #   build/appell enclose data/scenes/system_whipple_bicycle_weave_5.json --t-end 10 --out OUT5
 #   build/appell enclose data/scenes/system_whipple_bicycle_weave_3.json --t-end 10 --max-seconds 1500 --out OUT3
 #   gnuplot -e "five='OUT5/steps.csv'; three='OUT3/steps.csv'" data/motion/bicycle_weave.gp

@@ -1,4 +1,4 @@
-# The README's plot of the sleigh's knife reaction:
+# docs/motion.md's plot of the sleigh's knife reaction:
 #   build/appell enclose data/scenes/system_chaplygin_sleigh.json --t-end 10 --out OUT
 #   gnuplot -e "steps='OUT/steps.csv'" data/motion/chaplygin_sleigh_knife_reaction.gp
 # (columns 31 and 32 of steps.csv: knife_reaction_lo, knife_reaction_hi)

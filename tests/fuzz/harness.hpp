@@ -1,5 +1,5 @@
 // tests/fuzz/harness.hpp -- what the fuzz harnesses share: the contract every
-// input must meet (SCENES.md, README "Bad input").  An input may be refused
+// input must meet (SCENES.md, docs/testing.md).  An input may be refused
 // (input_error, parse_error: exit 2) or left uncertified (certification_error,
 // domain_error: exit 3); anything else that escapes -- another exception, a
 // crash, a sanitizer report, a hang -- is a finding, reported by abort().

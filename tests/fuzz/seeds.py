@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes the hand-made seeds of the fuzz corpus (tests/fuzz/corpus/*/seed-*):
-the shipped scenes and the bad inputs the README's table lists.  The fuzzer's
+the shipped scenes and the bad inputs docs/testing.md's table lists.  The fuzzer's
 own finds are added next to them by scripts/fuzz.sh (merged, minimized).
 Run from the repository root: python3 tests/fuzz/seeds.py"""
 import glob, json, os

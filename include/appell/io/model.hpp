@@ -27,7 +27,7 @@ namespace appell {
 /// the extern template in each model's header then keeps every other unit from instantiating
 /// them (GCC instantiates the inline members of an extern template to inline them, and with
 /// them the model in all seven scalars: heavy_top.cpp, a model's reader, took 54 s to compile, 1.3 s without;
-/// README "Build time").
+/// docs/architecture.md, "Build time").
 template <class Model, Scalar T>
 struct model_functions {
   static prepared_scene<T> prepare(const model_input& in);

@@ -653,4 +653,19 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
   return st;
 }
 
+// ---------------------------------------------------------------------------
+// Compiled once (see the end of taylor.hpp): the slopes and enclose of the built-in models'
+// problems, defined by the library in the interval scalars.
+#define APPELL_ODE_ENCLOSE_INSTANCE(EXTERN, P, I)                                                        \
+  EXTERN template void taylor_series_slopes<P, I>(                                        \
+      const P&, const vector_t<I>&, const vector_t<I>&, int,                         \
+      std::vector<matrix_t<I>>&, bool, series<I>*);                            \
+  EXTERN template enclose_stats enclose<P, I>(                             \
+      const P&, const vector_t<I>&, const I&, int, double, double, int,                        \
+      const std::function<void(const enclosed_step<I>&)>&, const std::function<void(double)>&);
+#define APPELL_ODE_EXTERN_ENCLOSE(P, I) APPELL_ODE_ENCLOSE_INSTANCE(extern, P, I)
+#define APPELL_ODE_DEFINE_ENCLOSE(P, I) APPELL_ODE_ENCLOSE_INSTANCE(, P, I)
+#define APPELL_ODE_DETAIL_EXTERN_ENCLOSE(ctx, I, name) APPELL_ODE_BUILTIN_PROBLEMS(APPELL_ODE_EXTERN_ENCLOSE, I)
+APPELL_STANDARD_SCALARS(APPELL_ODE_DETAIL_EXTERN_ENCLOSE, )
+#undef APPELL_ODE_DETAIL_EXTERN_ENCLOSE
 }  // namespace appell::ode

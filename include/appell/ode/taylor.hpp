@@ -29,6 +29,7 @@
 #include "appell/dynamics/slope.hpp"
 #include "appell/ode/jet.hpp"
 #include "appell/ode/problems.hpp"
+#include "appell/scalar/standard_scalars.hpp"
 
 namespace appell::ode {
 
@@ -179,7 +180,7 @@ double step_from_coefficients(const series<S>& c, double tol) {
   // Component by component: each with the tolerance tol max(1, |x_i|).  One scale for the
   // whole state (its largest component) let an angle that grows without bound (a top's spin
   // angle, 40 t) loosen the tolerance of every other component as t grows: the heavy top's
-  // long-horizon error then grew as t^3 (appell horizon, README).
+  // long-horizon error then grew as t^3 (appell horizon, docs/motion.md).
   const int p = static_cast<int>(c.size()) - 1;
   double h = std::numeric_limits<double>::infinity();
   for (Eigen::Index i = 0; i < c[0].size(); ++i) {
@@ -251,7 +252,7 @@ simulate_stats simulate(const P& prob, const vector_t<T>& x0, const T& t_end, co
   vector_t<T> x = x0, comp = vector_t<T>::Zero(n);
   // The time with Kahan's compensation too: the elapsed time is t - tc.  Without it each step's
   // t + h rounds, and over a long run the recorded time drifts from the time integrated (the
-  // error of a double run then jumped at every power of two of t: appell horizon, README).
+  // error of a double run then jumped at every power of two of t: appell horizon, docs/motion.md).
   T t = T(0), tc = T(0);
   long next_index = 1;
   auto record = [&](const T& time) {
@@ -318,4 +319,34 @@ simulate_stats simulate(const P& prob, const vector_t<T>& x0, const T& t_end, co
   return st;
 }
 
+// ---------------------------------------------------------------------------
+// Compiled once.  The integrators of the models that move (io/models/*_motion.hpp) are
+// instantiated in the library, in one unit per standard scalar (CMakeLists.txt: ode_builtin_*,
+// ode_system_*), and declared here, so that the commands' units, the tests and the benchmarks
+// link them instead of compiling them again (docs/architecture.md, "Build time").  The declarations cover every
+// standard scalar; the library defines taylor_series in all, simulate in the point scalars, and
+// the slopes and enclose (enclose.hpp) in the interval scalars: a use of the other kind's would
+// not link (it does not compile either).
+
+/// The problems of the built-in models that move, in scalar T: X(problem, T) for each.
+#define APPELL_ODE_BUILTIN_PROBLEMS(X, T)                                                     \
+  X(::appell::ode::euler_body_problem<T>, T) X(::appell::ode::heavy_top_resal_problem<T>, T) \
+  X(::appell::ode::rolling_sphere_problem<T>, T) X(::appell::ode::top_on_cone_problem<T>, T)
+/// taylor_series and simulate of problem P in T; EXTERN is `extern` (declared) or empty (defined).
+/// Expanded inside namespace appell::ode (an explicit instantiation names its template unqualified there).
+#define APPELL_ODE_SERIES_INSTANCE(EXTERN, P, T)                                                     \
+  EXTERN template series<T> taylor_series<P, T>(                       \
+      const P&, const vector_t<T>&, int, bool, ::appell::detail::jet_memo<T>*);
+#define APPELL_ODE_SIMULATE_INSTANCE(EXTERN, P, T)                                                   \
+  EXTERN template simulate_stats simulate<P, T>(                       \
+      const P&, const vector_t<T>&, const T&, const T&, int, double,                       \
+      const std::function<void(const sample<T>&)>&, const std::function<void(double)>&);
+#define APPELL_ODE_EXTERN_SERIES(P, T) APPELL_ODE_SERIES_INSTANCE(extern, P, T)
+#define APPELL_ODE_EXTERN_SIMULATE(P, T) APPELL_ODE_SIMULATE_INSTANCE(extern, P, T)
+#define APPELL_ODE_DEFINE_SERIES(P, T) APPELL_ODE_SERIES_INSTANCE(, P, T)
+#define APPELL_ODE_DEFINE_SIMULATE(P, T) APPELL_ODE_SIMULATE_INSTANCE(, P, T)
+#define APPELL_ODE_DETAIL_EXTERN_TAYLOR(ctx, T, name) \
+  APPELL_ODE_BUILTIN_PROBLEMS(APPELL_ODE_EXTERN_SERIES, T) APPELL_ODE_BUILTIN_PROBLEMS(APPELL_ODE_EXTERN_SIMULATE, T)
+APPELL_STANDARD_SCALARS(APPELL_ODE_DETAIL_EXTERN_TAYLOR, )
+#undef APPELL_ODE_DETAIL_EXTERN_TAYLOR
 }  // namespace appell::ode

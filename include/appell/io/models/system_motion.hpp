@@ -35,6 +35,7 @@
 
 #include "appell/io/model_motion.hpp"
 #include "appell/io/models/system.hpp"
+#include "appell/ode/enclose.hpp"
 #include "appell/ode/problems.hpp"
 
 namespace appell {
@@ -320,5 +321,24 @@ struct model_motion<system_model> {
     return state_fields(in, free, depends_on_time(d));
   }
 };
+
+/// The motion in the capacities enclose carries it in (cli: 6 or 12 components).
+template <Scalar T>
+using system_problem_6 = system_problem<T, 6>;
+template <Scalar T>
+using system_problem_12 = system_problem<T, 12>;
+
+// Compiled once (see the end of ode/taylor.hpp): the system's integrators, defined by the
+// library (ode_system_* units): the series in every scalar, simulate of the run-time sized
+// problem in the point scalars, the slopes and enclose of the padded ones in the interval scalars.
+#define APPELL_SYSTEM_POINT_PROBLEMS(X, T) X(::appell::system_problem<T>, T)
+#define APPELL_SYSTEM_INTERVAL_PROBLEMS(X, T) X(::appell::system_problem_6<T>, T) X(::appell::system_problem_12<T>, T)
+#define APPELL_DETAIL_EXTERN_SYSTEM_MOTION(ctx, T, name)                                                           \
+  APPELL_SYSTEM_POINT_PROBLEMS(APPELL_ODE_EXTERN_SERIES, T) APPELL_SYSTEM_POINT_PROBLEMS(APPELL_ODE_EXTERN_SIMULATE, T) \
+  APPELL_SYSTEM_INTERVAL_PROBLEMS(APPELL_ODE_EXTERN_SERIES, T) APPELL_SYSTEM_INTERVAL_PROBLEMS(APPELL_ODE_EXTERN_ENCLOSE, T)
+namespace ode {
+APPELL_STANDARD_SCALARS(APPELL_DETAIL_EXTERN_SYSTEM_MOTION, )
+}  // namespace ode
+#undef APPELL_DETAIL_EXTERN_SYSTEM_MOTION
 
 }  // namespace appell
