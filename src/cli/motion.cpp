@@ -38,6 +38,15 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
       return true;
     };
     std::string v;
+    // The flag's value as a positive decimal, or why not.
+    auto positive = [&](std::optional<double>& into) -> std::string {
+      try {
+        into = positive_decimal(a, v);
+      } catch (const input_error& e) {
+        return e.what();
+      }
+      return "";
+    };
     if (a == "--t-end" || a == "--every" || a == "--out" || a == "--scalar" || a == "--bits" || a == "--order" ||
         a == "--tol" || a == "--max-width" || a == "--max-seconds" || a == "--locate" || a == "--vary" ||
         a == "--resolution") {
@@ -58,11 +67,7 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
           return "--order: expected an integer from 2 to 60, got '" + v + "'";
         }
       } else if (a == "--tol") {
-        try {
-          o.tol = positive_decimal("--tol", v);
-        } catch (const input_error& e) {
-          return e.what();
-        }
+        if (std::string why = positive(o.tol); !why.empty()) return why;
         // A relative tolerance of 1 or more lets a step's error be as large as the state itself.
         if (*o.tol >= 1) return "--tol: expected a positive decimal below 1 (a relative error per step), got '" + v + "'";
       } else if (a == "--vary") {
@@ -82,29 +87,15 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
         if (decimal_sign_of_sum({{1, o.vary_hi}, {-1, o.vary_lo}}) <= 0)
           return "--vary: the range's lower bound must be below its upper bound, got '" + v + "'";
       } else if (a == "--resolution") {
-        try {
-          o.resolution = positive_decimal("--resolution", v);
-        } catch (const input_error& e) {
-          return e.what();
-        }
+        if (std::string why = positive(o.resolution); !why.empty()) return why;
       } else if (a == "--locate") {
-        try {
-          o.locate = positive_decimal("--locate", v);
-        } catch (const input_error& e) {
-          return e.what();
-        }
+        if (std::string why = positive(o.locate); !why.empty()) return why;
       } else if (a == "--max-seconds") {
-        try {
-          o.max_seconds = positive_decimal("--max-seconds", v);
-        } catch (const input_error& e) {
-          return e.what();
-        }
+        if (std::string why = positive(o.max_seconds); !why.empty()) return why;
       } else {
-        try {
-          o.max_width = positive_decimal("--max-width", v);
-        } catch (const input_error& e) {
-          return e.what();
-        }
+        std::optional<double> width;
+        if (std::string why = positive(width); !why.empty()) return why;
+        o.max_width = *width;
       }
     } else if (a == "--until-contact-fails") {
       o.until_contact_fails = true;
