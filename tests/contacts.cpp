@@ -25,6 +25,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <array>
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/multiprecision/mpfr.hpp>
 #include <filesystem>
@@ -87,26 +89,26 @@ bool agrees(const T& x, const truth_t& v, const truth_t& scale) {
 }
 
 template <class T>
-void sphere_on_plane_in(const scene_input& scene, const std::string& mu_text) {
+void sphere_on_plane_in(const scene_input& scene, const std::string& mu_text, const std::string& contact = "table") {
   const evaluation<T> e = evaluate<T>(scene);
   // F_h = (M g_x + F_x, M g_y + F_y) = (1.5 * 1.2, 0.5); N = M * 9.7
   const truth_t M("1.5"), N = M * truth_t("9.7"), fx = M * truth_t("1.2"), fy("0.5");
   const truth_t ft = 2 * sqrt(fx * fx + fy * fy) / 7;
-  BOOST_TEST(agrees(result(e, "table_normal_force"), N, N), scalar_traits<T>::name << ": N " << to_string(result(e, "table_normal_force")));
-  BOOST_TEST(agrees(result(e, "table_friction_force", 0), truth_t(-2 * fx / 7), N));
-  BOOST_TEST(agrees(result(e, "table_friction_force", 1), truth_t(-2 * fy / 7), N));
-  BOOST_TEST(agrees(result(e, "table_friction_force", 2), truth_t(0), N));
-  BOOST_TEST(agrees(result(e, "table_tangential_force"), ft, N));
+  BOOST_TEST(agrees(result(e, contact + "_normal_force"), N, N), scalar_traits<T>::name << ": N " << to_string(result(e, contact + "_normal_force")));
+  BOOST_TEST(agrees(result(e, contact + "_friction_force", 0), truth_t(-2 * fx / 7), N));
+  BOOST_TEST(agrees(result(e, contact + "_friction_force", 1), truth_t(-2 * fy / 7), N));
+  BOOST_TEST(agrees(result(e, contact + "_friction_force", 2), truth_t(0), N));
+  BOOST_TEST(agrees(result(e, contact + "_tangential_force"), ft, N));
   const evaluation_scope<T> scope;  // the quotient in T's arithmetic (upward rounding for interval)
-  const T required = result(e, "table_tangential_force") / result(e, "table_normal_force");
+  const T required = result(e, contact + "_tangential_force") / result(e, contact + "_normal_force");
   BOOST_TEST(agrees(required, truth_t(ft / N), truth_t(1)), scalar_traits<T>::name << ": required mu " << to_string(required));
   // the document's contacts group prints it; the results' list does not depend on the values
   BOOST_TEST(!e.contacts.at(0).required_mu.empty());
-  BOOST_TEST((std::find_if(e.results.begin(), e.results.end(), [](const auto& r) { return r.name == "table_required_mu"; }) ==
+  BOOST_TEST((std::find_if(e.results.begin(), e.results.end(), [&](const auto& r) { return r.name == contact + "_required_mu"; }) ==
               e.results.end()));
   // required mu = 0.0366846...: mu 0.05 holds, 0.03 fails
   const std::string expected = mu_text == "0.05" ? "holds" : "fails";
-  BOOST_TEST(verdict(e, "table") == expected, scalar_traits<T>::name << " mu " << mu_text << ": " << verdict(e, "table"));
+  BOOST_TEST(verdict(e, contact) == expected, scalar_traits<T>::name << " mu " << mu_text << ": " << verdict(e, contact));
 }
 
 }  // namespace
@@ -139,6 +141,120 @@ BOOST_AUTO_TEST_CASE(a_sphere_on_a_plane_needs_two_sevenths_of_the_horizontal_fo
   const evaluation<interval> flipped = evaluate<interval>(scene_of(replaced(no_mu, "\"normal\": \"contact\"", "\"normal\": \"-contact\"")));
   BOOST_TEST(verdict(flipped, "table") == "fails");
   BOOST_TEST(holds(result(flipped, "table_normal_force"), truth_t("-14.55")));
+}
+
+BOOST_AUTO_TEST_CASE(the_built_in_sphere_on_a_plane_needs_two_sevenths_of_the_horizontal_force) {
+  // The same sphere, table and forces as the system file above, as the built-in rolling_sphere
+  // with its "contact" (named "surface"): the same truth, the same verdicts.
+  std::mt19937_64 rng(32);
+  std::uniform_int_distribution<int> digit(-999, 999);
+  auto d = [&] { return std::to_string(digit(rng)) + "e-2"; };
+  for (int k = 0; k < 40; ++k) {
+    const std::string mu = k % 2 ? "0.03" : "0.05";
+    const std::string json = "{\"model\": \"rolling_sphere\", \"sphere\": {\"mass\": \"1.5\", \"radius\": \"0.2\"}, "
+                             "\"surface\": {\"type\": \"plane\"}, \"gravity\": [\"1.2\", \"0\", \"-9.7\"], "
+                             "\"force\": [\"0\", \"0.5\", \"0\"], \"torque\": [\"0\", \"0\", \"0.01\"], "
+                             "\"contact\": {\"mu\": \"" + mu + "\"}, \"state\": {\"center\": [\"" + d() + "\", \"" + d() +
+                             "\", \"0.2\"], \"omega\": [\"" + d() + "\", \"" + d() + "\", \"0\"]}}";
+    const scene_input scene = scene_of(json);
+    auto each = [&]<class T>(std::type_identity<T>) { sphere_on_plane_in<T>(scene, mu, "surface"); };
+    every_scalar(each);
+  }
+  // Without mu only the sign; friction_ratio leaves the results when a contact is judged (its
+  // contacts group gives the required mu), and stays without one.
+  const std::string base = "{\"model\": \"rolling_sphere\", \"sphere\": {\"mass\": \"1.5\", \"radius\": \"0.2\"}, "
+                           "\"surface\": {\"type\": \"plane\"}, \"gravity\": [\"0\", \"0\", \"-9.7\"], ";
+  const std::string state = "\"state\": {\"center\": [\"0\", \"0\", \"0.2\"], \"omega\": [\"1\", \"2\", \"0\"]}}";
+  const evaluation<interval> sign_only = evaluate<interval>(scene_of(base + "\"contact\": {}, " + state));
+  BOOST_TEST(verdict(sign_only, "surface") == "holds");
+  BOOST_TEST(sign_only.contacts.at(0).mu.empty());
+  auto has = [](const evaluation<interval>& e, const std::string& name) {
+    return std::any_of(e.results.begin(), e.results.end(), [&](const auto& r) { return r.name == name; });
+  };
+  BOOST_TEST(!has(sign_only, "friction_ratio"));
+  const evaluation<interval> plain = evaluate<interval>(scene_of(base + state));
+  BOOST_TEST(plain.contacts.empty());
+  BOOST_TEST(has(plain, "friction_ratio"));
+  BOOST_TEST(!has(plain, "surface_normal_force"));
+  // Pulled off the table by a force larger than its weight: the contact fails (N < 0).
+  const evaluation<interval> pulled = evaluate<interval>(
+      scene_of(base + "\"force\": [\"0\", \"0\", \"20\"], \"contact\": {\"mu\": \"1\"}, " + state));
+  BOOST_TEST(verdict(pulled, "surface") == "fails");
+  BOOST_TEST(holds(result(pulled, "surface_normal_force"), truth_t("-5.45")));  // 1.5 * 9.7 - 20
+  // Bad contacts: named fields.
+  for (const auto& [bad, field] : std::vector<std::pair<std::string, std::string>>{
+           {"\"contact\": {\"mu\": \"-0.1\"}, ", "contact.mu"},
+           {"\"contact\": {\"mu\": \"0.5\", \"side\": \"up\"}, ", "contact.side"},
+           {"\"contact\": \"yes\", ", "contact"}}) {
+    std::string why;
+    try {
+      (void)evaluate<interval>(scene_of(base + bad + state));
+    } catch (const input_error& e) {
+      why = e.what();
+    }
+    BOOST_TEST(why.find(field) != std::string::npos, bad << ": " << why);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_built_in_sphere_in_a_bowl_is_pushed_by_the_closed_form_of_its_state) {
+  // rolling_sphere inside the bowl (b = 1, a = 0.1, M = 2, g = 9.81, no pivoting) at random
+  // states on its surface of centres r = 0.9: the centre 0.9 u for u a rational point of the unit
+  // sphere with a decimal expansion (signs and order of its coordinates drawn at random), omega =
+  // w x c for a random decimal w (exact: then omega . n = 0). Truth as above, N = M (|v|^2 + g . c)
+  // / r with v = omega x (a n), n = -c / r.
+  // the unit points in ten-thousandths: the centre c = 0.9 u in 1e-5, omega = w x c in 1e-8
+  const std::vector<std::array<long, 3>> units = {{0, 0, 10000},       {6000, 8000, 0},    {2800, 9600, 0}, {9360, 3520, 0},
+                                                  {4800, 6000, 6400}, {3600, 4800, 8000}, {5376, 8432, 0}};
+  std::mt19937_64 rng(1908);
+  std::uniform_int_distribution<long> wd(-20000, 20000);  // w in thousandths
+  long contained = 0, checked = 0, signs = 0;
+  const truth_t M(2), a("0.1"), g("9.81"), r("0.9");
+  for (int k = 0; k < 200; ++k) {
+    std::array<long, 3> u = units[rng() % units.size()];
+    std::shuffle(u.begin(), u.end(), rng);
+    std::array<long, 3> ci{}, w{}, oi{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      ci[i] = 9 * u[i] * (rng() % 2 ? -1 : 1);
+      w[i] = wd(rng);
+    }
+    oi = {w[1] * ci[2] - w[2] * ci[1], w[2] * ci[0] - w[0] * ci[2], w[0] * ci[1] - w[1] * ci[0]};
+    std::array<std::string, 3> cs, oms;
+    std::array<truth_t, 3> c;
+    truth_t om2 = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      cs[i] = std::to_string(ci[i]) + "e-5";
+      oms[i] = std::to_string(oi[i]) + "e-8";
+      c[i] = truth_t(cs[i]);
+      om2 += truth_t(oms[i]) * truth_t(oms[i]);
+    }
+    const truth_t N = M * (a * a * om2 - g * c[2]) / r;  // |v| = a |omega| (omega orthogonal to n)
+    const std::string json = "{\"model\": \"rolling_sphere\", \"sphere\": {\"mass\": \"2\", \"radius\": \"0.1\"}, "
+                             "\"surface\": {\"type\": \"sphere\", \"radius\": \"1\", \"side\": \"inside\"}, "
+                             "\"gravity\": [\"0\", \"0\", \"-9.81\"], \"contact\": {}, \"state\": {\"center\": [\"" +
+                             cs[0] + "\", \"" + cs[1] + "\", \"" + cs[2] + "\"], \"omega\": [\"" + oms[0] + "\", \"" + oms[1] +
+                             "\", \"" + oms[2] + "\"]}}";
+    const scene_input scene = scene_of(json);
+    const evaluation<interval> ei = evaluate<interval>(scene);
+    {
+      const mp_precision_scope bits(128);
+      const evaluation<mpfi> em = evaluate<mpfi>(scene);
+      contained += holds(result(em, "surface_normal_force"), N);
+      ++checked;
+      BOOST_TEST(holds(result(em, "surface_normal_force"), N), "state " << k << ": mpfi N " << to_string(result(em, "surface_normal_force")) << " vs " << N);
+      BOOST_TEST(verdict(em, "surface") == (N > 0 ? "holds" : "fails"), "state " << k << ": N " << N);
+    }
+    contained += holds(result(ei, "surface_normal_force"), N);
+    ++checked;
+    BOOST_TEST(holds(result(ei, "surface_normal_force"), N), "state " << k << ": interval N " << to_string(result(ei, "surface_normal_force")) << " vs " << N << "; " << json);
+    signs += N > 0 ? 1 : 0;
+    const evaluation<double> ed = evaluate<double>(scene);
+    BOOST_TEST(agrees(result(ed, "surface_normal_force"), N, truth_t(abs(N) + M * g)));
+    BOOST_TEST(!holds(result(ei, "surface_normal_force"), truth_t(M * (-g * c[2]) / r)));  // a wrong truth is refused
+  }
+  BOOST_TEST(contained == checked);
+  BOOST_TEST(signs > 20);
+  BOOST_TEST(signs < 180);
+  BOOST_TEST_MESSAGE("built-in sphere in a bowl: N enclosed at " << checked << " (state, scalar) pairs, " << contained << " contain the closed form");
 }
 
 BOOST_AUTO_TEST_CASE(a_sphere_in_a_bowl_is_pushed_by_the_closed_form_of_its_state) {
@@ -338,22 +454,34 @@ BOOST_AUTO_TEST_CASE(a_sphere_looping_in_a_bowl_loses_its_contact_when_the_close
   }
 }
 
-BOOST_AUTO_TEST_CASE(validity_splits_the_initial_spin_at_the_closed_form_s_boundary) {
-  // The sphere oscillating in the bowl from the bottom with spin wy (v0 = a wy): the friction it
-  // needs grows with the angle up to the turning angle theta_max, where v = 0 and it is
-  // 2/7 tan theta_max (N = M g cos theta_max there); cos theta_max = 1 - 7 v0^2 / (10 g r).  So
-  // with mu the contact holds for all time iff 2/7 tan theta_max < mu: wy < wy* with
-  //   cos theta* = 1 / sqrt(1 + (7 mu / 2)^2),  v0*^2 = 10/7 g r (1 - cos theta*).
-  // T = 0.8 passes the turning point (0.6 to 0.65 s) for every spin of the range.
+namespace {
+
+/// The spin below which the oscillating sphere's contact holds for all time (the validity tests).
+// The sphere oscillating in the bowl from the bottom with spin wy (v0 = a wy): the friction it
+// needs grows with the angle up to the turning angle theta_max, where v = 0 and it is
+// 2/7 tan theta_max (N = M g cos theta_max there); cos theta_max = 1 - 7 v0^2 / (10 g r).  So
+// with mu the contact holds for all time iff 2/7 tan theta_max < mu: wy < wy* with
+//   cos theta* = 1 / sqrt(1 + (7 mu / 2)^2),  v0*^2 = 10/7 g r (1 - cos theta*).
+// T = 0.8 passes the turning point (0.6 to 0.65 s) for every spin of [23, 27.5].
+truth_t critical_spin() {
   const truth_t g("9.81"), r("0.9"), a("0.1"), mu("0.5");
-  const truth_t c = 1 / sqrt(1 + (7 * mu / 2) * (7 * mu / 2)), wy_star = sqrt(10 * g * r * (1 - c) / 7) / a;
-  const auto dir = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts" / "validity";
+  const truth_t c = 1 / sqrt(1 + (7 * mu / 2) * (7 * mu / 2));
+  return sqrt(10 * g * r * (1 - c) / 7) / a;
+}
+
+/// Runs `appell validity SCENE ARGS` into DIR; its exit status.
+int validity_run(const std::string& scene, const std::string& args, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
-  const std::string cmd = std::string(APPELL_BINARY) + " validity " APPELL_SOURCE_DIR
-                          "/data/scenes/system_sphere_in_bowl_contact.json --vary wy=23:27.5 --t-end 0.8 --resolution 0.25 "
-                          "--quiet --out " + dir.string() + " >" + (dir / "stdout").string() + " 2>&1";
+  const std::string cmd = std::string(APPELL_BINARY) + " validity " + scene + " " + args + " --quiet --out " + dir.string() +
+                          " >" + (dir / "stdout").string() + " 2>&1";
   const int raw = std::system(cmd.c_str());
-  BOOST_TEST_REQUIRE(WEXITSTATUS(raw) == 0, slurp((dir / "stdout").string()));
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+/// validity.csv over [23, 27.5] at resolution 0.25 against wy*: the pieces cover the range, every
+/// one that holds lies below wy*, every one that fails above it, the undecided ones are narrow.
+void check_validity_against_the_closed_form(const std::filesystem::path& dir) {
+  const truth_t wy_star = critical_spin();
   const nlohmann::json s = nlohmann::json::parse(slurp((dir / "summary.json").string()));
   int holds_pieces = 0, fails_pieces = 0;
   truth_t covered_to("23"), undecided_from("1e9"), undecided_to("-1e9");
@@ -386,10 +514,134 @@ BOOST_AUTO_TEST_CASE(validity_splits_the_initial_spin_at_the_closed_form_s_bound
   BOOST_TEST(fails_pieces > 0);
   const truth_t holds_to(s["ranges"]["holds"].back()[1].get<std::string>()), fails_from(s["ranges"]["fails"].front()[0].get<std::string>());
   BOOST_TEST(holds_to < fails_from);
-  BOOST_TEST_MESSAGE("validity over wy in [23, 27.5]: holds up to " << holds_to << ", fails from " << fails_from << ", wy* = "
-                                                                    << wy_star << " (undecided in [" << undecided_from << ", "
-                                                                    << undecided_to << "]); " << s["pieces"] << " pieces in "
-                                                                    << s["seconds"] << " s");
+  BOOST_TEST_MESSAGE(dir.filename().string() << ": validity over [23, 27.5]: holds up to " << holds_to << ", fails from "
+                                             << fails_from << ", wy* = " << wy_star << " (undecided in [" << undecided_from
+                                             << ", " << undecided_to << "]); " << s["pieces"] << " pieces in " << s["seconds"]
+                                             << " s on " << s["threads"] << " thread(s), " << s["seconds_per_piece"]
+                                             << " s per piece");
+}
+
+/// validity.csv without its last column (each piece's seconds).
+std::string pieces_without_seconds(const std::filesystem::path& dir) {
+  std::istringstream csv(slurp((dir / "validity.csv").string()));
+  std::string out;
+  for (std::string line; std::getline(csv, line);) out += line.substr(0, line.rfind(',')) + "\n";
+  return out;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(validity_splits_the_initial_spin_at_the_closed_form_s_boundary) {
+  const auto dir = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts" / "validity";
+  const int status = validity_run(APPELL_SOURCE_DIR "/data/scenes/system_sphere_in_bowl_contact.json",
+                                  "--vary wy=23:27.5 --t-end 0.8 --resolution 0.25", dir);
+  BOOST_TEST_REQUIRE(status == 0, slurp((dir / "stdout").string()));
+  check_validity_against_the_closed_form(dir);
+}
+
+BOOST_AUTO_TEST_CASE(validity_of_the_built_in_sphere_gives_the_same_pieces_on_one_thread_and_on_three) {
+  // The built-in rolling_sphere looping in the bowl (rolling_sphere_bowl_contact.json, v0 = 4.5)
+  // over [0, T], T = 0.3, for mu in [0, 0.4]: the friction it needs up to T is at most mu* = the
+  // largest friction / N over [0, theta(T)] (theta(T) from the quadrature t(theta) = T); the
+  // contact holds on [0, T] iff mu > mu*. The pieces, their verdicts and bounds byte for byte the
+  // same whatever the threads.
+  const loop_truth L;
+  const truth_t T("0.3");
+  truth_t lo = 0, hi = L.lift_off();
+  for (int i = 0; i < 120; ++i) {  // theta(T): t(theta) increases
+    const truth_t m = (lo + hi) / 2;
+    (L.time_to(m) < T ? lo : hi) = m;
+  }
+  const truth_t theta_T = hi;
+  truth_t mu_star = 0;
+  for (int k = 0; k <= 1000; ++k) {
+    const truth_t th = theta_T * k / 1000;
+    mu_star = std::max(mu_star, truth_t(L.friction_over_m(th) / L.n_over_m(th)));
+  }
+  // between grid points the ratio (increasing below pi/2, as here) is at most its value at theta(T)
+  BOOST_TEST_REQUIRE(theta_T < boost::math::constants::half_pi<truth_t>());
+  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_bowl_contact.json";
+  const std::string args = "--vary mu=0:0.4 --t-end 0.3 --resolution 0.01";
+  const auto base = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts";
+  for (const std::string jobs : {"1", "3"}) {
+    const auto dir = base / ("validity_" + jobs);
+    BOOST_TEST_REQUIRE(validity_run(scene, args + " --jobs " + jobs, dir) == 0, slurp((dir / "stdout").string()));
+    std::istringstream csv(slurp((dir / "validity.csv").string()));
+    std::string line;
+    std::getline(csv, line);
+    int holds_pieces = 0, fails_pieces = 0;
+    truth_t covered_to = 0;
+    while (std::getline(csv, line)) {
+      std::vector<std::string> f;
+      std::stringstream ls(line);
+      for (std::string x; std::getline(ls, x, ',');) f.push_back(x);
+      BOOST_TEST_REQUIRE(f.size() >= 3);
+      const truth_t plo(f[0]), phi(f[1]);
+      BOOST_TEST(plo <= covered_to, "a gap before " << plo);
+      covered_to = std::max(covered_to, phi);
+      if (f[2] == "holds") {
+        ++holds_pieces;
+        BOOST_TEST(plo > mu_star, "holds for mu in [" << plo << ", " << phi << "], mu* = " << mu_star);
+      } else if (f[2] == "fails") {
+        ++fails_pieces;
+        BOOST_TEST(phi < mu_star, "fails for mu in [" << plo << ", " << phi << "], mu* = " << mu_star);
+      } else {
+        BOOST_TEST(phi - plo <= truth_t("0.01") * (1 + truth_t("1e-9")));
+      }
+    }
+    BOOST_TEST(covered_to >= truth_t("0.4"));
+    BOOST_TEST(holds_pieces > 0);
+    BOOST_TEST(fails_pieces > 0);
+    const nlohmann::json s = nlohmann::json::parse(slurp((dir / "summary.json").string()));
+    BOOST_TEST(s["threads"] == std::stoi(jobs));
+    BOOST_TEST_MESSAGE("built-in validity over mu, " << jobs << " thread(s): " << s["ranges"] << ", mu* = " << mu_star << "; "
+                                                     << s["pieces"] << " pieces in " << s["seconds"] << " s");
+  }
+  BOOST_TEST(pieces_without_seconds(base / "validity_1") == pieces_without_seconds(base / "validity_3"));
+  // A range that would leave a constraint is refused: the centre (on the surface of centres) and
+  // omega's component along the normal (omega . n = 0; n is vertical at the bottom).
+  for (const std::string field : {"center_x", "center_z", "omega_z"}) {
+    const auto dir = base / ("refused_" + field);
+    BOOST_TEST(validity_run(scene, "--vary " + field + "=0:0.1 --t-end 0.1", dir) == 2, field);
+    BOOST_TEST(slurp((dir / "stdout").string()).find("--vary: " + field + " enters a constraint") != std::string::npos,
+               slurp((dir / "stdout").string()));
+  }
+  BOOST_TEST(validity_run(scene, args + " --jobs 0", base / "refused_jobs") == 2);
+  BOOST_TEST(validity_run(scene, args + " --jobs +2", base / "refused_jobs") == 2);
+}
+
+BOOST_AUTO_TEST_CASE(the_built_in_sphere_looping_in_a_bowl_loses_its_contact_when_the_closed_form_says) {
+  // rolling_sphere_bowl_contact.json is the loop above as the built-in model: the same truth.
+  const loop_truth L;
+  const std::string text = scene_text("rolling_sphere_bowl_contact.json");
+  {
+    const truth_t t_star = L.time_to(L.lift_off());
+    const run_result r = enclose(replaced(text, "{\"mu\": \"0.5\"}", "{}"), "--t-end 0.8 --locate 1e-6 --until-contact-fails",
+                                 "builtin_lift_off");
+    BOOST_TEST_REQUIRE(r.status == 0, r.out);
+    const nlohmann::json& c = r.summary["contacts"]["surface"];
+    BOOST_TEST_REQUIRE(c["verdict"] == "fails", r.out);
+    const truth_t from(c["first_failure"]["from"].get<std::string>()), to(c["first_failure"]["to"].get<std::string>());
+    BOOST_TEST(from <= t_star);
+    BOOST_TEST(t_star <= to);
+    BOOST_TEST(to - from <= truth_t("1e-6"), "located to " << (to - from));
+    BOOST_TEST_MESSAGE("built-in lift-off at t* = " << t_star << ": located in [" << from << ", " << to << "]");
+  }
+  {
+    const truth_t t_slip = L.time_to(L.slip(truth_t("0.5")));
+    const run_result r = enclose(text, "--t-end 0.5 --locate 1e-6", "builtin_slip");
+    BOOST_TEST_REQUIRE(r.status == 0, r.out);
+    const nlohmann::json& c = r.summary["contacts"]["surface"];
+    BOOST_TEST_REQUIRE(c["verdict"] == "fails", r.out);
+    const truth_t from(c["first_failure"]["from"].get<std::string>()), to(c["first_failure"]["to"].get<std::string>());
+    BOOST_TEST(from <= t_slip);
+    BOOST_TEST(t_slip <= to);
+    BOOST_TEST(to - from <= truth_t("1e-6"));
+    BOOST_TEST_MESSAGE("built-in slip at t = " << t_slip << ": located in [" << from << ", " << to << "]");
+    const run_result early = enclose(text, "--t-end 0.1", "builtin_early");
+    BOOST_TEST(early.status == 0, early.out);
+    BOOST_TEST(early.summary["contacts"]["surface"]["verdict"] == "holds", early.out);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(a_sphere_on_an_accelerating_belt_follows_at_two_sevenths) {

@@ -2,7 +2,10 @@
 
 #include "flags.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <thread>
 #include <iostream>
 
 #include "appell/scalar/decimal.hpp"
@@ -49,7 +52,7 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
     };
     if (a == "--t-end" || a == "--every" || a == "--out" || a == "--scalar" || a == "--bits" || a == "--order" ||
         a == "--tol" || a == "--max-width" || a == "--max-seconds" || a == "--locate" || a == "--vary" ||
-        a == "--resolution") {
+        a == "--resolution" || a == "--jobs") {
       if (!value(v)) return a + ": missing value";
       if (a == "--t-end") o.t_end = v;
       else if (a == "--every") o.every = v;
@@ -65,6 +68,15 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
           o.order = static_cast<int>(n);
         } catch (const std::exception&) {
           return "--order: expected an integer from 2 to 60, got '" + v + "'";
+        }
+      } else if (a == "--jobs") {
+        try {
+          std::size_t used = 0;
+          const long n = std::stol(v, &used);
+          if (used != v.size() || n < 1 || n > 1024 || !std::isdigit(static_cast<unsigned char>(v[0]))) return "--jobs: expected an integer from 1 to 1024, got '" + v + "'";
+          o.jobs = static_cast<int>(n);
+        } catch (const std::exception&) {
+          return "--jobs: expected an integer from 1 to 1024, got '" + v + "'";
         }
       } else if (a == "--tol") {
         if (std::string why = positive(o.tol); !why.empty()) return why;
@@ -129,6 +141,9 @@ int motion(const motion_options& given) {
       throw input_error(std::string(o.locate ? "--locate" : "--until-contact-fails") + ": applies to enclose, not validity");
     if (o.resolution && *o.resolution >= from_decimal<double>(o.vary_hi) - from_decimal<double>(o.vary_lo))
       throw input_error("--resolution: as wide as the range or wider: nothing would be split");
+    if (o.jobs == 0) o.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  } else if (o.jobs != 0) {
+    throw input_error("--jobs: applies to validity (its pieces run on that many threads)");
   } else if (!o.vary_field.empty() || o.resolution) {
     throw input_error(std::string(o.resolution ? "--resolution" : "--vary") + ": applies to validity");
   }

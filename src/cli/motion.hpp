@@ -30,6 +30,8 @@
 
 namespace appell::cli {
 
+struct piece_network;
+
 struct motion_options {
   std::string command;  ///< "simulate" or "enclose"
   std::string scene;
@@ -47,6 +49,10 @@ struct motion_options {
   /// pieces until each is proved to hold or to fail over [0, T], or is narrower than resolution.
   std::string vary_field, vary_lo, vary_hi;
   std::optional<double> resolution;
+  /// validity: the threads that run its pieces (--jobs; 0: one per core).
+  int jobs = 0;
+  /// validity under appell-mpi: the other ranks (pieces.hpp); null: this process alone.
+  const piece_network* pieces = nullptr;
 };
 
 /// What a run reports back to the command (the files are written by then).

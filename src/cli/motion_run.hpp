@@ -22,6 +22,7 @@
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/taylor.hpp"
 #include "contact_track.hpp"
+#include "pieces.hpp"
 
 namespace appell::cli {
 
@@ -558,8 +559,9 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
 /// Each piece of the range is enclosed whole (the field an interval: a state component of the
 /// motion, or every contact's mu), so a piece's verdict holds for every value in it: `holds`
 /// when every step proves every contact; `fails` when one contact's failure is proved (for every
-/// value, no later than the time given); otherwise the piece is split in two, down to the
-/// resolution (then `undecided`).
+/// value, no later than the time given); otherwise the piece is halved, down to the resolution
+/// (then `undecided`). The pieces run on the threads of --jobs and, under appell-mpi, on every
+/// rank (pieces.hpp): a piece is rebuilt from its path in the halving tree wherever it runs.
 template <Scalar I, class P>
 motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scene_input& scene, const motion_options& o) {
   if constexpr (!requires { prob.contacts(); }) {
@@ -578,33 +580,24 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
         for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
         throw input_error("--vary: '" + o.vary_field + "' is not a component of the motion's state (" + known + ") nor mu");
       }
-      if (prob.on_holonomic_constraint(index))
-        throw input_error("--vary: " + o.vary_field + " is held by a holonomic constraint (a range of it would leave the "
-                          "constraint); vary a free speed or a coordinate no holonomic constraint involves");
+      if (prob.constrains(index, x0))
+        throw input_error("--vary: " + o.vary_field + " enters a constraint at the state (a range of it would leave the "
+                          "constraint); vary a free speed or a coordinate no constraint involves");
     }
     const I t_end = from_decimal<I>(o.t_end);
     const int order = o.order.value_or(default_order<I>());
     const double tol = o.tol.value_or(default_tol<I>());
     const I lo0 = from_decimal<I>(o.vary_lo), hi0 = from_decimal<I>(o.vary_hi);
     const double total = span(lo0, hi0), resolution = o.resolution.value_or(total / 64);
-    struct piece {
-      I lo, hi;
-      contact_verdict verdict = contact_verdict::undecided;
-      std::optional<I> fail_from, fail_to;
-      std::optional<I> holds_until;  ///< every contact proved to hold up to there
-      long steps = 0;
-      double seconds = 0;
-      std::string why;  // of an undecided piece
-    };
-    std::vector<piece> done;
-    std::vector<std::pair<I, I>> todo{{lo0, hi0}};
+    const double T = approx_double(t_end);
     const auto started = std::chrono::steady_clock::now();
-    double decided = 0;
-    std::string stopped;
-    progress_meter meter("validity", 1.0, o.quiet);
-    while (!todo.empty() && stopped.empty()) {
-      const auto [a, b] = todo.back();
-      todo.pop_back();
+    // One piece, from its path: run on any thread or rank (everything shared is read only).
+    const piece_runner run_piece = [&](const std::string& path) {
+      I a = lo0, b = hi0;
+      for (const char c : path) {  // the same halving wherever it runs: the same interval
+        const I m = (a + b) / I(2);
+        (c == '0' ? b : a) = m;
+      }
       const I box = scalar_traits<I>::hull(a, b);
       vector_t<I> x = x0;
       if (!vary_mu) x(index) = box;
@@ -638,19 +631,23 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
             }
             step_start = s.end;
           },
-          [&](double f) {
+          [&](double) {
             if (proved_failure) throw ode::run_stopped("a contact fails");  // the piece's verdict is known
             const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
             if (o.max_seconds && elapsed >= *o.max_seconds) {
               out_of_time = true;
               throw ode::run_stopped("--max-seconds");
             }
-            meter((decided + f * span(a, b) * 0.5) / total);
           });
+      piece_report p;
+      p.lo = lower_string(a);
+      p.hi = upper_string(b);
+      p.x_lo = approx_double(a);
+      p.x_hi = approx_double(b);
       if (out_of_time) {
-        stopped = "--max-seconds " + ode::number_text(*o.max_seconds) + " reached";
-        todo.emplace_back(a, b);
-        break;
+        p.verdict = "stopped";
+        p.why = "--max-seconds " + ode::number_text(*o.max_seconds) + " reached";
+        return p;
       }
       for (auto& c : tracks) {  // undecided steps enclosed again in 8 pieces
         c.refine(
@@ -663,58 +660,64 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
             [&](const vector_t<I>& s0) { return contact_at(s0, c.name); });
         c.finish(x);
       }
-      piece p;
-      p.lo = a;
-      p.hi = b;
       p.steps = st.steps;
       p.seconds = st.seconds;
+      contact_verdict verdict = contact_verdict::undecided;
+      std::optional<I> fail_from, fail_to, holds_until;
       bool all_hold = st.complete;
       for (const auto& c : tracks) {
-        if (c.verdict() == contact_verdict::fails && (!p.fail_to || upper(*c.hi) < upper(*p.fail_to))) {
-          p.verdict = contact_verdict::fails;
-          p.fail_from = c.lo;
-          p.fail_to = *c.hi;
+        if (c.verdict() == contact_verdict::fails && (!fail_to || upper(*c.hi) < upper(*fail_to))) {
+          verdict = contact_verdict::fails;
+          fail_from = c.lo;
+          fail_to = *c.hi;
         }
         if (c.verdict() != contact_verdict::holds) all_hold = false;
-        if (!p.holds_until || lower(c.lo) < lower(*p.holds_until)) p.holds_until = c.lo;
+        if (!holds_until || lower(c.lo) < lower(*holds_until)) holds_until = c.lo;
       }
-      if (p.verdict != contact_verdict::fails && all_hold) p.verdict = contact_verdict::holds;
-      if (p.verdict == contact_verdict::undecided) {
+      if (verdict != contact_verdict::fails && all_hold) verdict = contact_verdict::holds;
+      p.verdict = verdict_name(verdict);
+      if (verdict == contact_verdict::undecided) {
         p.why = st.complete ? "the enclosures straddle a boundary" : st.reason;
-        if (span(a, b) > resolution) {
-          const I m = (a + b) / I(2);
-          todo.emplace_back(m, b);
-          todo.emplace_back(a, m);  // the lower half first
-          continue;
-        }
+        if (span(a, b) > resolution) p.verdict = "split";
       }
-      decided += span(a, b);
-      done.push_back(std::move(p));
+      if (holds_until) p.holds_until = lower_string(*holds_until);
+      if (fail_from) p.fail_from = lower_string(*fail_from);
+      if (fail_to) p.fail_to = upper_string(*fail_to);
+      p.y0 = fail_from ? approx_double(*fail_from) : verdict == contact_verdict::undecided && holds_until ? approx_double(*holds_until) : 0;
+      p.y1 = fail_to ? approx_double(*fail_to) : T;
+      return p;
+    };
+    piece_network here;
+    here.threads = o.jobs;
+    const piece_network& net = o.pieces ? *o.pieces : here;
+    if (net.serve) {  // a rank that runs the pieces it is sent (appell-mpi); the leading rank writes
+      net.serve(run_piece);
+      return {0, ""};
     }
-    std::sort(done.begin(), done.end(), [](const piece& x, const piece& y) { return lower(x.lo) < lower(y.lo); });
+    progress_meter meter("validity", 1.0, o.quiet);
+    const pieces_outcome run = run_pieces(run_piece, net, [&](double f) { meter(f); });
+    const std::vector<piece_report>& done = run.done;
     // The pieces, and the ranges of each verdict (adjacent pieces merged).
     std::ostringstream csv, dat[3];
     csv << "lo,hi,verdict,holds_until,first_failure_from,first_failure_to,steps,seconds\n";
     nlohmann::json ranges = {{"holds", nlohmann::json::array()}, {"fails", nlohmann::json::array()}, {"undecided", nlohmann::json::array()}};
     std::string last;
-    for (const piece& p : done) {
-      const std::string v = verdict_name(p.verdict);
-      csv << lower_string(p.lo) << "," << upper_string(p.hi) << "," << v << ","
-          << (p.holds_until ? lower_string(*p.holds_until) : "") << "," << (p.fail_from ? lower_string(*p.fail_from) : "") << "," << (p.fail_to ? upper_string(*p.fail_to) : "") << ","
-          << p.steps << "," << p.seconds << "\n";
+    double piece_seconds = 0;
+    for (const piece_report& p : done) {
+      const std::string& v = p.verdict;
+      csv << p.lo << "," << p.hi << "," << v << "," << p.holds_until << "," << p.fail_from << "," << p.fail_to << "," << p.steps
+          << "," << p.seconds << "\n";
       nlohmann::json& list = ranges[v];
-      if (v == last && !list.empty()) list.back()[1] = upper_string(p.hi);
-      else list.push_back({lower_string(p.lo), upper_string(p.hi)});
+      if (v == last && !list.empty()) list.back()[1] = p.hi;
+      else list.push_back({p.lo, p.hi});
       last = v;
-      const int k = p.verdict == contact_verdict::holds ? 0 : p.verdict == contact_verdict::fails ? 1 : 2;
-      const double x = (approx_double(p.lo) + approx_double(p.hi)) / 2, dx = (approx_double(p.hi) - approx_double(p.lo)) / 2;
-      const double T = approx_double(t_end);
-      const double y0 = p.fail_from ? approx_double(*p.fail_from)
-                        : k == 2 && p.holds_until ? approx_double(*p.holds_until) : 0,
-                   y1 = p.fail_to ? approx_double(*p.fail_to) : T;
-      dat[k] << x << " " << (y0 + y1) / 2 << " " << x - dx << " " << x + dx << " " << y0 << " " << y1 << "\n";
+      piece_seconds += p.seconds;
+      const int k = v == "holds" ? 0 : v == "fails" ? 1 : 2;
+      const double x = (p.x_lo + p.x_hi) / 2, dx = (p.x_hi - p.x_lo) / 2;
+      dat[k] << x << " " << (p.y0 + p.y1) / 2 << " " << x - dx << " " << x + dx << " " << p.y0 << " " << p.y1 << "\n";
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const int workers = std::max(1, net.threads) + (net.remote ? net.remote->workers() : 0);
     nlohmann::json summary = {{"command", "validity"},
                               {"scene", o.scene},
                               {"model", scene.model},
@@ -725,11 +728,14 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
                               {"t_end", o.t_end},
                               {"resolution", resolution},
                               {"pieces", done.size()},
-                              {"complete", stopped.empty()},
-                              {"reason", stopped},
+                              {"complete", run.stopped.empty()},
+                              {"reason", run.stopped},
+                              {"pieces_not_run", run.not_run},
                               {"ranges", ranges},
+                              {"threads", std::max(1, net.threads)},
+                              {"processes", net.remote ? net.remote->workers() + 1 : 1},
                               {"seconds", seconds},
-                              {"seconds_per_piece", done.empty() ? 0.0 : seconds / static_cast<double>(done.size())}};
+                              {"seconds_per_piece", done.empty() ? 0.0 : piece_seconds / static_cast<double>(done.size())}};
     const std::filesystem::path dir(o.out);
     std::filesystem::create_directories(dir);
     write_whole(dir, "validity.csv", csv.str());
@@ -742,7 +748,7 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
       const std::string f = "'" + datf.string() + "'";
       plot("set terminal png size 900,500 noenhanced\nset output '" + tmp.string() + "'\nset title '" + o.scene +
            ": can the contacts hold on [0, " + o.t_end + "]? (" + scalar_traits<I>::name + ")'\nset xlabel '" + o.vary_field +
-           "'\nset ylabel 't'\nset yrange [0:" + std::to_string(approx_double(t_end) * 1.1) +
+           "'\nset ylabel 't'\nset yrange [0:" + std::to_string(T * 1.1) +
            "]\nset grid\nset key below\nset style fill solid 0.5\nplot " + f +
            " index 0 using 1:2:3:4:5:6 with boxxyerror lc rgb 'forest-green' title 'holds over [0, T] (proved)', " + f +
            " index 1 using 1:2:3:4:5:6 with boxxyerror lc rgb 'red' title 'fails (proved): the first failure lies within the box', " + f +
@@ -757,13 +763,13 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
     std::ostringstream out;
     out << "validity of " << o.scene << "'s contacts on [0, " << o.t_end << "] for " << o.vary_field << " in [" << o.vary_lo
         << ", " << o.vary_hi << "] (" << scalar_traits<I>::name << ", " << bits_text<I>() << "): " << done.size()
-        << " pieces in " << seconds << " s\n";
-    if (!stopped.empty()) out << "  INCOMPLETE: " << stopped << "; " << todo.size() << " piece(s) not run\n";
+        << " pieces in " << seconds << " s on " << workers << (workers == 1 ? " worker" : " workers") << "\n";
+    if (!run.stopped.empty()) out << "  INCOMPLETE: " << run.stopped << "; " << run.not_run << " piece(s) not run\n";
     for (const char* v : {"holds", "fails", "undecided"})
       for (const auto& r : ranges[v])
         out << "  " << v << " for " << o.vary_field << " in [" << r[0].get<std::string>() << ", " << r[1].get<std::string>() << "]\n";
     out << "wrote " << (dir / "validity.csv").string() << ", summary.json" << plotted << "\n";
-    return {stopped.empty() ? 0 : 3, out.str()};
+    return {run.stopped.empty() ? 0 : 3, out.str()};
   }
 }
 

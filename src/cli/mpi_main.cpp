@@ -6,28 +6,120 @@
 //
 //   mpirun -np P appell-mpi reference SCENE --states FILE --out DIR [options as appell reference]
 //
+// And `appell validity` (docs/contacts.md): rank 0 leads, handing the pieces of
+// the range to the other ranks as they come free (and to --jobs threads of its
+// own, default 1) and writing the files; the pieces and verdicts are those of a
+// single-process run (pieces.hpp), the summary records the processes.
+//
+//   mpirun -np P appell-mpi validity SCENE --vary FIELD=lo:hi --t-end T --out DIR [options as appell validity]
+//
 // Every rank reads and checks the inputs (the same verdict everywhere: bad input
 // is exit 2 on all ranks, reported once, by rank 0).  Exit status as `appell
-// reference`, the same on every rank.
+// reference` or `appell validity`, the same on every rank.
 #include <boost/mpi.hpp>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
 #include <iostream>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
 #include "exit_status.hpp"
+#include "motion.hpp"
+#include "pieces.hpp"
 #include "reference.hpp"
 
+namespace {
+
+constexpr int tag_piece = 1, tag_report = 2, tag_stop = 3;
+
+/// The other ranks as validity's remote workers (rank w + 1 is worker w), seen from rank 0.
+class mpi_pieces final : public appell::cli::remote_pieces {
+ public:
+  explicit mpi_pieces(boost::mpi::communicator& world) : world_(world) {}
+  int workers() const override { return world_.size() - 1; }
+  void send(int worker, const std::string& path) override { world_.send(worker + 1, tag_piece, path); }
+  std::optional<std::pair<int, std::string>> poll() override {
+    const auto st = world_.iprobe(boost::mpi::any_source, tag_report);
+    if (!st) return std::nullopt;
+    std::string message;
+    world_.recv(st->source(), tag_report, message);
+    return std::pair<int, std::string>{st->source() - 1, std::move(message)};
+  }
+  void stop() override {
+    for (int r = 1; r < world_.size(); ++r) world_.send(r, tag_stop, std::string());
+  }
+
+ private:
+  boost::mpi::communicator& world_;
+};
+
+/// `appell validity` on every rank: rank 0 leads (run_pieces), the others serve pieces.
+int validity(int argc, char** argv, boost::mpi::communicator& world) {
+  const bool root = world.rank() == 0;
+  appell::cli::motion_options o;
+  o.command = "validity";
+  const std::string error = appell::cli::parse_motion_arguments(argc, argv, 2, o);
+  if (!error.empty()) {
+    if (root) std::cerr << "appell: " << appell::cli::one_line(error) << "\n";
+    return 2;
+  }
+  if (o.jobs == 0) o.jobs = 1;  // one thread of rank 0's besides its leading: a rank per core is MPI's way
+  mpi_pieces remote(world);
+  appell::cli::piece_network net;
+  net.threads = o.jobs;
+  if (root) {
+    net.remote = &remote;
+  } else {
+    o.quiet = true;
+    net.serve = [&](const appell::cli::piece_runner& run) {
+      for (;;) {
+        const boost::mpi::status st = world.probe(0, boost::mpi::any_tag);
+        std::string path;
+        world.recv(0, st.tag(), path);
+        if (st.tag() == tag_stop) return;
+        appell::cli::piece_report r;
+        try {
+          r = run(path);
+        } catch (const std::exception& e) {
+          r = appell::cli::piece_report{};
+          r.error = std::string("rank ") + std::to_string(world.rank()) + ": " + e.what();
+        }
+        r.path = path;
+        world.send(0, tag_report, r.to_message());
+      }
+    };
+  }
+  o.pieces = &net;
+  int status = 0;
+  // The other ranks print nothing: their summary is empty and rank 0 reports the errors.
+  std::streambuf* const saved = root ? nullptr : std::cout.rdbuf(nullptr);
+  try {
+    status = appell::cli::motion(o);
+  } catch (...) {
+    status = appell::cli::exit_status_of_current_exception(root);
+  }
+  if (saved) std::cout.rdbuf(saved);
+  boost::mpi::broadcast(world, status, 0);
+  return status;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  boost::mpi::environment env(argc, argv);
+  // Funneled: rank 0's validity threads run pieces; only its main thread calls MPI.
+  boost::mpi::environment env(argc, argv, boost::mpi::threading::funneled);
   boost::mpi::communicator world;
   const bool root = world.rank() == 0;
   const int processes = world.size();
+  if (argc >= 2 && std::string(argv[1]) == "validity") return validity(argc, argv, world);
   if (argc < 2 || std::string(argv[1]) != "reference") {
     if (root)
       std::cerr << "appell-mpi: usage: mpirun -np P appell-mpi reference SCENE --states FILE --out DIR "
-                   "[--scalar interval|mpfi] [--bits N] [--inputs decimal|binary64]\n";
+                   "[--scalar interval|mpfi] [--bits N] [--inputs decimal|binary64]\n"
+                   "       mpirun -np P appell-mpi validity SCENE --vary FIELD=lo:hi --t-end T --out DIR "
+                   "[options as appell validity]\n";
     return 2;
   }
   appell::cli::reference_options options;

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -20,6 +21,7 @@
 
 #include "appell/dynamics/system.hpp"  // vec3
 #include "appell/io/json.hpp"
+#include "appell/reactions/contact.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/format.hpp"
 #include "appell/scalar/policy.hpp"
@@ -64,6 +66,24 @@ struct named_result {
 struct contact_judgement {
   std::string name, verdict, mu, required_mu;
 };
+
+/// One contact's judgement for eval's document from its normal force, its tangential force's
+/// length and its mu as written ("" for none): the verdict (judge_contact) and the friction
+/// coefficient it requires, |F_t| / N, where N is proved positive.
+template <Scalar T>
+contact_judgement judged_contact(const std::string& name, const T& normal, const T& tangential, const std::string& mu_text) {
+  std::string required;
+  if (certainly_positive(normal)) {
+    const T r = tangential / normal;
+    if constexpr (scalar_traits<T>::is_interval)
+      required = "{\"lo\": \"" + lower_string(r) + "\", \"hi\": \"" + upper_string(r) + "\"}";
+    else
+      required = "{\"value\": \"" + to_string(r) + "\"}";
+  }
+  std::optional<T> mu;
+  if (!mu_text.empty()) mu = from_decimal<T>(mu_text);
+  return {name, verdict_name(judge_contact(normal, tangential, mu ? &*mu : nullptr)), mu_text, required};
+}
 
 template <Scalar T>
 struct evaluation {

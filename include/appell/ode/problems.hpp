@@ -18,6 +18,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "appell/ode/jet.hpp"
@@ -258,9 +259,28 @@ struct rolling_sphere_problem {
   T mass, A, a;
   rolling_surface<T> surface;
   vec3<T> force, torque;  ///< total applied force through G (weight included) and couple, fixed axes
+  bool contact = false;   ///< the contact "surface" judged (a scene's "contact"), with mu as written
+  std::string mu;
   static constexpr int dim = 6;
   static std::vector<std::string> state_names() {
     return {"center_x", "center_y", "center_z", "omega_x", "omega_y", "omega_z"};
+  }
+  /// The contacts to judge along the motion: "surface" when the scene asks, with its mu.
+  std::vector<std::pair<std::string, std::string>> contacts() const {
+    if (!contact) return {};
+    return {{"surface", mu}};
+  }
+  /// Whether state component i enters a constraint at the state x (validity refuses to vary it:
+  /// a range of it would leave the constraint): the centre's coordinates on the surface of
+  /// centres, and omega's components along which the normal n is not 0 (omega . n = 0).
+  template <class S>
+  bool constrains(int i, const vector_t<S>& x) const {
+    const bool plane = surface.type == surface_type::plane, sphere = surface.type == surface_type::sphere;
+    if (i < 3) return plane ? i == 2 : sphere || i < 2;
+    const int k = i - 3;  // n is along z (plane), c (sphere), (c_x, c_y, 0) (cylinder)
+    if (plane) return k == 2;
+    if (!sphere && k == 2) return false;
+    return !exactly_zero(x(k));
   }
   template <class S>
   rolling_sphere_result<S> motion(const vector_t<S>& x, bool checks, bool reactions = true) const {
@@ -286,6 +306,11 @@ struct rolling_sphere_problem {
     out.push_back({"contact_force", {r.contact_force(0), r.contact_force(1), r.contact_force(2)}});
     out.push_back({"normal_force", {r.normal_force}});
     out.push_back({"pivot_couple", {r.pivot_couple}});
+    if (contact) {  // the contact's forces as every model names them (judged by the commands)
+      const vec3<S> f = r.friction_force();
+      out.push_back({"surface_normal_force", {r.normal_force}});
+      out.push_back({"surface_friction_force", {f(0), f(1), f(2)}});
+    }
   }
   /// The energy M v^2 / 2 + A omega^2 / 2 - F . c (without a couple; the force is constant),
   /// and the two constraints, 0 along the motion: the centre on the surface of centres (|c| - rho,

@@ -141,6 +141,8 @@ struct rolling_sphere_result {
     using std::sqrt;
     return sqrt(sqr(tangential_x) + sqr(tangential_y));
   }
+  /// The contact force's tangential part (the friction), fixed axes.
+  vec3<T> friction_force() const { return vec3<T>(axes.col(0) * tangential_x + axes.col(1) * tangential_y); }
   vector_t<T> speeds_dot;   ///< (u', v', w', p', q', r') on the trihedron
   vector_t<T> reactions;    ///< Cotton's Q'_c: (F - X, H - Y, K - Z, L - N) on the trihedron
   vector_t<T> multipliers;  ///< Lagrange's, for comparison

@@ -47,6 +47,17 @@ rolling_sphere_input rolling_sphere_model::read(object_reader& scene) {
     in.project = scene.number("project");
     require_positive(scene, "project", *in.project, "a tolerance");
   }
+  if (scene.has("contact")) {  // the contact with the surface judged (SCENES.md)
+    object_reader contact = scene.object("contact");
+    in.contact = true;
+    if (contact.has("mu")) {
+      const decimal_field mu = contact.number("mu");
+      if (decimal_sign_of_sum({{1, mu.text}}) < 0)
+        throw input_error(contact.path("mu") + ": a friction coefficient must not be negative, got " + mu.text);
+      in.mu = mu.text;
+    }
+    contact.finish();
+  }
   object_reader state = scene.object("state");
   in.center = state.numbers("center", 3);
   in.omega = state.numbers("omega", 3);

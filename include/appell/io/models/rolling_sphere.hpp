@@ -21,6 +21,9 @@ struct rolling_sphere_input : model_input {
   /// "project": accept a state off the constraints by at most this (length for the centre,
   /// rad/s for omega . n) and use its projection onto them, enclosed in the scalar's arithmetic.
   std::optional<decimal_field> project;
+  /// "contact": the contact with the surface judged (SCENES.md); mu as written ("" for none).
+  bool contact = false;
+  std::string mu;
 };
 
 struct rolling_sphere_model {
@@ -36,6 +39,8 @@ struct rolling_sphere_model {
     T on_surface, no_pivot;  ///< the constraint residuals at the state
     bool projected = false;
     T center_moved = T(0), omega_moved = T(0);  ///< the projection's steps along n (when projected)
+    bool contact = false;  ///< the contact "surface" judged, with mu as written ("" for none)
+    std::string mu;
   };
   template <Scalar T>
   static prepared<T> prepare(const input& in) {
@@ -51,6 +56,8 @@ struct rolling_sphere_model {
     m.omega = detail::vec3_from_decimals<T>(in.omega);
     m.F = detail::vec3_from_decimals<T>(in.gravity) * m.M + detail::vec3_from_decimals<T>(in.force);
     m.tau = detail::vec3_from_decimals<T>(in.torque);
+    m.contact = in.contact;
+    m.mu = in.mu;
     // The state must lie on the constraints: centre on the surface of centres, omega . n = 0.
     T scale_c, scale_w;
     auto residuals = [&] {
@@ -102,7 +109,9 @@ struct rolling_sphere_model {
   template <Scalar T>
   static evaluation<T> compute(const prepared<T>& m) {
     const rolling_sphere_result<T> r = rolling_sphere_motion(m.M, m.A, m.a, m.surface, m.c, m.omega, m.F, m.tau);
-    if (!certainly_positive(r.normal_force) && !certainly_negative(r.normal_force))
+    // With a contact judged, its verdict says whether the normal force is positive, and the
+    // contacts group gives the friction coefficient it requires in friction_ratio's stead.
+    if (!m.contact && !certainly_positive(r.normal_force) && !certainly_negative(r.normal_force))
       throw certification_error("friction_ratio: the normal force " + to_string(r.normal_force) +
                                 " cannot be told from 0");
     evaluation<T> e;
@@ -112,7 +121,15 @@ struct rolling_sphere_model {
     e.results.push_back(detail::scalar_result("normal_force", r.normal_force));
     e.results.push_back(detail::scalar_result("tangential_force", r.tangential_force()));
     e.results.push_back(detail::scalar_result("pivot_couple", r.pivot_couple));
-    e.results.push_back(detail::scalar_result("friction_ratio", T(r.tangential_force() / r.normal_force)));
+    if (!m.contact) {
+      e.results.push_back(detail::scalar_result("friction_ratio", T(r.tangential_force() / r.normal_force)));
+    } else {  // the contact's results as every model names them (SCENES.md "contacts")
+      const T tangential = r.tangential_force();
+      e.results.push_back(detail::scalar_result("surface_normal_force", r.normal_force));
+      e.results.push_back(detail::vector_result("surface_friction_force", r.friction_force()));
+      e.results.push_back(detail::scalar_result("surface_tangential_force", tangential));
+      e.contacts.push_back(judged_contact("surface", r.normal_force, tangential, m.mu));
+    }
     e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
     e.checks.push_back(detail::scalar_result("normal_force_cotton_minus_lagrange", T(r.reactions(2) - r.multipliers(2))));
     e.checks.push_back(detail::scalar_result("pivot_couple_cotton_minus_lagrange", T(r.reactions(3) - r.multipliers(3))));

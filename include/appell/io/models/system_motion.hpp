@@ -226,6 +226,13 @@ struct system_problem {
     return false;
   }
 
+  /// The same, as validity asks it of every model: whether a range of component i would leave a
+  /// constraint at the state (the speeds the constraints solve are not in the state).
+  template <class S>
+  bool constrains(int i, const vector_t<S>&) const {
+    return on_holonomic_constraint(i);
+  }
+
   /// The contacts to judge along the motion: each one's name and mu as written (empty: none).
   std::vector<std::pair<std::string, std::string>> contacts() const {
     std::vector<std::pair<std::string, std::string>> out;
