@@ -4,7 +4,7 @@
 #     include/appell/scalar/standard_scalars.hpp (read here, one entry a line);
 #   * the models: APPELL_MODELS (CMakeLists.txt).
 # One unit per scalar (the scene layer) and one per model x scalar, so no unit
-# holds more than one heavy scalar (2 cores, 24 GiB: DESIGN.md sec. 3).
+# holds more than one heavy scalar (2 cores, 24 GiB: docs/design.md §3).
 #
 # appell_generate_instantiations(OUT_VAR) sets OUT_VAR to the generated sources.
 # The standard scalars that are intervals (scalar_traits<T>::is_interval; each generated

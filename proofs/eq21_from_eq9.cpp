@@ -1,7 +1,7 @@
 // Proof: eq. (21) follows from eq. (9).  For a homogeneous sphere
 // (A = B = C, D = E = F = 0, constant), Cotton's acceleration energy of the
 // free body on moving axes, eq. (9), becomes (with the misprints corrected,
-// DESIGN.md sec. 4)
+// docs/design.md §4)
 //   2S = M [u'(u' + 2Qw - 2Rv) + v'(v' + 2Ru - 2Pw) + w'(w' + 2Pv - 2Qu)]
 //      + A [p'(p' + 2Qr - 2Rq) + q'(q' + 2Rp - 2Pr) + r'(r' + 2Pq - 2Qp)] + ...   (21)
 // (the OCR prints p'(p + 2Qr - 2Rq), omega for w and nu for v).

@@ -21,7 +21,7 @@
 //
 // Misprint corrected: the OCR text prints "Q omega" and "P omega" in the first
 // line of (9) (u'(u' + Q omega - R v), v'(v' + R u - P omega)); omega there is
-// the speed w of G, as in (21) (DESIGN.md sec. 4 lists it for (21) only; (9)
+// the speed w of G, as in (21) (docs/design.md §4 lists it for (21) only; (9)
 // has the same one).  Nothing else in (9) differs from a derivation: by
 // Euler's theorem (6), u' P_1 + ... + r' P_6 = 2 S2 + S1 with P_1..P_6 the left
 // sides of (7) and (8), which are the M[...] and p'(...) + q'(...) + r'(...)

@@ -280,7 +280,7 @@ BOOST_AUTO_TEST_CASE(the_papers_reduced_equations_and_reaction_formulas) {
   //   (A + M a^2)(p' - R q) = L - a Y,  (A + M a^2)(q' + R p) = M + a X,
   //   F - X = M a (q' + R p) - X,  H - Y = M a (-p' + R q) - Y,
   //   K - Z = -M a (P p + Q q) - Z,  L - N = A (P q - Q p) - N
-  // (paper sec. 7, with the misprints corrected as in DESIGN.md).
+  // (paper sec. 7, with the misprints corrected as in docs/design.md §4).
   using T = mpfr;
   mp_precision_scope scope(200);
   long checked = 0;

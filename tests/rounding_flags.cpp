@@ -1,6 +1,6 @@
 // The compile flags that keep interval arithmetic rigorous are in force.
 // Without -frounding-math, GCC at -O2/-O3 folds 1/3 and sqrt(2) of constant
-// intervals into a single double (a thin, wrong box) -- DESIGN.md sec. 3.
+// intervals into a single double (a thin, wrong box) -- docs/design.md §3.
 #define BOOST_TEST_MODULE rounding_flags
 #include <boost/test/unit_test.hpp>
 

@@ -1,5 +1,5 @@
 // appell -- the command-line tool.  `appell eval SCENE [--scalar NAME] [--bits N]
-// [--format json|text]` evaluates a scene (../shared/SCENES.md).
+// [--format json|text]` evaluates a scene (SCENES.md).
 // Exit status: 0 done; 2 bad input (the command line included); 3 a result could
 // not be certified; 4 an internal error (a bug: please report it).
 // Output is assembled in full before anything is written to stdout.

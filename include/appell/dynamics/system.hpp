@@ -18,7 +18,7 @@
 // The library differentiates the kinematics itself (dual.hpp): with
 // v = J u + j,  a_G = J_v u' + c_v,  alpha = J_w u' + c_w, where
 // c = d/dt(J u + j)|_{u fixed} + frame_rate x (J u + j).  Appell's acceleration
-// energy of a body (DESIGN.md sec. 1),
+// energy of a body (docs/design.md §1),
 //   S = 1/2 m |a_G|^2 + 1/2 alpha . I alpha + alpha . (omega x I omega) + (free of u'),
 // gives S2 + S1 = 1/2 u'^T M u' + b^T u'  (S0 is never formed: Cotton sec. 2) with
 //   M = sum m J_v^T J_v + J_w^T I J_w,

@@ -1,4 +1,4 @@
-// appell/io/scene.hpp -- scene files (../shared/SCENES.md) and their evaluation.
+// appell/io/scene.hpp -- scene files (SCENES.md) and their evaluation.
 //
 // read_scene() validates a scene once, on the exact decimals, independently of
 // the scalar (so "A + B >= C" is decided exactly, not after rounding), through

@@ -38,7 +38,7 @@
 //     g evaluated on the jets of the solution (its Taylor coefficients at
 //     t_j, over X_j), and its coefficient p at the states of B (Lagrange's
 //     remainder of g(x(t))).  Evaluating g on the box Y instead is wider by
-//     orders of magnitude (DESIGN.md sec. 5).
+//     orders of magnitude (docs/design.md §5).
 // Steps whose a priori enclosure fails are halved; below a floor (or if a
 // width exceeds the limit) the run stops: the enclosure up to there is kept
 // and marked incomplete, with the reason.

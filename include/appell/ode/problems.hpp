@@ -260,7 +260,7 @@ struct rolling_sphere_problem {
   rolling_surface<T> surface;
   vec3<T> force, torque;  ///< total applied force through G (weight included) and couple, fixed axes
   bool contact = false;   ///< the contact "surface" judged (a scene's "contact"), with mu as written
-  std::string mu;
+  std::string mu{};
   static constexpr int dim = 6;
   static std::vector<std::string> state_names() {
     return {"center_x", "center_y", "center_z", "omega_x", "omega_y", "omega_z"};

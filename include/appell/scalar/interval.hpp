@@ -6,7 +6,7 @@
 //  * + - * /: IEEE 754 operations under directed rounding (upward mode; lower
 //    bounds as -((-x) op y)), each operand made opaque to the optimiser.  This
 //    also needs -frounding-math -ffp-contract=off and no -ffast-math, which the
-//    appell::appell target carries (DESIGN.md sec. 3).
+//    appell::appell target carries (docs/design.md §3).
 //  * sqrt sin cos tan atan exp log pown: each bound is MPFR's correctly rounded value
 //    at 53 bits with MPFR_RNDD / MPFR_RNDU, converted to double with the same
 //    direction.  Extrema inside wide arguments are located by a certified
