@@ -593,6 +593,11 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
     const auto started = std::chrono::steady_clock::now();
     // One piece, from its path: run on any thread or rank (everything shared is read only).
     const piece_runner run_piece = [&](const std::string& path) {
+      // Upward rounding over the whole piece, as on the thread that opened run_model_motion's
+      // evaluation scope: a piece runs the same operations on every thread and rank (and interval
+      // operations need not read or switch the mode one by one).
+      std::optional<upward_rounding> mode;
+      if constexpr (scalar_traits<I>::needs_upward_rounding) mode.emplace();
       I a = lo0, b = hi0;
       for (const char c : path) {  // the same halving wherever it runs: the same interval
         const I m = (a + b) / I(2);
