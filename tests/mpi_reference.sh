@@ -7,9 +7,7 @@ set -euo pipefail
 appell=$1 appell_mpi=$2 src=$3 out=$4
 rm -rf "$out"
 mkdir -p "$out"
-mpirun_flags=(-np 2 --oversubscribe)
-[ "$(id -u)" -eq 0 ] && mpirun_flags+=(--allow-run-as-root)
-export OMPI_MCA_btl_vader_single_copy_mechanism=none  # containers often forbid cross-memory attach
+source "$(dirname "$0")/mpi_flags.sh"  # mpirun_flags
 scene=$src/data/scenes/heavy_top.json
 { cat "$src/data/reference/heavy_top_states.csv"; echo "vertical,0,0,0,1,1,1"; } > "$out/states.csv"
 for scalar in interval mpfi; do

@@ -7,9 +7,7 @@ set -euo pipefail
 appell=$1 appell_mpi=$2 src=$3 out=$4
 rm -rf "$out"
 mkdir -p "$out"
-mpirun_flags=(-np 2 --oversubscribe)
-[ "$(id -u)" -eq 0 ] && mpirun_flags+=(--allow-run-as-root)
-export OMPI_MCA_btl_vader_single_copy_mechanism=none  # containers often forbid cross-memory attach
+source "$(dirname "$0")/mpi_flags.sh"  # mpirun_flags
 scene=$src/data/scenes/rolling_sphere_bowl_contact.json
 args=(--vary mu=0:0.4 --t-end 0.3 --resolution 0.05 --quiet)
 "$appell" validity "$scene" "${args[@]}" --jobs 1 --out "$out/one" > "$out/one.txt"

@@ -3,7 +3,6 @@
 #include "flags.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <thread>
 #include <iostream>
@@ -70,14 +69,9 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
           return "--order: expected an integer from 2 to 60, got '" + v + "'";
         }
       } else if (a == "--jobs") {
-        try {
-          std::size_t used = 0;
-          const long n = std::stol(v, &used);
-          if (used != v.size() || n < 1 || n > 1024 || !std::isdigit(static_cast<unsigned char>(v[0]))) return "--jobs: expected an integer from 1 to 1024, got '" + v + "'";
-          o.jobs = static_cast<int>(n);
-        } catch (const std::exception&) {
-          return "--jobs: expected an integer from 1 to 1024, got '" + v + "'";
-        }
+        unsigned n = 0;
+        if (std::string why = parse_integer("--jobs", v, 1, 1024, n); !why.empty()) return why;
+        o.jobs = static_cast<int>(n);
       } else if (a == "--tol") {
         if (std::string why = positive(o.tol); !why.empty()) return why;
         // A relative tolerance of 1 or more lets a step's error be as large as the state itself.

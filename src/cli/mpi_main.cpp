@@ -79,14 +79,8 @@ int validity(int argc, char** argv, boost::mpi::communicator& world) {
         std::string path;
         world.recv(0, st.tag(), path);
         if (st.tag() == tag_stop) return;
-        appell::cli::piece_report r;
-        try {
-          r = run(path);
-        } catch (const std::exception& e) {
-          r = appell::cli::piece_report{};
-          r.error = std::string("rank ") + std::to_string(world.rank()) + ": " + e.what();
-        }
-        r.path = path;
+        appell::cli::piece_report r = appell::cli::run_piece_reporting(run, path);
+        if (!r.error.empty()) r.error = "rank " + std::to_string(world.rank()) + ": " + r.error;
         world.send(0, tag_report, r.to_message());
       }
     };

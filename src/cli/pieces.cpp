@@ -41,6 +41,21 @@ piece_report piece_report::from_message(const std::string& m) {
   return r;
 }
 
+piece_report run_piece_reporting(const piece_runner& run, const std::string& path) {
+  piece_report r;
+  try {
+    r = run(path);
+  } catch (const std::exception& e) {
+    r = piece_report{};
+    r.error = e.what();
+  } catch (...) {
+    r = piece_report{};
+    r.error = "unknown exception";
+  }
+  r.path = path;
+  return r;
+}
+
 pieces_outcome run_pieces(const piece_runner& run, const piece_network& net, const std::function<void(double)>& progress) {
   const int threads = std::max(1, net.threads);
   pieces_outcome out;
@@ -65,17 +80,7 @@ pieces_outcome run_pieces(const piece_runner& run, const piece_network& net, con
           path = std::move(jobs.front());
           jobs.pop_front();
         }
-        piece_report r;
-        try {
-          r = run(path);
-        } catch (const std::exception& e) {
-          r = piece_report{};
-          r.error = e.what();
-        } catch (...) {
-          r = piece_report{};
-          r.error = "unknown exception";
-        }
-        r.path = path;
+        piece_report r = run_piece_reporting(run, path);
         {
           std::lock_guard l(m);
           reports.push_back(std::move(r));

@@ -35,6 +35,10 @@ struct piece_report {
 /// Runs the piece at a path (thread-safe: called from several threads at once).
 using piece_runner = std::function<piece_report(const std::string& path)>;
 
+/// run(path), an exception turned into the report's `error` (what every worker, thread or rank,
+/// sends back); the report's path set.
+piece_report run_piece_reporting(const piece_runner& run, const std::string& path);
+
 /// Further workers in other processes (appell-mpi): the scheduler sends them paths and polls for
 /// their reports. Only the scheduler's thread calls these.
 class remote_pieces {
