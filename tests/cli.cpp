@@ -882,6 +882,39 @@ BOOST_AUTO_TEST_CASE(simulate_and_enclose_write_their_files_whole) {
   BOOST_TEST(slurp(enc + "/summary.json") == done);
 }
 
+BOOST_AUTO_TEST_CASE(every_plot_is_written_whole_or_said_missing) {
+  // One plotting helper (src/cli/plot.cpp) for every command: with gnuplot, a PNG in place and no
+  // temporary file; without it (PATH holding no gnuplot), no PNG, no temporary file, and the
+  // command's report says why on its "wrote" line (simulate's drift.png, enclose's widths.png).
+  const std::string with = (work / "plot_with").string(), without = (work / "plot_without").string();
+  std::filesystem::remove_all(with);
+  std::filesystem::remove_all(without);
+  auto is_png = [](const std::string& path) { return slurp(path).substr(0, 8) == "\x89PNG\r\n\x1a\n"; };
+  auto no_temporary = [](const std::string& dir) {
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+      BOOST_TEST(entry.path().filename().string()[0] != '.', "a temporary file was left: " << entry.path());
+  };
+  const outcome a = run("enclose " + good_scene + " --t-end 1 --out " + with + " --quiet");
+  BOOST_TEST_REQUIRE(a.status == 0, a.err);
+  BOOST_TEST(a.out.find("summary.json, widths.png\n") != std::string::npos, a.out);
+  BOOST_TEST(is_png(with + "/widths.png"));
+  no_temporary(with);
+  const outcome b = run("simulate " + good_scene + " --t-end 1 --out " + with + " --quiet");
+  BOOST_TEST_REQUIRE(b.status == 0, b.err);
+  BOOST_TEST(is_png(with + "/drift.png"), b.out);
+  no_temporary(with);
+  std::filesystem::create_directories(without);
+  const std::string cmd = "env PATH=" + without + " " APPELL_BINARY " enclose " + good_scene + " --t-end 1 --quiet --out " +
+                          without + " >" + without + "/../plot_stdout 2>&1";
+  const int raw = std::system(cmd.c_str());
+  BOOST_TEST((WIFEXITED(raw) && WEXITSTATUS(raw) == 0));
+  const std::string said = slurp(without + "/../plot_stdout");
+  BOOST_TEST(said.find("summary.json (no plot: gnuplot not found; install gnuplot-nox)") != std::string::npos, said);
+  BOOST_TEST(!std::filesystem::exists(without + "/widths.png"));
+  BOOST_TEST(std::filesystem::exists(without + "/steps.csv"));
+  no_temporary(without);
+}
+
 BOOST_AUTO_TEST_CASE(horizon_refuses_bad_input_and_meets_the_closed_form) {
   const std::string out = (work / "horizon").string();
   std::filesystem::remove_all(out);  // a run before this one wrote there

@@ -34,7 +34,10 @@
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
+#include <tuple>
 
+#include "appell/io/models/rolling_sphere_motion.hpp"
+#include "appell/io/models/system_motion.hpp"
 #include "appell/io/scene.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 #include "affine_check.hpp"
@@ -469,6 +472,26 @@ truth_t critical_spin() {
   return sqrt(10 * g * r * (1 - c) / 7) / a;
 }
 
+/// The loop's lift-off time (loop_truth: N = 0 at theta*), infinite when the sphere turns back
+/// (v = 0) before theta* or never reaches it.
+truth_t lift_off_time(const loop_truth& L) {
+  const truth_t c = (10 * L.g - 7 * L.v0 * L.v0 / L.r) / (17 * L.g);
+  if (c < -1 || c > 1) return truth_t(1e9);
+  const truth_t th = acos(c);
+  if (L.v0 * L.v0 - 10 * L.g * L.r * (1 - cos(th)) / 7 <= 0) return truth_t(1e9);
+  return L.time_to(th);
+}
+/// The parameter p in [lo, hi] at which the lift-off time is T (it decreases in p): bisection.
+template <class Loop>
+truth_t lifting_off_at(const truth_t& T, truth_t lo, truth_t hi, Loop&& loop_of) {
+  BOOST_TEST_REQUIRE(lift_off_time(loop_of(lo)) > T);
+  BOOST_TEST_REQUIRE(lift_off_time(loop_of(hi)) < T);
+  for (int i = 0; i < 60; ++i) {
+    const truth_t m = (lo + hi) / 2;
+    (lift_off_time(loop_of(m)) > T ? lo : hi) = m;
+  }
+  return (lo + hi) / 2;
+}
 /// Runs `appell validity SCENE ARGS` into DIR; its exit status.
 int validity_run(const std::string& scene, const std::string& args, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
@@ -478,13 +501,15 @@ int validity_run(const std::string& scene, const std::string& args, const std::f
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
 
-/// validity.csv over [23, 27.5] at resolution 0.25 against wy*: the pieces cover the range, every
-/// one that holds lies below wy*, every one that fails above it, the undecided ones are narrow.
-void check_validity_against_the_closed_form(const std::filesystem::path& dir) {
-  const truth_t wy_star = critical_spin();
+/// validity.csv over [lo, hi] at resolution R against the boundary `star` (the contact holds below
+/// it, fails above): the pieces cover the range, every one that holds lies below star, every one
+/// that fails above it, the undecided ones are narrow.
+void check_validity_against_the_closed_form(const std::filesystem::path& dir, const truth_t& range_lo,
+                                            const truth_t& range_hi, const truth_t& resolution, const truth_t& star) {
+  const truth_t wy_star = star;
   const nlohmann::json s = nlohmann::json::parse(slurp((dir / "summary.json").string()));
   int holds_pieces = 0, fails_pieces = 0;
-  truth_t covered_to("23"), undecided_from("1e9"), undecided_to("-1e9");
+  truth_t covered_to(range_lo), undecided_from("1e9"), undecided_to("-1e9");
   std::istringstream csv(slurp((dir / "validity.csv").string()));
   std::string line;
   std::getline(csv, line);
@@ -498,24 +523,25 @@ void check_validity_against_the_closed_form(const std::filesystem::path& dir) {
     covered_to = std::max(covered_to, hi);
     if (f[2] == "holds") {
       ++holds_pieces;
-      BOOST_TEST(hi < wy_star, "holds on [" << lo << ", " << hi << "] past wy* = " << wy_star);
+      BOOST_TEST(hi < wy_star, "holds on [" << lo << ", " << hi << "] past the boundary " << wy_star);
     } else if (f[2] == "fails") {
       ++fails_pieces;
-      BOOST_TEST(lo > wy_star, "fails on [" << lo << ", " << hi << "] before wy* = " << wy_star);
+      BOOST_TEST(lo > wy_star, "fails on [" << lo << ", " << hi << "] before the boundary " << wy_star);
     } else {
       BOOST_TEST(f[2] == "undecided");
-      BOOST_TEST(hi - lo <= truth_t("0.25") * (1 + truth_t("1e-9")), "an undecided piece wider than the resolution");
+      BOOST_TEST(hi - lo <= resolution * (1 + truth_t("1e-9")), "an undecided piece wider than the resolution");
       undecided_from = std::min(undecided_from, lo);
       undecided_to = std::max(undecided_to, hi);
     }
   }
-  BOOST_TEST(covered_to >= truth_t("27.5"));
-  BOOST_TEST(holds_pieces > 0);
-  BOOST_TEST(fails_pieces > 0);
+  BOOST_TEST(covered_to >= range_hi);
+  BOOST_TEST_REQUIRE(holds_pieces > 0);
+  BOOST_TEST_REQUIRE(fails_pieces > 0);
   const truth_t holds_to(s["ranges"]["holds"].back()[1].get<std::string>()), fails_from(s["ranges"]["fails"].front()[0].get<std::string>());
   BOOST_TEST(holds_to < fails_from);
-  BOOST_TEST_MESSAGE(dir.filename().string() << ": validity over [23, 27.5]: holds up to " << holds_to << ", fails from "
-                                             << fails_from << ", wy* = " << wy_star << " (undecided in [" << undecided_from
+  BOOST_TEST_MESSAGE(dir.filename().string() << ": validity over [" << range_lo << ", " << range_hi << "]: holds up to "
+                                             << holds_to << ", fails from " << fails_from << ", the boundary " << wy_star
+                                             << " (undecided in [" << undecided_from
                                              << ", " << undecided_to << "]); " << s["pieces"] << " pieces in " << s["seconds"]
                                              << " s on " << s["threads"] << " thread(s), " << s["seconds_per_piece"]
                                              << " s per piece");
@@ -536,7 +562,130 @@ BOOST_AUTO_TEST_CASE(validity_splits_the_initial_spin_at_the_closed_form_s_bound
   const int status = validity_run(APPELL_SOURCE_DIR "/data/scenes/system_sphere_in_bowl_contact.json",
                                   "--vary wy=23:27.5 --t-end 0.8 --resolution 0.25", dir);
   BOOST_TEST_REQUIRE(status == 0, slurp((dir / "stdout").string()));
-  check_validity_against_the_closed_form(dir);
+  check_validity_against_the_closed_form(dir, truth_t("23"), truth_t("27.5"), truth_t("0.25"), critical_spin());
+}
+
+namespace {
+/// The built-in sphere's motion of `scene` in T, and its initial state.
+template <Scalar T>
+auto motion_of(const scene_input& scene) {
+  return model_motion<rolling_sphere_model>::start(rolling_sphere_model::prepare<T>(scene.as<rolling_sphere_input>()));
+}
+/// x' and the results of `prob` at x in interval hold those of `truth` at its state in mpfr (256 bits).
+template <class PI, class PT>
+void holds_the_motion(const PI& prob, const vector_t<interval>& x, const PT& truth, const vector_t<mpfr>& xt,
+                      const std::string& what) {
+  std::vector<ode::named_values<interval>> ri;
+  std::vector<ode::named_values<mpfr>> rt;
+  vector_t<interval> di;
+  {
+    const evaluation_scope<interval> scope;
+    di = prob.rhs(x);
+    prob.results(x, ri);
+  }
+  const mp_precision_scope p(256);
+  const vector_t<mpfr> dt = truth.rhs(xt);
+  truth.results(xt, rt);
+  BOOST_TEST_REQUIRE(di.size() == dt.size());
+  for (Eigen::Index i = 0; i < dt.size(); ++i)
+    BOOST_TEST(holds(di(i), truth_t(dt(i).str(0, std::ios_base::scientific))), what << ": x'" << i << " " << to_string(di(i)));
+  BOOST_TEST_REQUIRE(ri.size() == rt.size());
+  for (std::size_t k = 0; k < rt.size(); ++k)
+    for (std::size_t j = 0; j < rt[k].values.size(); ++j)
+      BOOST_TEST(holds(ri[k].values[j], truth_t(rt[k].values[j].str(0, std::ios_base::scientific))),
+                 what << ": " << rt[k].name << "[" << j << "] " << to_string(ri[k].values[j]));
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(a_parameter_set_by_validity_is_the_scene_written_with_it) {
+  // What a validity piece runs (the problem's with_parameter, here at one value) against the
+  // scene written with that value, prepared by the reader at 256 bits: the built-in sphere's
+  // radius (the centre then written on its new surface of centres, A left to follow), the bowl's
+  // radius, and the system file's a (its A = 2/5 M a^2 evaluated again). x' and every result
+  // of the interval problem must hold the written scene's.
+  // Off the bottom (where the accelerations vanish whatever the inertia): the centre along
+  // u = (0.6, 0, -0.8), omega = (0, 45, 0) orthogonal to it.
+  std::mt19937 rng(31);
+  const std::string sphere_text =
+      replaced(scene_text("rolling_sphere_bowl_contact.json"), "[\"0\", \"0\", \"-0.9\"]", "[\"0.54\", \"0\", \"-0.72\"]");
+  for (int k = 0; k < 20; ++k) {
+    const int a_milli = std::uniform_int_distribution<int>(10, 400)(rng), b_milli = std::uniform_int_distribution<int>(900, 3000)(rng);
+    const bool vary_sphere = k % 2 == 0;
+    const std::string a = "0." + std::string(a_milli < 100 ? "0" : "") + std::to_string(a_milli);  // 0.010 .. 0.400
+    const std::string b = std::to_string(b_milli / 1000) + "." + std::to_string(1000 + b_milli % 1000).substr(1);
+    // the centre on the new surface of centres along u: rho u, rho = b - a
+    const truth_t rho = (vary_sphere ? truth_t(1) : truth_t(b)) - (vary_sphere ? truth_t(a) : truth_t("0.1"));
+    std::string written = replaced(sphere_text, vary_sphere ? "\"radius\": \"0.1\"" : "\"radius\": \"1\"",
+                                   vary_sphere ? "\"radius\": \"" + a + "\"" : "\"radius\": \"" + b + "\"");
+    written = replaced(written, "[\"0.54\", \"0\", \"-0.72\"]",
+                       "[\"" + decimal(truth_t("0.6") * rho) + "\", \"0\", \"" + decimal(truth_t("-0.8") * rho) + "\"]");
+    const scene_input given = scene_of(sphere_text), with = scene_of(written);
+    const evaluation_scope<interval> scope;
+    auto [prob, x] = motion_of<interval>(given);
+    const auto varied = prob.with_parameter(vary_sphere ? "sphere.radius" : "surface.radius",
+                                            from_decimal<interval>(vary_sphere ? a : b), x);
+    const mp_precision_scope p(256);
+    const auto [truth, xt] = motion_of<mpfr>(with);
+    holds_the_motion(varied, x, truth, xt, (vary_sphere ? "sphere.radius " + a : "surface.radius " + b));
+  }
+  const std::string system_text =
+      replaced(scene_text("system_sphere_in_bowl_contact.json"), "\"state\": {\"x\": \"0\", \"y\": \"0\", \"z\": \"-0.9\", \"wx\": \"0\", \"wy\": \"45\", \"wz\": \"0\"}",
+               "\"state\": {\"x\": \"0.3\", \"y\": \"-0.2\", \"z\": \"-0.8\", \"wx\": \"1.5\", \"wy\": \"20\", \"wz\": \"-3\"}");
+  for (const std::string a : {"0.05", "0.0731", "0.2"}) {
+    const scene_input given = scene_of(system_text), with = scene_of(replaced(system_text, "\"a\": \"0.1\"", "\"a\": \"" + a + "\""));
+    const evaluation_scope<interval> scope;
+    const auto m = system_model::prepare<interval>(given.as<system_input>());
+    auto [prob, x] = model_motion<system_model>::start(m);
+    const auto varied = prob.with_parameter("a", from_decimal<interval>(a), x);
+    const mp_precision_scope p(256);
+    const auto mt = system_model::prepare<mpfr>(with.as<system_input>());
+    const auto [truth, xt] = model_motion<system_model>::start(mt);
+    holds_the_motion(varied, x, truth, xt, "system a = " + a);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(validity_over_a_model_parameter_splits_at_the_closed_form_s_boundary) {
+  // A parameter of the model over a range, each piece's problem prepared again with it an
+  // interval: the system file's gravity g, and the built-in sphere's radius a (its centre moved
+  // onto the surface of centres r = 1 - a, A = 2/5 M a^2 following, the spin wy = 45 kept: v0 =
+  // 45 a). Without mu the contact fails where N < 0: the loop's lift-off (loop_truth), whose time
+  // decreases in g and in a; the contact holds on [0, T] below the parameter where it is T.
+  const auto base = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts";
+  const truth_t T("0.6");
+  const std::string system = APPELL_SOURCE_DIR "/data/scenes/system_sphere_in_bowl_lift_off.json";
+  const truth_t g_star = lifting_off_at(T, truth_t(6), truth_t(9), [](const truth_t& g) {
+    loop_truth L;
+    L.g = g;
+    return L;
+  });
+  BOOST_TEST_REQUIRE(validity_run(system, "--vary g=6:9 --t-end 0.6 --resolution 0.25", base / "validity_g") == 0,
+                     slurp((base / "validity_g" / "stdout").string()));
+  check_validity_against_the_closed_form(base / "validity_g", truth_t(6), truth_t(9), truth_t("0.25"), g_star);
+  const std::string built_in = APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_bowl_lift_off.json";
+  const truth_t a_star = lifting_off_at(T, truth_t("0.076"), truth_t("0.092"), [](const truth_t& a) {
+    loop_truth L;
+    L.r = 1 - a;
+    L.v0 = 45 * a;
+    return L;
+  });
+  BOOST_TEST_REQUIRE(validity_run(built_in, "--vary sphere.radius=0.076:0.092 --t-end 0.6 --resolution 0.0008", base / "validity_radius") == 0,
+                     slurp((base / "validity_radius" / "stdout").string()));
+  check_validity_against_the_closed_form(base / "validity_radius", truth_t("0.076"), truth_t("0.092"), truth_t("0.0008"), a_star);
+  const std::string system_scene = APPELL_SOURCE_DIR "/data/scenes/system_sphere_in_bowl_contact.json";
+  // Refused, exit 2 naming why: a parameter defined from others, a radius reaching the bowl's or
+  // not positive, a name that is neither a state component nor a parameter, a parameter that a
+  // holonomic constraint involves (the disk's radius in z = a cos theta).
+  const std::vector<std::tuple<std::string, std::string, std::string>> refused = {
+      {system_scene, "A=0.001:0.002", "defined from the parameter"},
+      {built_in, "sphere.radius=0.5:1.5", "must stay below the surface's"},
+      {built_in, "sphere.radius=-0.1:0.1", "must be positive"},
+      {built_in, "sphere.mass=1:2", "nor a parameter of the model"},
+      {APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk_friction.json", "a=0.2:0.4", "enters the holonomic constraint ground"}};
+  for (const auto& [scene, vary, why] : refused) {
+    const auto dir = base / "refused_parameter";
+    BOOST_TEST(validity_run(scene, "--vary " + vary + " --t-end 0.1", dir) == 2, vary);
+    BOOST_TEST(slurp((dir / "stdout").string()).find(why) != std::string::npos, slurp((dir / "stdout").string()));
+  }
 }
 
 BOOST_AUTO_TEST_CASE(validity_of_the_built_in_sphere_gives_the_same_pieces_on_one_thread_and_on_three) {

@@ -18,6 +18,7 @@
 
 #include "accuracy.hpp"
 #include "files.hpp"
+#include "plot.hpp"
 #include "extremes.hpp"
 
 namespace appell::cli {
@@ -97,35 +98,26 @@ int extremes(const extremes_options& o) {
       }
       std::cout << "\n";
     }
-    // plot
-    const auto dat = std::filesystem::temp_directory_path() / ("appell-extremes-" + std::to_string(::getpid()) + ".dat");
-    std::string plot;
-    {
-      std::ofstream f(dat);
-      int block = 0;
-      for (const std::string& s : scalars) {
-        for (const auto& [x, d] : series[s]) f << x << " " << d << "\n";
-        f << "\n\n";
-        plot += std::string(block ? ", " : "") + "'" + dat.string() + "' index " + std::to_string(block) +
-                " with linespoints lw 2 title '" + s + "'";
-        ++block;
-      }
+    // plot: each scalar's digits against the sweep's parameter (data inline)
+    std::string data, plot;
+    int block = 0;
+    for (const std::string& s : scalars) {
+      data += "$" + std::string("s") + std::to_string(block) + " << EOD\n";
+      for (const auto& [x, d] : series[s]) data += figure(x, 17) + " " + figure(d, 6) + "\n";
+      data += "EOD\n";
+      if (!series[s].empty())
+        plot += std::string(plot.empty() ? "" : ", ") + "$s" + std::to_string(block) + " with linespoints lw 2 title " +
+                gnuplot_quoted(s);
+      ++block;
     }
     write_whole(o.out_dir, w.name + ".csv", csv.str());
     const auto png = std::filesystem::path(o.out_dir) / (w.name + ".png");
-    const auto png_tmp = std::filesystem::path(o.out_dir) / ("." + w.name + ".png" + std::to_string(::getpid()));
-    const std::string script = "set terminal png size 900,600 noenhanced\nset output '" + png_tmp.string() +
-                               "'\nset title \"" + w.what + "\"\nset xlabel \"" + w.x_label +
-                               "\"\nset ylabel 'correct decimal digits (intervals: certified)'\nset grid\nset key outside right\nplot " +
-                               plot + "\n";
-    bool plotted = false;
-    if (FILE* gp = popen("gnuplot 2>/dev/null", "w")) {
-      std::fputs(script.c_str(), gp);
-      plotted = pclose(gp) == 0 && std::filesystem::exists(png_tmp);
-    }
-    if (plotted) std::filesystem::rename(png_tmp, png);
-    else std::filesystem::remove(png_tmp);
-    std::filesystem::remove(dat);
+    const plot_outcome p = plot.empty() ? plot_outcome{false, "no scalar gave a value"}
+                                        : render_png(png, data + "set title " + gnuplot_quoted(w.what) + "\nset xlabel " +
+                                                              gnuplot_quoted(w.x_label) +
+                                                              "\nset ylabel 'correct decimal digits (intervals: certified)'\nset grid\n"
+                                                              "set key outside right\nplot " + plot + "\n");
+    if (!p.written) std::cout << w.name << ": no plot: " << p.why << "\n";
   }
   std::cerr << "\r" << std::string(60, ' ') << "\r";
   std::cout << "\nwrote " << o.out_dir << "/<sweep>.csv and .png\n";

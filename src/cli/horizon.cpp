@@ -24,6 +24,7 @@
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 #include "files.hpp"
+#include "plot.hpp"
 #include "motion.hpp"
 
 namespace appell::cli {
@@ -193,33 +194,25 @@ int horizon(const horizon_options& given) {
                             {"tracks", js_tracks}};
   write_whole(dir, "summary.json", summary.dump(2) + "\n");
 
-  std::string plotted;
-  {
-    const std::filesystem::path tmp = dir / (".horizon.png" + std::to_string(::getpid()));
-    const std::string x = period > 0 ? "2" : "1";
-    std::string script = "set terminal png size 1000,560 noenhanced\nset output '" + tmp.string() +
-                         "'\nset datafile separator ','\nset logscale xy\nset autoscale xfix\nset format y '%.0e'\nset xlabel '" +
-                         (period > 0 ? std::string("periods") : std::string("t")) +
-                         "'\nset ylabel 'error against the 256-bit reference'\nset title '" + scene.model +
-                         ": error against time; dashed: Brouwer (eps sqrt(steps))'\nset grid\nset key below\nplot ";
-    const int first_col = period > 0 ? 3 : 2;
-    for (std::size_t k = 0; k < tracks.size(); ++k) {
-      const int col = first_col + 2 * static_cast<int>(k);
-      script += std::string(k ? ", " : "") + "'" + (dir / "horizon.csv").string() + "' every ::1 using " + x + ":($" +
-                std::to_string(col) + " > 0 ? $" + std::to_string(col) + " : 1/0) with lines lw 2 lc " +
-                std::to_string(k + 1) + " title '" + tracks[k].scalar + "', '' every ::1 using " + x + ":" +
-                std::to_string(col + 1) + " with lines dt 2 lc " + std::to_string(k + 1) + " notitle";
-    }
-    if (FILE* gp = popen("gnuplot 2>/dev/null", "w")) {
-      std::fputs((script + "\n").c_str(), gp);
-      pclose(gp);
-    }
-    std::error_code ec;
-    if (std::filesystem::exists(tmp)) {
-      std::filesystem::rename(tmp, dir / "horizon.png", ec);
-      plotted = ", horizon.png";
-    }
+  // The plot: each scalar's error (solid) and its Brouwer line (dashed, the same colour), with a
+  // key entry saying what the dashed lines are.
+  std::string script = "set datafile separator ','\nset logscale xy\nset autoscale xfix\nset format y '%.0e'\nset xlabel '" +
+                       (period > 0 ? std::string("periods") : std::string("t")) +
+                       "'\nset ylabel 'error against the 256-bit reference'\nset title " +
+                       gnuplot_quoted(scene.model + ": error against time") + "\nset grid\nset key below\nplot ";
+  const std::string x = period > 0 ? "2" : "1";
+  const int first_col = period > 0 ? 3 : 2;
+  const std::string file = gnuplot_quoted((dir / "horizon.csv").string());
+  for (std::size_t k = 0; k < tracks.size(); ++k) {
+    const int col = first_col + 2 * static_cast<int>(k);
+    script += std::string(k ? ", " : "") + file + " every ::1 using " + x + ":($" + std::to_string(col) + " > 0 ? $" +
+              std::to_string(col) + " : 1/0) with lines lw 2 lc " + std::to_string(k + 1) + " title " +
+              gnuplot_quoted(tracks[k].scalar) + ", '' every ::1 using " + x + ":" + std::to_string(col + 1) +
+              " with lines dt 2 lw 1.5 lc " + std::to_string(k + 1) + " notitle";
   }
+  script += ", NaN with lines dt 2 lw 1.5 lc rgb 'black' title \"dashed: Brouwer's law, eps sqrt(steps)\"\n";
+  const plot_outcome plot = render_png(dir / "horizon.png", script, 1000, 560);
+  const std::string plotted = plot_note(plot, dir / "horizon.png");
   std::cout << "horizon " << scene.model << " to t = " << o.t_end;
   if (period > 0) std::cout << " (" << t_end / period << " periods of " << period << ")";
   std::cout << "; reference: " << reference_kind << "\n" << table.str();

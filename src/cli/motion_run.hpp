@@ -17,6 +17,7 @@
 
 #include "files.hpp"
 #include "motion.hpp"
+#include "plot.hpp"
 
 #include "appell/io/model_motion.hpp"
 #include "appell/ode/enclose.hpp"
@@ -100,11 +101,9 @@ void column_names(const std::vector<ode::named_values<S>>& group, const std::str
   }
 }
 
-inline void plot(const std::string& script) {
-  if (FILE* gp = popen("gnuplot 2>/dev/null", "w")) {
-    std::fputs(script.c_str(), gp);
-    pclose(gp);
-  }
+/// A gnuplot datablock named $NAME holding `rows` (blank lines separate index blocks).
+inline std::string datablock(const std::string& name, const std::string& rows) {
+  return "$" + name + " << EOD\n" + rows + (rows.empty() || rows.back() == '\n' ? "" : "\n") + "EOD\n";
 }
 
 /// The precision asked for (--bits), recorded before the evaluation scope raises mpfi's working
@@ -235,24 +234,15 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
   write_whole(dir, "summary.json", summary.dump(2) + "\n");
   std::string plotted;
   if (!worst.empty()) {
-    const std::filesystem::path datf = dir / (".drift.dat" + std::to_string(::getpid()));
-    { std::ofstream(datf) << dat.str(); }
     const std::filesystem::path png = dir / "drift.png";
-    const std::filesystem::path tmp = dir / (".drift.png" + std::to_string(::getpid()));
-    std::string script = "set terminal png size 900,500 noenhanced\nset output '" + tmp.string() +
-                         "'\nset logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'relative drift |I(t) - I(0)| / |I(0)|, or |I(t)| where I = 0'\n"
+    std::string script = datablock("drift", dat.str()) + "set logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'relative drift |I(t) - I(0)| / |I(0)|, or |I(t)| where I = 0'\n"
                          "set title '" + scene.model + ", " + scalar_traits<T>::name + ", order " + std::to_string(order) +
                          "'\nset grid\nset key below\nplot ";
     for (std::size_t q = 0; q < worst.size(); ++q)
-      script += std::string(q ? ", " : "") + "'" + datf.string() + "' using 1:" + std::to_string(q + 2) + " with lines title '" +
-                rows.front().invariants[q].name + (rows.front().invariants[q].zero_in_truth ? " (|I|, 0 in truth)" : "") + "'";
-    plot(script + "\n");
-    std::filesystem::remove(datf);
-    std::error_code ec;
-    if (std::filesystem::exists(tmp)) {
-      std::filesystem::rename(tmp, png, ec);
-      plotted = ", drift.png";
-    }
+      script += std::string(q ? ", " : "") + "$drift using 1:" + std::to_string(q + 2) + " with lines title " +
+                gnuplot_quoted(rows.front().invariants[q].name +
+                               (rows.front().invariants[q].zero_in_truth ? " (|I|, 0 in truth)" : ""));
+    plotted = plot_note(render_png(png, script + "\n", 900, 500), png);
   }
   std::ostringstream out;
   out << "simulate " << scene.model << " in " << scalar_traits<T>::name << " (" << bits_text<T>() << "), order " << order
@@ -276,7 +266,7 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
 /// (its bounds) and, with mu, the margin mu - required mu (or the required mu without it);
 /// a margin below 0, or a normal force below 0, is a contact that fails.
 template <Scalar I>
-bool plot_contacts(const std::filesystem::path& dir, const std::string& csv, const std::vector<contact_track<I>>& tracks,
+plot_outcome plot_contacts(const std::filesystem::path& dir, const std::string& csv, const std::vector<contact_track<I>>& tracks,
                    const std::string& title) {
   std::ostringstream dat;
   std::string force_plot, margin_plot;
@@ -304,18 +294,11 @@ bool plot_contacts(const std::filesystem::path& dir, const std::string& csv, con
     }
     dat << "\n\n";
     const std::string idx = std::to_string(k);
-    force_plot += std::string(k ? ", " : "") + "DAT index " + idx + " using 1:2:3 with filledcurves title '" + c.name +
-                  ": normal force (enclosure over each step)'";
-    margin_plot += std::string(k ? ", " : "") + "DAT index " + idx + " using 1:4:5 with filledcurves title '" + c.name +
-                   (c.mu_text.empty() ? ": required mu'" : ": mu - required mu (mu = " + c.mu_text + ")'");
+    force_plot += std::string(k ? ", " : "") + "$contacts index " + idx + " using 1:2:3 with filledcurves title " +
+                  gnuplot_quoted(c.name + ": normal force (enclosure over each step)");
+    margin_plot += std::string(k ? ", " : "") + "$contacts index " + idx + " using 1:4:5 with filledcurves title " +
+                   gnuplot_quoted(c.name + (c.mu_text.empty() ? ": required mu" : ": mu - required mu (mu = " + c.mu_text + ")"));
   }
-  const std::filesystem::path datf = dir / (".contacts.dat" + std::to_string(::getpid()));
-  { std::ofstream(datf) << dat.str(); }
-  const std::filesystem::path tmp = dir / (".contacts.png" + std::to_string(::getpid()));
-  auto with_file = [&](std::string p) {
-    for (std::size_t at; (at = p.find("DAT")) != std::string::npos;) p.replace(at, 3, "'" + datf.string() + "'");
-    return p;
-  };
   // each failing contact's first failure: a line at its time, labelled at the top of the force
   // panel and at the foot of the margin panel (where the margin, still positive, leaves room)
   std::string marks, marks_low;
@@ -328,16 +311,13 @@ bool plot_contacts(const std::filesystem::path& dir, const std::string& csv, con
       marks += line + text + ", graph 0.92 right offset -0.5,0 tc rgb 'red'\n";
       marks_low += line + text + ", graph 0.08 right offset -0.5,0 tc rgb 'red'\n";
     }
-  plot("set terminal png size 900,700 noenhanced\nset output '" + tmp.string() + "'\nset multiplot layout 2,1 title '" +
-       title + ": can the contacts hold?'\nset grid\nset key below\nset xlabel 't'\nset ylabel 'N'\nset xzeroaxis lw 2\n" +
-       marks + "plot " + with_file(force_plot) + "\nunset arrow\nunset label\n" + marks_low + "set ylabel '" +
-       (any_mu ? "mu - required mu" : "required mu") + "'\nplot " +
-       with_file(margin_plot) + "\nunset multiplot\n");
-  std::filesystem::remove(datf);
-  std::error_code ec;
-  if (!std::filesystem::exists(tmp)) return false;
-  std::filesystem::rename(tmp, dir / "contacts.png", ec);
-  return !ec;
+  return render_png(dir / "contacts.png",
+                    datablock("contacts", dat.str()) + "set multiplot layout 2,1 title " +
+                        gnuplot_quoted(title + ": can the contacts hold?") +
+                        "\nset grid\nset key below\nset xlabel 't'\nset ylabel 'N'\nset xzeroaxis lw 2\n" + marks + "plot " +
+                        force_plot + "\nunset arrow\nunset label\n" + marks_low + "set ylabel '" +
+                        (any_mu ? "mu - required mu" : "required mu") + "'\nplot " + margin_plot + "\nunset multiplot\n",
+                    900, 700);
 }
 
 template <Scalar I>
@@ -521,26 +501,19 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
                 "contact,t0,t1,normal_force_lo,normal_force_hi,tangential_force_lo,tangential_force_hi,required_mu_lo,"
                 "required_mu_hi,verdict\n" + contact_csv.str());
   write_whole(dir, "summary.json", summary.dump(2) + "\n");
-  std::string plotted;
-  if (!tracks.empty() && plot_contacts(dir, contact_csv.str(), tracks, scene.model + ", " + scalar_traits<I>::name))
-    plotted += ", contacts.png";
-  {
-    const std::filesystem::path datf = dir / (".widths.dat" + std::to_string(::getpid()));
-    { std::ofstream(datf) << dat.str(); }
-    const std::filesystem::path tmp = dir / (".widths.png" + std::to_string(::getpid()));
-    plot("set terminal png size 900,500 noenhanced\nset output '" + tmp.string() +
-         "'\nset logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'width'\nset title '" + scene.model + ", " +
-         scalar_traits<I>::name + " (" + bits_text<I>() + "), order " +
-         std::to_string(order) + "'\nset grid\nset key below\nplot '" + datf.string() +
-         "' using 1:2 with lines title 'state at each step end (largest width)', '' using 1:3 with lines title "
-         "'invariants over each whole step (largest width; constant in truth)'\n");
-    std::filesystem::remove(datf);
-    std::error_code ec;
-    if (std::filesystem::exists(tmp)) {
-      std::filesystem::rename(tmp, dir / "widths.png", ec);
-      plotted = ", widths.png" + plotted;
-    }
-  }
+  std::string plotted =
+      plot_note(render_png(dir / "widths.png",
+                           datablock("widths", dat.str()) + "set logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'width'\nset title " +
+                               gnuplot_quoted(scene.model + ", " + scalar_traits<I>::name + " (" + bits_text<I>() + "), order " +
+                                              std::to_string(order)) +
+                               "\nset grid\nset key below\nplot $widths using 1:2 with lines title 'state at each step end (largest "
+                               "width)', '' using 1:3 with lines title 'invariants over each whole step (largest width; "
+                               "constant in truth)'\n",
+                           900, 500),
+                dir / "widths.png");
+  if (!tracks.empty())
+    plotted += plot_note(plot_contacts(dir, contact_csv.str(), tracks, scene.model + ", " + scalar_traits<I>::name),
+                         dir / "contacts.png");
   std::ostringstream out;
   out << "enclose " << scene.model << " in " << scalar_traits<I>::name << " (" << bits_text<I>() << "), order " << order << ": " << st.steps << " steps (" << st.rejected << " rejected) in " << st.seconds
       << " s\n";
@@ -571,23 +544,40 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
     if (contacts.empty()) throw input_error("validity: the scene has no contacts to judge (SCENES.md, \"contacts\")");
     const bool vary_mu = o.vary_field == "mu";
     const std::vector<std::string> names = prob.state_names();
+    const I lo0 = from_decimal<I>(o.vary_lo), hi0 = from_decimal<I>(o.vary_hi);
     int index = -1;
+    bool vary_parameter = false;  // a model parameter, the problem prepared again for each piece
     if (!vary_mu) {
       for (std::size_t i = 0; i < names.size(); ++i)
         if (names[i] == o.vary_field) index = static_cast<int>(i);
-      if (index < 0) {
+      if constexpr (requires { prob.with_parameter(o.vary_field, lo0, std::declval<vector_t<I>&>()); }) {
+        const std::vector<std::string> params = prob.parameter_names();
+        const auto p = std::find_if(params.begin(), params.end(), [&](const std::string& n) {
+          return n == o.vary_field || "parameters." + n == o.vary_field;
+        });
+        if (index < 0 && p != params.end()) {
+          vary_parameter = true;
+          std::optional<upward_rounding> mode;
+          if constexpr (scalar_traits<I>::needs_upward_rounding) mode.emplace();
+          const std::string why = prob.parameter_refusal(o.vary_field, scalar_traits<I>::hull(lo0, hi0));
+          if (!why.empty()) throw input_error("--vary: the parameter " + o.vary_field + " cannot vary: " + why);
+        }
+      }
+      if (index < 0 && !vary_parameter) {
         std::string known;
         for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-        throw input_error("--vary: '" + o.vary_field + "' is not a component of the motion's state (" + known + ") nor mu");
+        if constexpr (requires { prob.parameter_names(); })
+          for (const auto& n : prob.parameter_names()) known += ", " + n;
+        throw input_error("--vary: '" + o.vary_field + "' is not a component of the motion's state nor a parameter of the model (" +
+                          known + ") nor mu");
       }
-      if (prob.constrains(index, x0))
+      if (index >= 0 && prob.constrains(index, x0))
         throw input_error("--vary: " + o.vary_field + " enters a constraint at the state (a range of it would leave the "
                           "constraint); vary a free speed or a coordinate no constraint involves");
     }
     const I t_end = from_decimal<I>(o.t_end);
     const int order = o.order.value_or(default_order<I>());
     const double tol = o.tol.value_or(default_tol<I>());
-    const I lo0 = from_decimal<I>(o.vary_lo), hi0 = from_decimal<I>(o.vary_hi);
     const double total = span(lo0, hi0), resolution = o.resolution.value_or(total / 64);
     const double T = approx_double(t_end);
     const auto started = std::chrono::steady_clock::now();
@@ -605,7 +595,11 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
       }
       const I box = scalar_traits<I>::hull(a, b);
       vector_t<I> x = x0;
-      if (!vary_mu) x(index) = box;
+      if (index >= 0) x(index) = box;
+      std::optional<P> varied;  // the model with the parameter over the piece, its state moved to match
+      if constexpr (requires { prob.with_parameter(o.vary_field, box, x); })
+        if (vary_parameter) varied.emplace(prob.with_parameter(o.vary_field, box, x));
+      const P& model = varied ? *varied : prob;
       std::vector<contact_track<I>> tracks;
       for (const auto& [name, mu] : contacts) {
         contact_track<I> c;
@@ -618,7 +612,7 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
       auto contact_at = [&](const vector_t<I>& s, const std::string& name) {
         std::vector<ode::named_values<I>> r;
         try {
-          prob.results(s, r);
+          model.results(s, r);
         } catch (const std::exception&) {
           return contact_values<I>{I(0), I(0), false};
         }
@@ -628,7 +622,7 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
       bool out_of_time = false, proved_failure = false;
       vector_t<I> step_start = x;
       const ode::enclose_stats st = ode::enclose(
-          prob, x, t_end, order, tol, o.max_width, 2,
+          model, x, t_end, order, tol, o.max_width, 2,
           [&](const ode::enclosed_step<I>& s) {
             for (auto& c : tracks) {
               c.step(s.t0, s.t1, step_start, s.end, find_contact(s.results, c.name), contact_at(s.end, c.name), sink);
@@ -658,7 +652,7 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
         c.refine(
             8,
             [&](const vector_t<I>& s0, double h, const auto& on_step) {
-              return ode::enclose(prob, s0, I(h), order, tol, o.max_width, 2, [&](const ode::enclosed_step<I>& s) {
+              return ode::enclose(model, s0, I(h), order, tol, o.max_width, 2, [&](const ode::enclosed_step<I>& s) {
                        on_step(s.t0, s.t1, find_contact(s.results, c.name), s.end);
                      }).complete;
             },
@@ -747,23 +741,17 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
     write_whole(dir, "summary.json", summary.dump(2) + "\n");
     std::string plotted;
     {
-      const std::filesystem::path datf = dir / (".validity.dat" + std::to_string(::getpid()));
-      { std::ofstream(datf) << dat[0].str() << "\n\n" << dat[1].str() << "\n\n" << dat[2].str() << "\n"; }
-      const std::filesystem::path tmp = dir / (".validity.png" + std::to_string(::getpid()));
-      const std::string f = "'" + datf.string() + "'";
-      plot("set terminal png size 900,500 noenhanced\nset output '" + tmp.string() + "'\nset title '" + o.scene +
-           ": can the contacts hold on [0, " + o.t_end + "]? (" + scalar_traits<I>::name + ")'\nset xlabel '" + o.vary_field +
-           "'\nset ylabel 't'\nset yrange [0:" + std::to_string(T * 1.1) +
+      const std::string f = "$pieces";
+      const std::string data = datablock("pieces", dat[0].str() + "\n\n" + dat[1].str() + "\n\n" + dat[2].str());
+      const plot_outcome p = render_png(dir / "validity.png", data + "set title " +
+           gnuplot_quoted(o.scene + ": can the contacts hold on [0, " + o.t_end + "]? (" + scalar_traits<I>::name + ")") +
+           "\nset xlabel " + gnuplot_quoted(o.vary_field) + "\nset ylabel 't'\nset yrange [0:" + std::to_string(T * 1.1) +
            "]\nset grid\nset key below\nset style fill solid 0.5\nplot " + f +
            " index 0 using 1:2:3:4:5:6 with boxxyerror lc rgb 'forest-green' title 'holds over [0, T] (proved)', " + f +
            " index 1 using 1:2:3:4:5:6 with boxxyerror lc rgb 'red' title 'fails (proved): the first failure lies within the box', " + f +
-           " index 2 using 1:2:3:4:5:6 with boxxyerror lc rgb 'gray' title 'undecided at the resolution (holds below the box)'\n");
-      std::filesystem::remove(datf);
-      std::error_code ec;
-      if (std::filesystem::exists(tmp)) {
-        std::filesystem::rename(tmp, dir / "validity.png", ec);
-        plotted = ", validity.png";
-      }
+           " index 2 using 1:2:3:4:5:6 with boxxyerror lc rgb 'gray' title 'undecided at the resolution (holds below the box)'\n",
+           900, 500);
+      plotted = plot_note(p, dir / "validity.png");
     }
     std::ostringstream out;
     out << "validity of " << o.scene << "'s contacts on [0, " << o.t_end << "] for " << o.vary_field << " in [" << o.vary_lo

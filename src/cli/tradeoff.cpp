@@ -30,6 +30,7 @@
 
 #include "accuracy.hpp"
 #include "files.hpp"
+#include "plot.hpp"
 
 namespace appell::cli {
 namespace {
@@ -156,37 +157,32 @@ int tradeoff(const tradeoff_options& o) {
               << figure(r.ns, 5) << std::setw(12) << figure(r.ratio, 3) << std::setw(10) << figure(r.digits, 3) << std::setw(12)
               << (std::isnan(r.rel_width) ? "-" : figure(r.rel_width, 2)) << (r.note.empty() ? "" : "  " + r.note) << "\n";
   }
-  // The plot: correct digits against cost (log scale), one labelled point per row.
-  const std::filesystem::path dat = std::filesystem::temp_directory_path() / ("appell-tradeoff-" + std::to_string(::getpid()) + ".dat");
+  // The plot: correct digits against cost, both on log scales (the fixed-precision types from 13
+  // to 34 digits apart, mpfr and mpfi up to 300), one key entry per row (no label over a point:
+  // mpfr and mpfi at one precision lie side by side), circles for point types, squares for the
+  // interval types (their digits certified).
+  std::string data = "$rows << EOD\n", series;
+  int k = 0;
+  for (const auto& r : rows) {
+    if (std::isnan(r.ns) || !(r.digits > 0)) continue;
+    const bool rigorous = r.scalar == "interval" || r.scalar == "mpfi";
+    const std::string name = r.scalar + (r.scalar.rfind("mp", 0) == 0 ? " " + std::to_string(r.bits) + " bits" : "") +
+                             (rigorous ? " (rigorous)" : "");
+    data += figure(r.ratio, 6) + " " + figure(r.digits, 6) + "\n";
+    series += std::string(k ? ", " : "") + "$rows every ::" + std::to_string(k) + "::" + std::to_string(k) +
+              " using 1:2 with points pt " + (rigorous ? "5" : "7") + " ps 1.6 lc " + std::to_string(k + 1) + " title " +
+              gnuplot_quoted(name);
+    ++k;
+  }
+  data += "EOD\n";
   const std::filesystem::path png = std::filesystem::path(o.out_dir) / "tradeoff.png";
-  const std::filesystem::path png_tmp = std::filesystem::path(o.out_dir) / (".tradeoff.png" + std::to_string(::getpid()));
-  {
-    std::ofstream f(dat);
-    for (const auto& r : rows)
-      if (!std::isnan(r.ns))
-        f << r.ratio << " " << r.digits << " \"" << r.scalar << (r.bits > 64 && r.scalar.rfind("mp", 0) == 0 ? " " + std::to_string(r.bits) : "")
-          << "\" " << (r.scalar == "interval" || r.scalar == "mpfi" ? 1 : 0) << "\n";
-  }
-  const std::string script = "set terminal png size 900,600 noenhanced\nset output '" + png_tmp.string() +
-                             "'\nset logscale x\nset xlabel 'cost: time per evaluation / double'\n"
-                             "set ylabel 'correct decimal digits (intervals: certified)'\nset title 'appell tradeoff: " +
-                             scene.model + "'\nset grid\nset key top left\n"
-                             "plot '" + dat.string() + "' using 1:($4==0?$2:1/0) with points pt 7 ps 1.5 title 'point types', "
-                             "'' using 1:($4==1?$2:1/0) with points pt 5 ps 1.5 title 'interval types (rigorous)', "
-                             "'' using 1:2:3 with labels offset 0,1 notitle\n";
-  FILE* gp = popen("gnuplot 2>&1", "w");
-  bool plotted = false;
-  if (gp) {
-    std::fputs(script.c_str(), gp);
-    plotted = pclose(gp) == 0 && std::filesystem::exists(png_tmp);
-  }
-  if (plotted) std::filesystem::rename(png_tmp, png);
-  else std::filesystem::remove(png_tmp);
-  std::filesystem::remove(dat);
-  std::cout << "\nwrote " << csv.string();
-  if (plotted) std::cout << " and " << png.string();
-  else std::cout << " (no plot: gnuplot not found; install gnuplot-nox)";
-  std::cout << "\n";
+  const plot_outcome plotted =
+      render_png(png, data + "set logscale xy\nset xlabel 'cost: time per evaluation / double'\n"
+                        "set ylabel 'correct decimal digits (intervals: certified)'\nset ytics (10, 15, 20, 30, 50, 100, 200, 300)\n"
+                        "set yrange [8:500]\nset title " + gnuplot_quoted("appell tradeoff: " + scene.model) +
+                        "\nset grid\nset key outside right top\nplot " + series + "\n",
+                 1000, 600);
+  std::cout << "\nwrote " << csv.string() << plot_note(plotted, png) << "\n";
   return 0;
 }
 

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "appell/ode/jet.hpp"
+#include "appell/scalar/decimal.hpp"
 #include "appell/scenes/euler_body.hpp"
 #include "appell/scenes/rolling_sphere.hpp"
 #include "appell/scenes/top_on_cone.hpp"
@@ -261,6 +262,7 @@ struct rolling_sphere_problem {
   vec3<T> force, torque;  ///< total applied force through G (weight included) and couple, fixed axes
   bool contact = false;   ///< the contact "surface" judged (a scene's "contact"), with mu as written
   std::string mu{};
+  bool A_from_radius = false;  ///< A = 2/5 M a^2 (the scene gives no A): it follows a varied radius
   static constexpr int dim = 6;
   static std::vector<std::string> state_names() {
     return {"center_x", "center_y", "center_z", "omega_x", "omega_y", "omega_z"};
@@ -281,6 +283,46 @@ struct rolling_sphere_problem {
     if (plane) return k == 2;
     if (!sphere && k == 2) return false;
     return !exactly_zero(x(k));
+  }
+  /// The parameters `appell validity --vary` can take over a range, named by their scene fields.
+  std::vector<std::string> parameter_names() const {
+    if (surface.type == surface_type::plane) return {"sphere.radius"};
+    return {"sphere.radius", "surface.radius"};
+  }
+  /// Why the parameter cannot take every value of `range` ("" when it can): the radii positive,
+  /// and inside a sphere or cylinder the sphere's radius below the surface's.
+  std::string parameter_refusal(const std::string& name, const T& range) const {
+    const T r = name == "sphere.radius" ? range : a, b = name == "surface.radius" ? range : surface.b;
+    if (!certainly_positive(r)) return "the sphere's radius must be positive over the whole range";
+    if (surface.type == surface_type::plane) return "";
+    if (!certainly_positive(b)) return "the surface's radius must be positive over the whole range";
+    if (surface.inside && !certainly_positive(T(b - r)))
+      return "inside the surface, the sphere's radius must stay below the surface's over the whole range";
+    return "";
+  }
+  /// The same problem with the parameter `name` at `value` (an interval in validity), its state x
+  /// moved to match: the centre along the normal onto the new surface of centres (so that n, the
+  /// contact point's direction, omega and omega . n = 0 are kept), A = 2/5 M a^2 following a
+  /// sphere's radius when the scene gives no A.
+  rolling_sphere_problem with_parameter(const std::string& name, const T& value, vector_t<T>& x) const {
+    using std::sqrt;
+    rolling_sphere_problem p = *this;
+    if (name == "sphere.radius") {
+      p.a = value;
+      if (A_from_radius) p.A = rational<T>(2, 5) * mass * value * value;
+    } else {
+      p.surface.b = value;
+    }
+    if (surface.type == surface_type::plane) {
+      x(2) = p.a;  // the plane z = 0: the centre at height a
+      return p;
+    }
+    const int n = surface.type == surface_type::sphere ? 3 : 2;  // the radial components
+    T norm2 = T(0);
+    for (int i = 0; i < n; ++i) norm2 += x(i) * x(i);
+    const T factor = p.surface.rho(p.a) / sqrt(norm2);
+    for (int i = 0; i < n; ++i) x(i) = T(x(i) * factor);
+    return p;
   }
   template <class S>
   rolling_sphere_result<S> motion(const vector_t<S>& x, bool checks, bool reactions = true) const {

@@ -41,6 +41,7 @@ struct rolling_sphere_model {
     T center_moved = T(0), omega_moved = T(0);  ///< the projection's steps along n (when projected)
     bool contact = false;  ///< the contact "surface" judged, with mu as written ("" for none)
     std::string mu;
+    bool A_from_radius = false;  ///< A not given: 2/5 M a^2 (validity's --vary sphere.radius keeps it so)
   };
   template <Scalar T>
   static prepared<T> prepare(const input& in) {
@@ -49,6 +50,7 @@ struct rolling_sphere_model {
     m.M = value<T>(in.mass);
     m.a = value<T>(in.radius);
     m.A = in.A ? value<T>(*in.A) : rational<T>(2, 5) * m.M * m.a * m.a;
+    m.A_from_radius = !in.A;
     m.surface.type = in.surface;
     m.surface.inside = in.inside;
     if (in.b) m.surface.b = value<T>(*in.b);

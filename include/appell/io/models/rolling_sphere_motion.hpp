@@ -20,6 +20,7 @@ struct model_motion<rolling_sphere_model> {
     ode::rolling_sphere_problem<T> p{m.M, m.A, m.a, m.surface, m.F, m.tau};
     p.contact = m.contact;
     p.mu = m.mu;
+    p.A_from_radius = m.A_from_radius;
     return {std::move(p), x0};
   }
   static std::vector<std::string> state_fields(const rolling_sphere_input&) {

@@ -233,6 +233,74 @@ struct system_problem {
     return on_holonomic_constraint(i);
   }
 
+  /// The parameters `appell validity --vary` can take over a range: every one of the file's
+  /// (named as written, or as parameters.NAME); parameter_refusal says which cannot.
+  std::vector<std::string> parameter_names() const {
+    const system_definition& d = *model->in->def;
+    return {d.names.begin(), d.names.begin() + d.vars.parameters};
+  }
+  /// The variable of the parameter `name` (NAME or parameters.NAME), -1 if none.
+  int parameter_variable(std::string name) const {
+    const system_definition& d = *model->in->def;
+    if (name.rfind("parameters.", 0) == 0) name = name.substr(11);
+    for (int p = 0; p < d.vars.parameters; ++p)
+      if (d.names[static_cast<std::size_t>(p)] == name) return p;
+    return -1;
+  }
+  /// The parameters whose value follows p's (p and those defined from it, at any depth).
+  std::vector<bool> following(int p) const {
+    const system_definition& d = *model->in->def;
+    std::vector<bool> f(static_cast<std::size_t>(d.vars.parameters), false);
+    f[static_cast<std::size_t>(p)] = true;
+    for (int r : d.parameter_order)  // each after those it uses
+      for (int s = 0; s < d.vars.parameters; ++s)
+        if (f[static_cast<std::size_t>(s)] && d.parameters[static_cast<std::size_t>(r)]->depends_on(s))
+          f[static_cast<std::size_t>(r)] = true;
+    return f;
+  }
+  /// Why the parameter cannot take a range ("" when it can): one written as an expression of
+  /// others (vary one it uses), or one a holonomic constraint involves (the state's coordinates
+  /// would have to move with it to stay on the constraint; a velocity constraint is solved at
+  /// every value, so its parameters can vary).
+  std::string parameter_refusal(const std::string& name, const T&) const {
+    const system_definition& d = *model->in->def;
+    const int p = parameter_variable(name);
+    for (int s = 0; s < d.vars.parameters; ++s)
+      if (d.parameters[static_cast<std::size_t>(p)]->depends_on(s))
+        return "it is defined from the parameter " + d.names[static_cast<std::size_t>(s)] + "; vary that one";
+    const std::vector<bool> f = following(p);
+    for (const auto& c : d.constraints) {
+      if (!c.holonomic) continue;
+      for (int s = 0; s < d.vars.parameters; ++s)
+        if (f[static_cast<std::size_t>(s)] && c.f.value->depends_on(s))
+          return "it enters the holonomic constraint " + c.name +
+                 " (the state's coordinates would have to move with it to stay on the constraint)";
+    }
+    return "";
+  }
+  /// The same motion with the parameter `name` at `value` (an interval in validity), those defined
+  /// from it evaluated again; the state is kept (no holonomic constraint involves it:
+  /// parameter_refusal; the solved speeds follow from the constraints at every evaluation).
+  system_problem with_parameter(const std::string& name, const T& value, vector_t<T>&) const {
+    const system_definition& d = *model->in->def;
+    const int p = parameter_variable(name);
+    auto m = std::make_shared<system_model::prepared<T>>(*model);
+    std::vector<T> x(static_cast<std::size_t>(d.vars.size()), T(0));
+    for (int s = 0; s < d.vars.parameters; ++s) x[static_cast<std::size_t>(s)] = m->sys.parameters[static_cast<std::size_t>(s)];
+    x[static_cast<std::size_t>(p)] = value;
+    m->sys.parameters[static_cast<std::size_t>(p)] = value;
+    const std::vector<bool> f = following(p);
+    for (int r : d.parameter_order) {
+      const auto i = static_cast<std::size_t>(r);
+      if (r == p || !f[i]) continue;
+      m->sys.parameters[i] = compiled_expression<T>(*d.parameters[i]).eval_at(x.data());
+      x[i] = m->sys.parameters[i];
+    }
+    system_problem out = *this;
+    out.model = std::move(m);
+    return out;
+  }
+
   /// The contacts to judge along the motion: each one's name and mu as written (empty: none).
   std::vector<std::pair<std::string, std::string>> contacts() const {
     std::vector<std::pair<std::string, std::string>> out;
