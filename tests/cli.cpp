@@ -811,6 +811,9 @@ BOOST_AUTO_TEST_CASE(simulate_and_enclose_refuse_bad_input_naming_the_flag) {
   expect_bad_input("simulate " + good_scene + " --t-end 1 --order 1 --out " + out, "--order");
   expect_bad_input("simulate " + good_scene + " --t-end 1 --order 61 --out " + out, "--order");
   expect_bad_input("simulate " + good_scene + " --t-end 1 --order 2x --out " + out, "--order");
+  expect_bad_input("simulate " + good_scene + " --t-end 1 --order +12 --out " + out, "--order");
+  expect_bad_input("simulate " + good_scene + " --t-end 1 --order ' 12' --out " + out, "--order");
+  expect_bad_input("tradeoff " + good_scene + " --reps +5", "--reps");
   expect_bad_input("simulate " + good_scene + " --t-end 1 --every 2 --out " + out, "--every");
   expect_bad_input("simulate " + good_scene + " --t-end 1 --every -0.1 --out " + out, "--every");
   expect_bad_input("simulate " + good_scene + " --t-end 1 --tol 0 --out " + out, "--tol");

@@ -688,14 +688,10 @@ BOOST_AUTO_TEST_CASE(validity_over_a_model_parameter_splits_at_the_closed_form_s
   }
 }
 
-BOOST_AUTO_TEST_CASE(validity_of_the_built_in_sphere_gives_the_same_pieces_on_one_thread_and_on_three) {
-  // The built-in rolling_sphere looping in the bowl (rolling_sphere_bowl_contact.json, v0 = 4.5)
-  // over [0, T], T = 0.3, for mu in [0, 0.4]: the friction it needs up to T is at most mu* = the
-  // largest friction / N over [0, theta(T)] (theta(T) from the quadrature t(theta) = T); the
-  // contact holds on [0, T] iff mu > mu*. The pieces, their verdicts and bounds byte for byte the
-  // same whatever the threads.
+namespace {
+/// The loop (loop_truth): the largest friction / N it needs over [0, T], T before the lift-off.
+truth_t largest_friction_ratio_up_to(const truth_t& T) {
   const loop_truth L;
-  const truth_t T("0.3");
   truth_t lo = 0, hi = L.lift_off();
   for (int i = 0; i < 120; ++i) {  // theta(T): t(theta) increases
     const truth_t m = (lo + hi) / 2;
@@ -709,6 +705,50 @@ BOOST_AUTO_TEST_CASE(validity_of_the_built_in_sphere_gives_the_same_pieces_on_on
   }
   // between grid points the ratio (increasing below pi/2, as here) is at most its value at theta(T)
   BOOST_TEST_REQUIRE(theta_T < boost::math::constants::half_pi<truth_t>());
+  return mu_star;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(the_mu_flag_judges_every_contact_with_its_value) {
+  // --mu MU in place of the scene's mu (0.5): the built-in sphere's loop needs at most mu* =
+  // 0.198304 up to T = 0.3 (the closed form above), so --mu 0.15 fails and --mu 0.25 holds; the
+  // summary says the mu it used. Refused: a negative or non-decimal mu, --mu with --vary mu, a
+  // scene without contacts, a command that judges none along a motion.
+  const truth_t mu_star = largest_friction_ratio_up_to(truth_t("0.3"));
+  BOOST_TEST_REQUIRE(truth_t("0.15") < mu_star);
+  BOOST_TEST_REQUIRE(mu_star < truth_t("0.25"));
+  const std::string text = scene_text("rolling_sphere_bowl_contact.json");
+  for (const std::string mu : {"0.15", "0.25"}) {
+    const run_result r = enclose(text, "--t-end 0.3 --mu " + mu, "mu_flag_" + mu);
+    BOOST_TEST_REQUIRE(r.status == 0, r.out);
+    const nlohmann::json& c = r.summary["contacts"]["surface"];
+    BOOST_TEST(c["verdict"] == (mu == "0.15" ? "fails" : "holds"), mu << ": " << r.out);
+    BOOST_TEST(c["mu"] == mu);
+  }
+  const auto base = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts";
+  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_bowl_contact.json";
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {"validity " + scene + " --vary omega_y=40:45 --t-end 0.1 --mu -0.1", "--mu: expected a decimal >= 0"},
+      {"validity " + scene + " --vary omega_y=40:45 --t-end 0.1 --mu 1e", "--mu: expected a decimal >= 0"},
+      {"validity " + scene + " --vary mu=0:0.4 --t-end 0.1 --mu 0.3", "--mu: fixes mu"},
+      {"enclose " APPELL_SOURCE_DIR "/data/scenes/euler_body.json --t-end 0.1 --mu 0.3", "--mu: the scene has no contacts"},
+      {"simulate " + scene + " --t-end 0.1 --mu 0.3", "--mu: applies to enclose and validity"}};
+  for (const auto& [args, why] : refused) {
+    const std::string cmd = std::string(APPELL_BINARY) + " " + args + " --out " + (base / "refused_mu").string() + " >" +
+                            (base / "refused_mu.txt").string() + " 2>&1";
+    const int raw = std::system(cmd.c_str());
+    BOOST_TEST((WIFEXITED(raw) && WEXITSTATUS(raw) == 2), args);
+    BOOST_TEST(slurp((base / "refused_mu.txt").string()).find(why) != std::string::npos, slurp((base / "refused_mu.txt").string()));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(validity_of_the_built_in_sphere_gives_the_same_pieces_on_one_thread_and_on_three) {
+  // The built-in rolling_sphere looping in the bowl (rolling_sphere_bowl_contact.json, v0 = 4.5)
+  // over [0, T], T = 0.3, for mu in [0, 0.4]: the friction it needs up to T is at most mu* = the
+  // largest friction / N over [0, theta(T)] (theta(T) from the quadrature t(theta) = T); the
+  // contact holds on [0, T] iff mu > mu*. The pieces, their verdicts and bounds byte for byte the
+  // same whatever the threads.
+  const truth_t mu_star = largest_friction_ratio_up_to(truth_t("0.3"));
   const std::string scene = APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_bowl_contact.json";
   const std::string args = "--vary mu=0:0.4 --t-end 0.3 --resolution 0.01";
   const auto base = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts";

@@ -37,10 +37,10 @@ constexpr const char* usage_text =
     "       appell simulate SCENE --t-end T [--scalar NAME] [--bits N] [--order N] [--tol E] [--every DT]\n"
     "                       [--max-seconds S] [--quiet] --out DIR\n"
     "       appell enclose SCENE --t-end T [--scalar interval|mpfi] [--bits N] [--order N] [--tol E]\n"
-    "                      [--max-width W] [--max-seconds S] [--locate TOL] [--until-contact-fails] [--quiet]\n"
+    "                      [--max-width W] [--max-seconds S] [--mu MU] [--locate TOL] [--until-contact-fails] [--quiet]\n"
     "                      --out DIR\n"
     "       appell validity SCENE --vary FIELD=lo:hi --t-end T [--resolution R] [--scalar interval|mpfi]\n"
-    "                       [--bits N] [--order N] [--tol E] [--max-seconds S] [--jobs N] [--quiet] --out DIR\n"
+    "                       [--bits N] [--order N] [--tol E] [--max-seconds S] [--mu MU] [--jobs N] [--quiet] --out DIR\n"
     "       appell horizon SCENE --t-end T [--every DT] [--scalars LIST] [--quiet] --out DIR\n"
     "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
     "  --bits N: precision of mpfr and mpfi (default 256): mpfi gets exactly N bits; mpfr the\n"
@@ -142,12 +142,12 @@ int main(int argc, char** argv) {
       if ((a == "--out" || a == "--reps") && i + 1 >= argc) return usage(a + ": missing value");
       if (a == "--out") t.out_dir = argv[++i];
       else if (a == "--reps") {
-        const std::string r = argv[++i];
-        if (r.empty() || r.find_first_not_of("0123456789") != std::string::npos || r.size() > 7 || std::stoi(r) < 1) {
-          std::cerr << "appell: --reps: expected a positive integer, got '" << one_line(r) << "'\n";
+        unsigned reps = 0;
+        if (const std::string why = appell::cli::parse_integer("--reps", argv[++i], 1, 9999999, reps); !why.empty()) {
+          std::cerr << "appell: " << why << "\n";
           return 2;
         }
-        t.reps = std::stoi(r);
+        t.reps = static_cast<int>(reps);
       } else if (!a.empty() && a[0] == '-') return usage("unknown option '" + a + "'");
       else if (t.scene.empty()) t.scene = a;
       else return usage("more than one scene given");

@@ -51,7 +51,7 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
     };
     if (a == "--t-end" || a == "--every" || a == "--out" || a == "--scalar" || a == "--bits" || a == "--order" ||
         a == "--tol" || a == "--max-width" || a == "--max-seconds" || a == "--locate" || a == "--vary" ||
-        a == "--resolution" || a == "--jobs") {
+        a == "--resolution" || a == "--jobs" || a == "--mu") {
       if (!value(v)) return a + ": missing value";
       if (a == "--t-end") o.t_end = v;
       else if (a == "--every") o.every = v;
@@ -60,14 +60,9 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
       else if (a == "--bits") {
         if (std::string why = parse_bits(v, o.bits); !why.empty()) return why;
       } else if (a == "--order") {
-        try {
-          std::size_t used = 0;
-          const long n = std::stol(v, &used);
-          if (used != v.size() || n < 2 || n > 60) return "--order: expected an integer from 2 to 60, got '" + v + "'";
-          o.order = static_cast<int>(n);
-        } catch (const std::exception&) {
-          return "--order: expected an integer from 2 to 60, got '" + v + "'";
-        }
+        unsigned n = 0;
+        if (std::string why = parse_integer("--order", v, 2, 60, n); !why.empty()) return why;
+        o.order = static_cast<int>(n);
       } else if (a == "--jobs") {
         unsigned n = 0;
         if (std::string why = parse_integer("--jobs", v, 1, 1024, n); !why.empty()) return why;
@@ -92,6 +87,14 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
         }
         if (decimal_sign_of_sum({{1, o.vary_hi}, {-1, o.vary_lo}}) <= 0)
           return "--vary: the range's lower bound must be below its upper bound, got '" + v + "'";
+      } else if (a == "--mu") {
+        bool nonnegative = false;
+        try {
+          nonnegative = decimal_sign_of_sum({{1, v}}) >= 0;
+        } catch (const std::exception&) {
+        }
+        if (!nonnegative) return "--mu: expected a decimal >= 0 (every contact's friction coefficient), got '" + printable(v) + "'";
+        o.mu = v;
       } else if (a == "--resolution") {
         if (std::string why = positive(o.resolution); !why.empty()) return why;
       } else if (a == "--locate") {
@@ -129,8 +132,11 @@ int motion(const motion_options& given) {
   } else if (!o.every.empty()) {
     throw input_error("--every: enclose writes every step; --every applies to simulate");
   }
+  if (o.mu && o.command != "enclose" && o.command != "validity")
+    throw input_error("--mu: applies to enclose and validity (every contact's friction coefficient)");
   if (o.command == "validity") {
     if (o.vary_field.empty()) throw input_error("--vary: required (FIELD=lo:hi, the range to split)");
+    if (o.mu && o.vary_field == "mu") throw input_error("--mu: fixes mu, which --vary mu varies; give one of them");
     if (o.locate || o.until_contact_fails)
       throw input_error(std::string(o.locate ? "--locate" : "--until-contact-fails") + ": applies to enclose, not validity");
     if (o.resolution && *o.resolution >= from_decimal<double>(o.vary_hi) - from_decimal<double>(o.vary_lo))

@@ -49,6 +49,8 @@ struct motion_options {
   /// pieces until each is proved to hold or to fail over [0, T], or is narrower than resolution.
   std::string vary_field, vary_lo, vary_hi;
   std::optional<double> resolution;
+  /// enclose, validity: every contact's friction coefficient, in place of the scene's (--mu).
+  std::optional<std::string> mu;
   /// validity: the threads that run its pieces (--jobs; 0: one per core).
   int jobs = 0;
   /// validity under appell-mpi: the other ranks (pieces.hpp); null: this process alone.

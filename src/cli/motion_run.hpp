@@ -353,13 +353,15 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   // The contacts' verdicts (contact_track.hpp), when the scene has contacts.
   std::vector<contact_track<I>> tracks;
   if constexpr (requires { prob.contacts(); })
-    for (const auto& [name, mu] : prob.contacts()) {
+    for (const auto& [name, written] : prob.contacts()) {
+      const std::string mu = o.mu.value_or(written);  // --mu in place of the scene's
       contact_track<I> c;
       c.name = name;
       c.mu_text = mu;
       if (!mu.empty()) c.mu = from_decimal<I>(mu);
       tracks.push_back(std::move(c));
     }
+  if (o.mu && tracks.empty()) throw input_error("--mu: the scene has no contacts to judge (SCENES.md, \"contacts\")");
   auto contact_at = [&](const vector_t<I>& x, const std::string& name) {
     std::vector<ode::named_values<I>> r;
     try {
@@ -540,7 +542,9 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
   if constexpr (!requires { prob.contacts(); }) {
     throw input_error("validity: the model " + scene.model + " has no contacts (a system file's \"contacts\")");
   } else {
-    const auto contacts = prob.contacts();
+    auto contacts = prob.contacts();
+    if (o.mu)  // --mu: every contact's friction coefficient in place of the scene's
+      for (auto& c : contacts) c.second = *o.mu;
     if (contacts.empty()) throw input_error("validity: the scene has no contacts to judge (SCENES.md, \"contacts\")");
     const bool vary_mu = o.vary_field == "mu";
     const std::vector<std::string> names = prob.state_names();
