@@ -679,7 +679,9 @@ BOOST_AUTO_TEST_CASE(validity_over_a_model_parameter_splits_at_the_closed_form_s
       {system_scene, "A=0.001:0.002", "defined from the parameter"},
       {built_in, "sphere.radius=0.5:1.5", "must stay below the surface's"},
       {built_in, "sphere.radius=-0.1:0.1", "must be positive"},
+      {system_scene, "parameters.A=0.001:0.002", "defined from the parameter"},
       {built_in, "sphere.mass=1:2", "nor a parameter of the model"},
+      {built_in, "parameters.sphere.radius=0.05:0.06", "nor a parameter of the model"},
       {APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk_friction.json", "a=0.2:0.4", "enters the holonomic constraint ground"}};
   for (const auto& [scene, vary, why] : refused) {
     const auto dir = base / "refused_parameter";

@@ -102,9 +102,9 @@ int extremes(const extremes_options& o) {
     std::string data, plot;
     int block = 0;
     for (const std::string& s : scalars) {
-      data += "$" + std::string("s") + std::to_string(block) + " << EOD\n";
-      for (const auto& [x, d] : series[s]) data += figure(x, 17) + " " + figure(d, 6) + "\n";
-      data += "EOD\n";
+      std::string rows;
+      for (const auto& [x, d] : series[s]) rows += figure(x, 17) + " " + figure(d, 6) + "\n";
+      data += datablock("s" + std::to_string(block), rows);
       if (!series[s].empty())
         plot += std::string(plot.empty() ? "" : ", ") + "$s" + std::to_string(block) + " with linespoints lw 2 title " +
                 gnuplot_quoted(s);

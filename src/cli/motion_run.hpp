@@ -101,11 +101,6 @@ void column_names(const std::vector<ode::named_values<S>>& group, const std::str
   }
 }
 
-/// A gnuplot datablock named $NAME holding `rows` (blank lines separate index blocks).
-inline std::string datablock(const std::string& name, const std::string& rows) {
-  return "$" + name + " << EOD\n" + rows + (rows.empty() || rows.back() == '\n' ? "" : "\n") + "EOD\n";
-}
-
 /// The precision asked for (--bits), recorded before the evaluation scope raises mpfi's working
 /// precision by its guard bits.
 inline thread_local unsigned requested_bits = 0;
@@ -265,6 +260,17 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
 /// DIR/contacts.png from contacts.csv's rows: per contact, the normal force over each step
 /// (its bounds) and, with mu, the margin mu - required mu (or the required mu without it);
 /// a margin below 0, or a normal force below 0, is a contact that fails.
+/// The contacts a motion judges: each one's name and mu, --mu in place of the scene's (empty:
+/// the model has none).
+template <class P>
+std::vector<std::pair<std::string, std::string>> contacts_to_judge(const P& prob, const motion_options& o) {
+  std::vector<std::pair<std::string, std::string>> contacts;
+  if constexpr (requires { prob.contacts(); }) contacts = prob.contacts();
+  if (o.mu)
+    for (auto& c : contacts) c.second = *o.mu;
+  return contacts;
+}
+
 template <Scalar I>
 plot_outcome plot_contacts(const std::filesystem::path& dir, const std::string& csv, const std::vector<contact_track<I>>& tracks,
                    const std::string& title) {
@@ -352,15 +358,13 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   progress_meter meter("enclose", approx_double(t_end), o.quiet, o.max_seconds);
   // The contacts' verdicts (contact_track.hpp), when the scene has contacts.
   std::vector<contact_track<I>> tracks;
-  if constexpr (requires { prob.contacts(); })
-    for (const auto& [name, written] : prob.contacts()) {
-      const std::string mu = o.mu.value_or(written);  // --mu in place of the scene's
-      contact_track<I> c;
-      c.name = name;
-      c.mu_text = mu;
-      if (!mu.empty()) c.mu = from_decimal<I>(mu);
-      tracks.push_back(std::move(c));
-    }
+  for (const auto& [name, mu] : contacts_to_judge(prob, o)) {
+    contact_track<I> c;
+    c.name = name;
+    c.mu_text = mu;
+    if (!mu.empty()) c.mu = from_decimal<I>(mu);
+    tracks.push_back(std::move(c));
+  }
   if (o.mu && tracks.empty()) throw input_error("--mu: the scene has no contacts to judge (SCENES.md, \"contacts\")");
   auto contact_at = [&](const vector_t<I>& x, const std::string& name) {
     std::vector<ode::named_values<I>> r;
@@ -542,9 +546,7 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
   if constexpr (!requires { prob.contacts(); }) {
     throw input_error("validity: the model " + scene.model + " has no contacts (a system file's \"contacts\")");
   } else {
-    auto contacts = prob.contacts();
-    if (o.mu)  // --mu: every contact's friction coefficient in place of the scene's
-      for (auto& c : contacts) c.second = *o.mu;
+    const auto contacts = contacts_to_judge(prob, o);
     if (contacts.empty()) throw input_error("validity: the scene has no contacts to judge (SCENES.md, \"contacts\")");
     const bool vary_mu = o.vary_field == "mu";
     const std::vector<std::string> names = prob.state_names();
@@ -555,11 +557,15 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
       for (std::size_t i = 0; i < names.size(); ++i)
         if (names[i] == o.vary_field) index = static_cast<int>(i);
       if constexpr (requires { prob.with_parameter(o.vary_field, lo0, std::declval<vector_t<I>&>()); }) {
-        const std::vector<std::string> params = prob.parameter_names();
-        const auto p = std::find_if(params.begin(), params.end(), [&](const std::string& n) {
-          return n == o.vary_field || "parameters." + n == o.vary_field;
-        });
-        if (index < 0 && p != params.end()) {
+        // a model's parameter as it names them; a system file's also as parameters.NAME (its own lookup)
+        bool known = false;
+        if constexpr (requires { prob.parameter_variable(o.vary_field); }) {
+          known = prob.parameter_variable(o.vary_field) >= 0;
+        } else {
+          const std::vector<std::string> params = prob.parameter_names();
+          known = std::find(params.begin(), params.end(), o.vary_field) != params.end();
+        }
+        if (index < 0 && known) {
           vary_parameter = true;
           std::optional<upward_rounding> mode;
           if constexpr (scalar_traits<I>::needs_upward_rounding) mode.emplace();

@@ -18,6 +18,10 @@ std::string gnuplot_quoted(const std::string& text) {
   return out + "'";
 }
 
+std::string datablock(const std::string& name, const std::string& rows) {
+  return "$" + name + " << EOD\n" + rows + (rows.empty() || rows.back() == '\n' ? "" : "\n") + "EOD\n";
+}
+
 plot_outcome render_png(const std::filesystem::path& png, const std::string& body, int width, int height) {
   const std::filesystem::path dir = png.parent_path().empty() ? std::filesystem::path(".") : png.parent_path();
   const std::string tag = std::to_string(::getpid());

@@ -24,6 +24,9 @@ plot_outcome render_png(const std::filesystem::path& png, const std::string& bod
 /// " (no plot: WHY)".
 std::string plot_note(const plot_outcome& p, const std::filesystem::path& png);
 
+/// A gnuplot datablock named $NAME holding `rows` (blank lines separate index blocks).
+std::string datablock(const std::string& name, const std::string& rows);
+
 /// `text` quoted for a gnuplot string in single quotes ('' for ').
 std::string gnuplot_quoted(const std::string& text);
 

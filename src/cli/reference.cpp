@@ -895,15 +895,14 @@ int score(const score_options& o) {
               << *o.min_digits << " correct digits";
   std::cout << "\n";
   if (!o.plot.empty()) {  // the digits per quantity: boxes for the median, points for the worst state
-    std::string data = "$scores << EOD\n";
+    std::string rows;
     for (std::size_t c = 1; c < other.header.size(); ++c)
-      data += std::to_string(c) + " " + std::to_string(std::isinf(scores[c].median) ? 17.0 : std::min(scores[c].median, 17.0)) +
+      rows += std::to_string(c) + " " + std::to_string(std::isinf(scores[c].median) ? 17.0 : std::min(scores[c].median, 17.0)) +
               " " + std::to_string(std::isinf(scores[c].worst_digits) ? 17.0 : std::min(scores[c].worst_digits, 17.0)) + " " +
               "\"" + other.header[c] + "\"\n";
-    data += "EOD\n";
     const plot_outcome p = render_png(
         o.plot,
-        data + "set style fill solid 0.6\nset boxwidth 0.6\nset yrange [0:17.5]\nset ylabel 'correct decimal digits'\n"
+        datablock("scores", rows) + "set style fill solid 0.6\nset boxwidth 0.6\nset yrange [0:17.5]\nset ylabel 'correct decimal digits'\n"
                "set key below\nset title " + gnuplot_quoted("appell score: " + std::filesystem::path(o.other).filename().string()) +
                "\nset xtics rotate by -30\nset grid y\nplot $scores using 1:2:xtic(4) with boxes title 'median over the states', "
                "'' using 1:3 with points pt 7 ps 1.5 title 'worst state'" +

@@ -161,23 +161,22 @@ int tradeoff(const tradeoff_options& o) {
   // to 34 digits apart, mpfr and mpfi up to 300), one key entry per row (no label over a point:
   // mpfr and mpfi at one precision lie side by side), circles for point types, squares for the
   // interval types (their digits certified).
-  std::string data = "$rows << EOD\n", series;
+  std::string rows_data, series;
   int k = 0;
   for (const auto& r : rows) {
     if (std::isnan(r.ns) || !(r.digits > 0)) continue;
     const bool rigorous = r.scalar == "interval" || r.scalar == "mpfi";
     const std::string name = r.scalar + (r.scalar.rfind("mp", 0) == 0 ? " " + std::to_string(r.bits) + " bits" : "") +
                              (rigorous ? " (rigorous)" : "");
-    data += figure(r.ratio, 6) + " " + figure(r.digits, 6) + "\n";
+    rows_data += figure(r.ratio, 6) + " " + figure(r.digits, 6) + "\n";
     series += std::string(k ? ", " : "") + "$rows every ::" + std::to_string(k) + "::" + std::to_string(k) +
               " using 1:2 with points pt " + (rigorous ? "5" : "7") + " ps 1.6 lc " + std::to_string(k + 1) + " title " +
               gnuplot_quoted(name);
     ++k;
   }
-  data += "EOD\n";
   const std::filesystem::path png = std::filesystem::path(o.out_dir) / "tradeoff.png";
   const plot_outcome plotted =
-      render_png(png, data + "set logscale xy\nset xlabel 'cost: time per evaluation / double'\n"
+      render_png(png, datablock("rows", rows_data) + "set logscale xy\nset xlabel 'cost: time per evaluation / double'\n"
                         "set ylabel 'correct decimal digits (intervals: certified)'\nset ytics (10, 15, 20, 30, 50, 100, 200, 300)\n"
                         "set yrange [8:500]\nset title " + gnuplot_quoted("appell tradeoff: " + scene.model) +
                         "\nset grid\nset key outside right top\nplot " + series + "\n",
