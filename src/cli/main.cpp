@@ -17,6 +17,7 @@
 #include "extremes.hpp"
 #include "linearize.hpp"
 #include "motion.hpp"
+#include "appell/io/urdf.hpp"
 #include "reference.hpp"
 #include "tradeoff.hpp"
 
@@ -42,6 +43,7 @@ constexpr const char* usage_text =
     "       appell validity SCENE --vary FIELD=lo:hi --t-end T [--resolution R] [--scalar interval|mpfi]\n"
     "                       [--bits N] [--order N] [--tol E] [--max-seconds S] [--mu MU] [--jobs N] [--quiet] --out DIR\n"
     "       appell horizon SCENE --t-end T [--every DT] [--scalars LIST] [--quiet] --out DIR\n"
+    "       appell convert ROBOT.urdf | URDF_SCENE\n"
     "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
     "  --bits N: precision of mpfr and mpfi (default 256): mpfi gets exactly N bits; mpfr the\n"
     "            smallest count >= N that Boost's decimal-digit precision can set (reported)\n"
@@ -76,6 +78,8 @@ constexpr const char* usage_text =
     "           against a 256-bit reference (closed form where known); the error against time, Brouwer's\n"
     "           law as the goal line, digits kept per decade of periods; DIR/horizon.csv, summary.json,\n"
     "           horizon.png\n"
+    "  convert: a URDF robot as the `system` scene file appell reads it as (stdout): its links a tree,\n"
+    "           every number the URDF's decimal; from a \"urdf\" scene, with its state and torques\n"
     "  simulate, enclose, horizon and reference --trajectory move the models: ";
 
 struct options {
@@ -104,6 +108,17 @@ class cerr_silenced {
 int usage(const std::string& why) {
   std::cerr << "appell: " << one_line(why) << " (appell --help lists the commands and options)\n";
   return 2;
+}
+
+/// The result on stdout: exit 0, or 4 when it could not be written.
+int print(const std::string& out) {
+  std::cout << out;
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << "appell: internal error: could not write the result to stdout\n";
+    return 4;
+  }
+  return 0;
 }
 
 std::string dispatch(const appell::scene_input& scene, const options& o) {
@@ -218,6 +233,14 @@ int main(int argc, char** argv) {
       return exit_status_of_current_exception();
     }
   }
+  if (command == "convert") {
+    if (argc != 3) return usage("convert: expected one URDF file or \"urdf\" scene");
+    try {
+      return print(appell::convert_to_system(argv[2]));
+    } catch (...) {
+      return exit_status_of_current_exception();
+    }
+  }
   if (command != "eval" && command != "linearize") return usage("unknown command '" + command + "'");
   options o;
   for (int i = 2; i < argc; ++i) {
@@ -256,13 +279,7 @@ int main(int argc, char** argv) {
         out = dispatch(scene, o);
       }
     }
-    std::cout << out;
-    std::cout.flush();
-    if (!std::cout) {
-      std::cerr << "appell: internal error: could not write the result to stdout\n";
-      return 4;
-    }
-    return 0;
+    return print(out);
   } catch (...) {
     return exit_status_of_current_exception();
   }

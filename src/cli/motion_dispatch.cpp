@@ -31,7 +31,7 @@ R with_moving_model(const scene_input& scene, const std::string& command, F&& f,
   std::optional<R> r;
   auto try_one = [&]<class Model>(std::type_identity<Model> m) {
     if constexpr (moving_model<Model>)
-      if (!r && scene.model == Model::name) r.emplace(f(m));
+      if (!r && (scene.entry ? scene.entry->module : scene.model) == Model::name) r.emplace(f(m));
   };
   (try_one(std::type_identity<Models>{}), ...);
   if (!r)

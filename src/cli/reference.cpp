@@ -22,6 +22,7 @@
 #include <stdexcept>
 
 #include "appell/io/scene.hpp"
+#include "appell/io/urdf.hpp"
 #include "files.hpp"
 #include "flags.hpp"
 #include "plot.hpp"
@@ -473,6 +474,7 @@ struct reference_run::impl {
   std::size_t first = 0;                        ///< 1 when the first column names the states
   std::vector<field_path> paths;                ///< per value column
   std::vector<std::vector<std::string>> values;  ///< per state, per value column (checked)
+  bool urdf = false;                             ///< a "urdf" scene (its file made absolute)
 };
 
 reference_run::reference_run(const reference_options& o) {
@@ -496,6 +498,15 @@ reference_run::reference_run(const reference_options& o) {
       }
     if (!replaced) r.root.members.push_back({"project", tol});
   }
+  // A URDF robot: its file found from the scene's directory wherever the states are computed
+  // (threads, MPI ranks), and with --inputs binary64 each state's scene is taken as the system
+  // file it reads as, so that the URDF's own numbers are rounded too (compute()).
+  const json_value* model = r.root.type == json_value::kind::object ? r.root.find("model") : nullptr;
+  r.urdf = model && model->text == "urdf";
+  if (r.urdf)
+    for (auto& m : r.root.members)
+      if (m.key == "file" && m.value.type == json_value::kind::string && std::filesystem::path(m.value.text).is_relative())
+        m.value.text = (std::filesystem::path(o.scene).parent_path() / m.value.text).string();
   const scene_input base_scene = read_scene(r.root);  // the scene itself must be valid
   if (!o.trajectory.empty()) {
     r.states = trajectory_states(o, base_scene);
@@ -608,6 +619,10 @@ reference_state_output reference_run::compute(std::size_t i) const {
     s.inputs.emplace_back(r.states.header[c + r.first], r.values[i][c]);
   }
   try {
+    if (r.urdf && r.o.binary64_inputs) {  // the robot's own numbers as an engine reads them
+      scene_json = parse_json(urdf_scene_system_text(scene_json));
+      to_binary64(scene_json, "");
+    }
     const scene_input scene = read_scene(scene_json);
     if (r.o.scalar == "interval") {
       certify<interval>(scene, s);

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <limits>
 
+#include "appell/io/files.hpp"
 #include "appell/io/validate.hpp"
 
 namespace appell {
@@ -108,19 +109,29 @@ double error_amplification(const scene_input& scene) {
   }
 }
 
-scene_input read_scene_file(const std::string& path) {
+std::string& scene_directory() {
+  static thread_local std::string dir;
+  return dir;
+}
+
+std::string read_text_file(const std::string& path, std::size_t limit, const std::string& what) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw input_error(path + ": is a directory, not a scene file");
+  if (std::filesystem::is_directory(path, ec)) throw input_error(path + ": is a directory, not " + what);
   std::ifstream file(path, std::ios::binary);
-  if (!file) throw input_error(path + ": cannot read the scene file");
-  // read at most one byte past the limit: /dev/zero or a pipe must not hang us
-  std::string text(json_limits::bytes + 1, '\0');
+  if (!file) throw input_error(path + ": cannot read " + what);
+  std::string text(limit + 1, '\0');
   file.read(text.data(), static_cast<std::streamsize>(text.size()));
   text.resize(static_cast<std::size_t>(file.gcount()));
-  if (file.bad()) throw input_error(path + ": cannot read the scene file");
-  if (text.size() > json_limits::bytes)
-    throw input_error(path + ": larger than the limit of " + std::to_string(json_limits::bytes) + " bytes");
+  if (file.bad()) throw input_error(path + ": cannot read " + what);
+  if (text.size() > limit) throw input_error(path + ": larger than the limit of " + std::to_string(limit) + " bytes");
+  return text;
+}
+
+scene_input read_scene_file(const std::string& path) {
+  const std::string text = read_text_file(path, json_limits::bytes, "a scene file");
   if (text.empty()) throw input_error(path + ": empty, not a scene file");
+  // paths in the scene (a URDF's "file") are relative to its directory
+  const scene_directory_scope scope(std::filesystem::path(path).parent_path().string());
   return read_scene(parse_json(text));
 }
 

@@ -158,6 +158,8 @@ struct model_entry {
   std::string name;
   std::shared_ptr<const model_input> (*read)(object_reader& scene);
   per_standard_scalar<prepare_fn> prepare;
+  /// The model module whose inputs the reader makes (its name; "system" for "urdf").
+  std::string module;
 };
 
 /// Every model compiled into the library, in the order of CMake's APPELL_MODELS.

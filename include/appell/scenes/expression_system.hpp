@@ -68,8 +68,31 @@ struct differentiated_expression {
   shared_expression dt;                               ///< d value / dt, or null
 };
 
+/// A link's joint (SCENES.md, "links of a tree"): how the link hangs from its parent (another
+/// link, or the ground).  The link's frame L is the joint's frame: on the parent's frame P,
+///   L = P . (origin, Rz(yaw) Ry(pitch) Rx(roll)) . (its motion),
+/// the motion a rotation by q about `axis` (revolute), a translation q axis (prismatic), or none
+/// (fixed); `axis` on L's axes (the rotation leaves it in place).  URDF's conventions.
+struct system_joint_definition {
+  enum class kind { revolute, prismatic, fixed };
+  std::string name;
+  kind type = kind::fixed;
+  int parent = -1;      ///< the parent link's body number; -1: the ground (the fixed axes)
+  int coordinate = -1;  ///< revolute, prismatic: the coordinate the joint's motion is
+  std::array<shared_expression, 3> origin, rpy, axis;  ///< constants (null: 0)
+  shared_expression effort;  ///< the actuator's torque (revolute) or force (prismatic), in q, u, t; null: none
+  /// The axis as written is along +-e_along (two components literally 0): its rotations are then
+  /// elementary, exactly; -1: another direction (normalized, Rodrigues' formula).
+  int along = -1, sign = 1;
+};
+
 struct system_body_definition {
   std::string name;
+  /// A link of a tree: placed by its joint (no centre, orientation or omega); its centre of
+  /// mass at `com` on the link's axes, its inertia on the axes turned by `com_rpy` from the link's.
+  bool is_link = false;
+  system_joint_definition joint;
+  std::array<shared_expression, 3> com, com_rpy;
   shared_expression mass;
   std::array<shared_expression, 6> inertia;  ///< central, on body axes: xx yy zz xy yz zx (null: 0)
   std::array<differentiated_expression, 3> center;  ///< G on the fixed axes
@@ -151,6 +174,7 @@ struct system_definition {
   std::vector<std::vector<std::pair<int, shared_expression>>> kinematics_du;  ///< (j, dq'_i/du_j) not 0
   std::array<shared_expression, 3> gravity;    ///< null: none
   std::vector<system_body_definition> bodies;
+  std::vector<int> link_order;  ///< the links' body numbers, each after its parent
   std::vector<system_constraint_definition> constraints;
   std::vector<system_wrench_definition> wrenches;
   std::vector<system_contact_definition> contacts;
@@ -170,6 +194,17 @@ inline shared_expression offset(const shared_expression& point, const shared_exp
   const expression& p = point ? *point : zero;
   return std::make_shared<const expression>(
       expression::difference(p, *center, p.where() + " - (" + center->where() + ")"));
+}
+
+/// R <- R R_axis(a), for cos a and sin a: an elementary rotation applied on the right.
+template <class M, class S>
+void turn_columns(M& R, int axis, const S& ca, const S& sa) {
+  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+  for (int row = 0; row < 3; ++row) {
+    const S ri = R(row, i), rj = R(row, j);
+    R(row, i) = ri * ca + rj * sa;
+    R(row, j) = rj * ca - ri * sa;
+  }
 }
 
 /// An optional expression on a tape (an empty one is 0): at(v) reads its value
@@ -270,6 +305,176 @@ struct compiled_system {
     std::array<detail::compiled_term<T>, 3> direction;
   };
   std::vector<contact> contacts;
+  /// A link of a tree (system_joint_definition): its joint's constants in T, from the
+  /// parameters' values (refresh_links); the effort on the body tape.
+  struct link {
+    int body = -1, parent = -1, coordinate = -1;  ///< parent: a body number, -1 the ground
+    system_joint_definition::kind type = system_joint_definition::kind::fixed;
+    int along = -1;
+    vec3<T> origin = zero_matrix<vec3<T>>(), axis = zero_matrix<vec3<T>>(), com = zero_matrix<vec3<T>>();
+    mat3<T> R0 = mat3<T>::Identity(), Rin = mat3<T>::Identity();  ///< the joint's fixed rotation (L's axes to P's), the inertia axes' (to L's)
+    bool R0_identity = true, Rin_identity = true;
+    detail::compiled_term<T> effort;
+  };
+  std::vector<link> links;   ///< in the definition's link order (each after its parent)
+  std::vector<int> link_of;  ///< each body's place in links; -1: not a link
+
+  /// The links' constants from the parameters' current values (after they change: with_parameter).
+  void refresh_links() {
+    std::vector<T> x(static_cast<std::size_t>(def->vars.size()), T(0));
+    for (std::size_t i = 0; i < parameters.size(); ++i) x[i] = parameters[i];
+    auto constant = [&](const shared_expression& e) { return e ? compiled_expression<T>(*e).eval_at(x.data()) : T(0); };
+    auto rpy = [&](const std::array<shared_expression, 3>& a, bool& identity) {
+      // URDF: R = Rz(yaw) Ry(pitch) Rx(roll); a factor written 0 (null) is left out, exactly.
+      mat3<T> R = mat3<T>::Identity();
+      identity = true;
+      for (int k = 2; k >= 0; --k) {
+        if (!a[static_cast<std::size_t>(k)]) continue;
+        identity = false;
+        using std::sin, std::cos;
+        const T angle = constant(a[static_cast<std::size_t>(k)]);
+        detail::turn_columns(R, k, T(cos(angle)), T(sin(angle)));
+      }
+      return R;
+    };
+    for (link& L : links) {
+      const system_body_definition& b = def->bodies[static_cast<std::size_t>(L.body)];
+      const system_joint_definition& j = b.joint;
+      for (std::size_t i = 0; i < 3; ++i) {
+        L.origin(static_cast<Eigen::Index>(i)) = constant(j.origin[i]);
+        L.com(static_cast<Eigen::Index>(i)) = constant(b.com[i]);
+      }
+      L.R0 = rpy(j.rpy, L.R0_identity);
+      L.Rin = rpy(b.com_rpy, L.Rin_identity);
+      L.axis = vec3<T>(T(0), T(0), T(0));
+      if (j.type == system_joint_definition::kind::fixed) continue;
+      if (j.along >= 0) {
+        L.axis(j.along) = T(j.sign);
+        continue;
+      }
+      using std::sqrt;
+      T n2 = T(0);
+      for (std::size_t i = 0; i < 3; ++i) n2 += sqr(constant(j.axis[i]));
+      const T n = sqrt(n2);
+      for (std::size_t i = 0; i < 3; ++i) L.axis(static_cast<Eigen::Index>(i)) = constant(j.axis[i]) / n;
+    }
+  }
+
+  /// One link's motion (on its own axes) and what its actuators do to it, in S.
+  template <class S>
+  struct link_state {
+    vec3<S> omega, velocity, gravity;  ///< angular velocity, its origin's velocity, g: on L's axes
+    vec3<S> offset;                    ///< L's origin from P's, on P's axes
+    S c = S(1), s = S(0);              ///< cos q, sin q (revolute)
+    vec3<S> force = vec3<S>::Zero(), couple = vec3<S>::Zero();  ///< by actuators: force at G, couple; L's axes
+  };
+  /// w on the parent's axes to the link's (X^T w), and back (X w); X = R0 Rot(axis, q).
+  template <class S>
+  vec3<S> to_link(const link& L, const link_state<S>& st, const vec3<S>& w) const {
+    vec3<S> r = L.R0_identity ? w : transpose_times(L.R0, w);
+    if (L.type == system_joint_definition::kind::revolute) r = rotate(L, st, r, true);
+    return r;
+  }
+  template <class S>
+  vec3<S> to_parent(const link& L, const link_state<S>& st, const vec3<S>& w) const {
+    vec3<S> r = L.type == system_joint_definition::kind::revolute ? rotate(L, st, w, false) : w;
+    return L.R0_identity ? r : times(L.R0, r);
+  }
+  template <class S>
+  static vec3<S> times(const mat3<T>& R, const vec3<S>& w) {
+    vec3<S> r;
+    for (int i = 0; i < 3; ++i)
+      r(i) = detail::from_base<S>(R(i, 0)) * w(0) + detail::from_base<S>(R(i, 1)) * w(1) + detail::from_base<S>(R(i, 2)) * w(2);
+    return r;
+  }
+  template <class S>
+  static vec3<S> transpose_times(const mat3<T>& R, const vec3<S>& w) {
+    vec3<S> r;
+    for (int i = 0; i < 3; ++i)
+      r(i) = detail::from_base<S>(R(0, i)) * w(0) + detail::from_base<S>(R(1, i)) * w(1) + detail::from_base<S>(R(2, i)) * w(2);
+    return r;
+  }
+  template <class S>
+  static vec3<S> scaled(const vec3<T>& a, const S& x) {
+    return vec3<S>(detail::from_base<S>(a(0)) * x, detail::from_base<S>(a(1)) * x, detail::from_base<S>(a(2)) * x);
+  }
+  /// Rot(axis, q) w, or its transpose: elementary about e_along, else Rodrigues'
+  /// w cos q + (a x w) sin q + a (a . w)(1 - cos q).
+  template <class S>
+  vec3<S> rotate(const link& L, const link_state<S>& st, const vec3<S>& w, bool transpose) const {
+    if (L.along >= 0) {
+      const int i = (L.along + 1) % 3, j = (L.along + 2) % 3;
+      const bool negative = (L.axis(L.along) < T(0)) != transpose;
+      const S sn = negative ? S(-st.s) : st.s;
+      vec3<S> r = w;
+      r(i) = st.c * w(i) - sn * w(j);
+      r(j) = sn * w(i) + st.c * w(j);
+      return r;
+    }
+    vec3<S> a;
+    for (int k = 0; k < 3; ++k) a(k) = detail::from_base<S>(L.axis(k));
+    const vec3<S> axw = cross(a, w);
+    const S aw = dot(a, w), vers = S(1) - st.c;
+    const S sn = transpose ? S(-st.s) : st.s;
+    vec3<S> r;
+    for (int k = 0; k < 3; ++k) r(k) = w(k) * st.c + axw(k) * sn + a(k) * (aw * vers);
+    return r;
+  }
+  /// Every link's motion at the coordinates q, rates qd, gravity g (fixed axes) and the body
+  /// tape's node values v (the efforts), in link order.
+  template <class S>
+  std::vector<link_state<S>> link_states(const vector_t<S>& q, const vector_t<S>& qd, const vec3<S>& g, const S* v) const {
+    using K = system_joint_definition::kind;
+    std::vector<link_state<S>> out(links.size());
+    for (std::size_t k = 0; k < links.size(); ++k) {
+      const link& L = links[k];
+      link_state<S>& st = out[k];
+      const link_state<S>* p = L.parent >= 0 ? &out[static_cast<std::size_t>(link_of[static_cast<std::size_t>(L.parent)])] : nullptr;
+      const S qk = L.coordinate >= 0 ? q(L.coordinate) : S(0), qdk = L.coordinate >= 0 ? qd(L.coordinate) : S(0);
+      if (L.type == K::revolute) {
+        using std::sin, std::cos;
+        st.c = cos(qk);
+        st.s = sin(qk);
+      }
+      for (int i = 0; i < 3; ++i) st.offset(i) = detail::from_base<S>(L.origin(i));
+      if (L.type == K::prismatic) st.offset += times(L.R0, scaled(L.axis, qk));
+      const vec3<S> wp = p ? p->omega : vec3<S>(vec3<S>::Zero()), vp = p ? p->velocity : vec3<S>(vec3<S>::Zero());
+      st.omega = to_link(L, st, wp);
+      st.velocity = to_link(L, st, vec3<S>(vp + cross(wp, st.offset)));
+      st.gravity = to_link(L, st, p ? p->gravity : g);
+      if (L.type == K::revolute) st.omega += scaled(L.axis, qdk);
+      if (L.type == K::prismatic) st.velocity += scaled(L.axis, qdk);
+    }
+    // The actuators: +effort on the link, -effort on its parent (a couple about the axis; a force
+    // along it, on the parent at the point where the link's G is, so that the pair works
+    // effort * q' and nothing else).
+    for (std::size_t k = 0; k < links.size(); ++k) {
+      const link& L = links[k];
+      if (!L.effort) continue;
+      const S tau = L.effort.at(v);
+      link_state<S>& st = out[k];
+      link_state<S>* p = L.parent >= 0 ? &out[static_cast<std::size_t>(link_of[static_cast<std::size_t>(L.parent)])] : nullptr;
+      const vec3<S> along = scaled(L.axis, tau);
+      const vec3<S> back = p ? to_parent(L, st, along) : vec3<S>(vec3<S>::Zero());
+      if (L.type == K::revolute) {
+        st.couple += along;
+        if (p) p->couple -= back;
+      } else if (L.type == K::prismatic) {
+        st.force += along;
+        if (p) {
+          p->force -= back;
+          vec3<S> com_k, com_p;
+          for (int i = 0; i < 3; ++i) {
+            com_k(i) = detail::from_base<S>(L.com(i));
+            com_p(i) = detail::from_base<S>(links[static_cast<std::size_t>(link_of[static_cast<std::size_t>(L.parent)])].com(i));
+          }
+          const vec3<S> arm = st.offset + to_parent(L, st, com_k) - com_p;
+          p->couple -= cross(arm, back);
+        }
+      }
+    }
+    return out;
+  }
 
   explicit compiled_system(const system_definition& d) : def(&d) {
     parameters.assign(d.parameters.size(), T(0));
@@ -372,6 +577,20 @@ struct compiled_system {
       for (std::size_t i = 0; i < 3; ++i) c.direction[i] = detail::compiled_term<T>(constraint_tape, k.direction[i]);
       contacts.push_back(std::move(c));
     }
+    link_of.assign(d.bodies.size(), -1);
+    for (int b : d.link_order) {
+      const system_joint_definition& j = d.bodies[static_cast<std::size_t>(b)].joint;
+      link L;
+      L.body = b;
+      L.parent = j.parent;
+      L.coordinate = j.coordinate;
+      L.type = j.type;
+      L.along = j.along;
+      L.effort = detail::compiled_term<T>(body_tape, j.effort);
+      link_of[static_cast<std::size_t>(b)] = static_cast<int>(links.size());
+      links.push_back(std::move(L));
+    }
+    refresh_links();
   }
 
   /// The variable list at (q, u, t), parameters first.
@@ -424,8 +643,37 @@ struct expression_system {
     const S* v = values.data();
     vec3<S> g = vec3<S>::Zero();
     for (int i = 0; i < 3; ++i) g(i) = c->gravity[static_cast<std::size_t>(i)].at(v);
-    for (const auto& b : c->bodies) {
+    std::vector<typename compiled_system<T>::template link_state<S>> links;
+    if (!c->links.empty()) links = c->link_states(q, qd, g, v);
+    for (std::size_t bi = 0; bi < c->bodies.size(); ++bi) {
+      const auto& b = c->bodies[bi];
       body_state<S> s;
+      if (c->link_of[bi] >= 0) {  // a link: on its inertia's axes, which turn with it
+        const auto k = static_cast<std::size_t>(c->link_of[bi]);
+        const auto& L = c->links[k];
+        const auto& st = links[k];
+        s.mass = b.mass.at(v);
+        vec3<S> com;
+        for (int i = 0; i < 3; ++i) com(i) = detail::from_base<S>(L.com(i));
+        const vec3<S> vg = st.velocity + cross(st.omega, com);
+        vec3<S> f;
+        for (int i = 0; i < 3; ++i) f(i) = s.mass * st.gravity(i) + st.force(i);
+        s.omega = st.omega;
+        s.velocity = vg;
+        s.force = f;
+        s.couple = st.couple;
+        if (!L.Rin_identity) {
+          s.omega = compiled_system<T>::transpose_times(L.Rin, s.omega);
+          s.velocity = compiled_system<T>::transpose_times(L.Rin, s.velocity);
+          s.force = compiled_system<T>::transpose_times(L.Rin, s.force);
+          s.couple = compiled_system<T>::transpose_times(L.Rin, s.couple);
+        }
+        s.frame_rate = s.omega;
+        s.frame_is_body = true;
+        if (b.has_inertia) s.inertia = b.inertia_on_body_axes(v);
+        out.push_back(s);
+        continue;
+      }
       s.mass = b.mass.at(v);
       for (int i = 0; i < 3; ++i) {
         const auto k = static_cast<std::size_t>(i);
@@ -587,13 +835,8 @@ std::vector<vec3<S>> rotation_axes(const std::vector<std::pair<int, compiled_dif
   for (const auto& [axis, angle] : rotations) {
     axes.push_back(vec3<S>(R.col(axis)));
     using std::sin, std::cos;
-    const S a0 = angle.value.at(v), ca = cos(a0), sa = sin(a0);
-    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
-    for (int row = 0; row < 3; ++row) {  // R <- R R_axis(a0)
-      const S ri = R(row, i), rj = R(row, j);
-      R(row, i) = ri * ca + rj * sa;
-      R(row, j) = rj * ca - ri * sa;
-    }
+    const S a0 = angle.value.at(v);
+    turn_columns(R, axis, S(cos(a0)), S(sin(a0)));
   }
   return axes;
 }

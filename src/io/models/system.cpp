@@ -334,6 +334,147 @@ void set_reference_motion(linearize_input& li, const system_input& in) {
 
 }  // namespace
 
+/// A link's fields (SCENES.md, "links of a tree"): "joint" {name, parent, type, coordinate,
+/// origin, rpy, axis, effort}, "mass" and "inertia" (optional together: a massless frame),
+/// "inertial" {xyz, rpy}: its centre of mass and inertia axes on the link's axes.
+void read_link(builder& b, object_reader& r, system_body_definition& body, const std::vector<std::string>& coordinates,
+               std::vector<std::string>& link_parents) {
+  using K = system_joint_definition::kind;
+  system_definition& def = b.def;
+  body.is_link = true;
+  for (const char* key : {"center", "orientation", "omega", "axes", "velocity", "force", "couple"})
+    if (r.has(key))
+      throw input_error(r.path(key) + ": a link is placed by its joint (no \"" + key +
+                        "\"; its centre of mass is \"inertial\", on its own axes)");
+  auto constant3 = [&](object_reader& o, const std::string& key, bool required) {
+    std::array<shared_expression, 3> out;
+    if (!o.has(key)) {
+      if (required) (void)o.raw(key);
+      return out;
+    }
+    const json_value& v = o.raw(key);
+    if (v.type != json_value::kind::array || v.items.size() != 3)
+      throw input_error(o.path(key) + ": expected a list of 3 expressions (parameters only)");
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::string where = o.path(key) + "[" + std::to_string(i) + "]";
+      auto e = b.constant(expression_text(v.items[i], where), where);
+      if (!e->is_zero()) out[i] = e;
+    }
+    return out;
+  };
+  if (r.has("mass")) {
+    body.mass = b.constant(expression_text(r.raw("mass"), r.path("mass")), r.path("mass"));
+    if (r.has("inertia")) {
+      const json_value& v = r.raw("inertia");
+      if (v.type != json_value::kind::array || v.items.size() != 6)
+        throw input_error(r.path("inertia") + ": expected 6 components (xx yy zz xy yz zx) about the centre of mass");
+      for (std::size_t i = 0; i < 6; ++i) {
+        const std::string where = r.path("inertia") + "[" + std::to_string(i) + "]";
+        auto e = b.constant(expression_text(v.items[i], where), where);
+        if (!e->is_zero()) body.inertia[i] = e;
+      }
+    }
+  } else if (r.has("inertia") || r.has("inertial")) {
+    throw input_error(r.path(r.has("inertia") ? "inertia" : "inertial") + ": a link with inertia needs its \"mass\"");
+  }
+  if (r.has("inertial")) {
+    object_reader in = r.object("inertial");
+    body.com = constant3(in, "xyz", false);
+    body.com_rpy = constant3(in, "rpy", false);
+    in.finish();
+  }
+  system_joint_definition& j = body.joint;
+  object_reader o = r.object("joint");
+  j.name = o.has("name") ? o.string("name") : body.name;
+  if (!is_identifier(j.name))
+    throw input_error(o.path("name") + ": '" + printable(j.name) + "' is not a name (a letter or _, then letters, digits, _)");
+  link_parents.resize(def.bodies.size() + 1);
+  link_parents.back() = o.has("parent") ? o.string("parent") : "";
+  const std::string type = o.string("type");
+  if (type == "revolute") j.type = K::revolute;
+  else if (type == "prismatic") j.type = K::prismatic;
+  else if (type == "fixed") j.type = K::fixed;
+  else throw input_error(o.path("type") + ": expected \"revolute\", \"prismatic\" or \"fixed\", got \"" + printable(type) + "\"");
+  j.origin = constant3(o, "origin", false);
+  j.rpy = constant3(o, "rpy", false);
+  if (j.type == K::fixed) {
+    for (const char* key : {"coordinate", "axis", "effort"})
+      if (o.has(key)) throw input_error(o.path(key) + ": a fixed joint has no motion (no \"" + key + "\")");
+  } else {
+    const std::string q = o.string("coordinate");
+    const auto it = std::find(coordinates.begin(), coordinates.end(), q);
+    if (it == coordinates.end()) throw input_error(o.path("coordinate") + ": '" + printable(q) + "' is not a coordinate");
+    j.coordinate = static_cast<int>(it - coordinates.begin());
+    for (const auto& other : def.bodies)
+      if (other.is_link && other.joint.coordinate == j.coordinate)
+        throw input_error(o.path("coordinate") + ": '" + q + "' is already the coordinate of joint " + other.joint.name);
+    j.axis = constant3(o, "axis", true);
+    int written = 0;
+    for (std::size_t i = 0; i < 3; ++i)
+      if (j.axis[i]) ++written, j.along = static_cast<int>(i);
+    if (written == 0) throw input_error(o.path("axis") + ": the axis is 0");
+    if (written > 1) j.along = -1;
+    if (o.has("effort")) j.effort = b.parse(expression_text(o.raw("effort"), o.path("effort")), o.path("effort"));
+  }
+  o.finish();
+  r.finish();
+}
+
+/// Each link's parent found by name, and the links ordered each after its parent (a link with
+/// two parents cannot be written; a loop is refused).
+void order_links(system_definition& def, const std::vector<std::string>& parents) {
+  const std::size_t n = def.bodies.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    auto& body = def.bodies[i];
+    if (!body.is_link || i >= parents.size() || parents[i].empty()) continue;
+    const auto it = std::find_if(def.bodies.begin(), def.bodies.end(),
+                                 [&](const system_body_definition& x) { return x.name == parents[i]; });
+    if (it == def.bodies.end())
+      throw input_error("bodies." + body.name + ".joint.parent: no body named '" + printable(parents[i]) + "'");
+    if (!it->is_link)
+      throw input_error("bodies." + body.name + ".joint.parent: '" + parents[i] +
+                        "' is not a link (a link hangs from another link, or from the ground)");
+    body.joint.parent = static_cast<int>(it - def.bodies.begin());
+  }
+  std::vector<int> state(n, 0);  // 0 new, 1 on the path, 2 placed
+  std::function<void(int)> place = [&](int i) {
+    auto& s = state[static_cast<std::size_t>(i)];
+    if (s == 2) return;
+    if (s == 1)
+      throw input_error("bodies." + def.bodies[static_cast<std::size_t>(i)].name +
+                        ".joint.parent: a loop (the link is its own ancestor)");
+    s = 1;
+    const int p = def.bodies[static_cast<std::size_t>(i)].joint.parent;
+    if (p >= 0) place(p);
+    s = 2;
+    def.link_order.push_back(i);
+  };
+  for (std::size_t i = 0; i < n; ++i)
+    if (def.bodies[i].is_link) place(static_cast<int>(i));
+}
+
+/// The sign of each axis along a basis vector, and every axis not 0, at 256 bits.
+void settle_link_axes(system_definition& def) {
+  if (def.link_order.empty()) return;
+  mp_precision_scope scope(256);
+  std::vector<mpfi> x(static_cast<std::size_t>(def.vars.size()), mpfi(0));
+  for (int p : def.parameter_order)
+    x[static_cast<std::size_t>(p)] = compiled_expression<mpfi>(*def.parameters[static_cast<std::size_t>(p)]).eval_at(x.data());
+  for (auto& body : def.bodies) {
+    auto& j = body.joint;
+    if (!body.is_link || j.type == system_joint_definition::kind::fixed) continue;
+    const std::string where = "bodies." + body.name + ".joint.axis";
+    mpfi n2 = 0;
+    for (const auto& e : j.axis)
+      if (e) n2 += sqr(compiled_expression<mpfi>(*e).eval_at(x.data()));
+    if (!certainly_positive(n2)) throw input_error(where + ": the axis is 0");
+    if (j.along >= 0) {
+      const mpfi a = compiled_expression<mpfi>(*j.axis[static_cast<std::size_t>(j.along)]).eval_at(x.data());
+      j.sign = certainly_negative(a) ? -1 : 1;
+    }
+  }
+}
+
 system_input system_model::read(object_reader& scene) {
   system_input in;
   builder b;
@@ -448,6 +589,7 @@ system_input system_model::read(object_reader& scene) {
   }
 
   // Bodies.
+  std::vector<std::string> link_parents;  // per body: its joint's parent as written ("" the ground)
   const json_value& bodies = object_value(scene, "bodies");
   if (bodies.members.empty()) throw input_error("bodies: a system needs at least one body");
   require_at_most(bodies.members.size(), system_limits::names, "bodies");
@@ -467,6 +609,11 @@ system_input system_model::read(object_reader& scene) {
       }
       return out;
     };
+    if (r.has("joint")) {  // a link of a tree: placed by its joint
+      read_link(b, r, body, coordinates, link_parents);
+      def.bodies.push_back(std::move(body));
+      continue;
+    }
     body.mass = b.constant(expression_text(r.raw("mass"), r.path("mass")), r.path("mass"));
     if (r.has("inertia")) {
       const json_value& v = r.raw("inertia");
@@ -555,12 +702,17 @@ system_input system_model::read(object_reader& scene) {
     def.bodies.push_back(std::move(body));
   }
 
+  order_links(def, link_parents);
+
   // A body with its centre and orientation on the fixed axes, by name; three functions of q and t.
   auto body_on_fixed_axes = [&](object_reader& r, const std::string& what) {
     const std::string body = r.string("body");
     const auto it = std::find_if(def.bodies.begin(), def.bodies.end(),
                                  [&](const system_body_definition& x) { return x.name == body; });
     if (it == def.bodies.end()) throw input_error(r.path("body") + ": no body named '" + printable(body) + "'");
+    if (it->is_link)
+      throw input_error(r.path("body") + ": " + what + " needs a body given by its centre and orientation; '" + body +
+                        "' is a link of a tree (its joint's wrench is a result of its own)");
     if (it->body_axes || it->has_omega)
       throw input_error(r.path("body") + ": " + what + " needs the body's centre and orientation on the fixed axes (not omega)");
     if (it->has_matrix)
@@ -760,6 +912,28 @@ system_input system_model::read(object_reader& scene) {
                        : state.number(speeds[j]));
   in.t = state.has("t") ? state.number("t") : decimal_field{"0", state.path("t")};
   state.finish();
+  if (scene.has("accelerations")) {  // inverse dynamics: the efforts that give these accelerations
+    const std::string where = scene.path("accelerations");
+    if (!def.constraints.empty())
+      throw input_error(where + ": inverse dynamics needs a system without constraints (a closed chain's efforts are "
+                                "not determined by its accelerations)");
+    if (!def.rates_as_speeds) throw input_error(where + ": inverse dynamics needs the coordinates' rates as speeds");
+    for (int i = 0; i < def.vars.coordinates; ++i) {
+      const auto owner = std::find_if(def.bodies.begin(), def.bodies.end(), [&](const system_body_definition& x) {
+        return x.is_link && x.joint.coordinate == i;
+      });
+      if (owner == def.bodies.end())
+        throw input_error(where + ": inverse dynamics needs every coordinate to be a joint's (" + coordinates[static_cast<std::size_t>(i)] +
+                          " is no joint's)");
+      if (owner->joint.effort)
+        throw input_error("bodies." + owner->name + ".joint.effort: with \"accelerations\" the efforts are the results, "
+                                                     "not given");
+    }
+    object_reader acc = scene.object("accelerations");
+    for (const auto& name : in.acceleration_names) in.udot.push_back(acc.number(name));
+    acc.finish();
+    in.inverse_dynamics = true;
+  }
   if (scene.has("project")) {
     in.project = scene.number("project");
     require_positive(scene, "project", *in.project, "a tolerance");
@@ -886,11 +1060,21 @@ system_input system_model::read(object_reader& scene) {
       for (const char* suffix : {"_force", "_moment"})
         if (!results.insert(w.name + suffix).second)
           throw input_error("wrenches." + w.name + ": its result " + w.name + suffix + " has the name of another result");
+    for (const auto& body : def.bodies) {
+      if (!body.is_link) continue;
+      std::vector<std::string> suffixes{"_force", "_moment"};
+      if (in.inverse_dynamics && body.joint.type != system_joint_definition::kind::fixed) suffixes.push_back("_effort");
+      for (const auto& suffix : suffixes)
+        if (!results.insert(body.joint.name + suffix).second)
+          throw input_error("bodies." + body.name + ".joint: its result " + body.joint.name + suffix +
+                            " has the name of another result");
+    }
     for (const auto& k : def.contacts)
       for (const char* suffix : {"_normal_force", "_friction_force", "_tangential_force", "_required_mu"})
         if (!results.insert(k.name + suffix).second)
           throw input_error("contacts." + k.name + ": its result " + k.name + suffix + " has the name of another result");
   }
+  settle_link_axes(b.def);
   auto shared = std::make_shared<system_definition>(std::move(b.def));
   in.def = shared;
 
@@ -971,6 +1155,7 @@ system_input system_model::read(object_reader& scene) {
             }
         }
       }
+      if (bd.is_link && !bd.mass) continue;  // a massless frame
       const mpfi mass = bc.mass.at(bv.data());
       require_in_256_bits(certainly_positive(mass), certainly_nonpositive(mass),
                           where + ".mass: must be positive (" + to_string(mass) + ")");
@@ -990,6 +1175,30 @@ system_input system_model::read(object_reader& scene) {
           if (certainly_negative(slack))
             throw input_error(where + ".inertia: principal moments must satisfy the triangle inequalities");
         }
+    }
+    // A tree's mass matrix positive definite: each joint moves some mass or inertia that the
+    // joints before it do not (a link without inertial data at the end of a chain makes it singular).
+    if (!d.link_order.empty()) {
+      const appell_equations<mpfi> eq = gibbs_appell(expression_system<mpfi>{&sys}, q, u, t);
+      const int n = d.vars.speeds;
+      matrix_t<mpfi> L = matrix_t<mpfi>::Zero(n, n);
+      for (int k = 0; k < n; ++k) {
+        mpfi pivot = eq.M(k, k);
+        for (int j = 0; j < k; ++j) pivot -= sqr(L(k, j));
+        if (!certainly_positive(pivot)) {
+          std::string field = "coordinates." + d.names[static_cast<std::size_t>(d.vars.q(k < d.vars.coordinates ? k : 0))];
+          for (const auto& bd : d.bodies)
+            if (bd.is_link && bd.joint.coordinate == k) field = "bodies." + bd.name + ".joint";
+          throw input_error(field + ": the mass matrix is singular at the state: this joint moves no mass or inertia "
+                                    "that the joints before it do not move (a link without inertial data?)");
+        }
+        L(k, k) = sqrt(pivot);
+        for (int i = k + 1; i < n; ++i) {
+          mpfi x = eq.M(i, k);
+          for (int j = 0; j < k; ++j) x -= L(i, j) * L(k, j);
+          L(i, k) = x / L(k, k);
+        }
+      }
     }
     // The state on the constraints; the constraints independent.
     if (!d.constraints.empty()) {

@@ -15,6 +15,7 @@
 
 #include "appell/io/model.hpp"
 #include "appell/reactions/contact.hpp"
+#include "appell/reactions/joint_wrench.hpp"
 #include "appell/scenes/expression_system.hpp"
 #include "appell/scenes/linearize.hpp"
 
@@ -45,6 +46,9 @@ struct system_input : model_input {
   /// by the projection, at 256 bits written as 90-digit decimals; the state as given is kept.
   std::optional<decimal_field> project;
   std::vector<decimal_field> q_given, u_given;
+  /// "accelerations": inverse dynamics (the efforts of a tree's joints that give these u').
+  bool inverse_dynamics = false;
+  std::vector<decimal_field> udot;
 };
 
 struct system_model {
@@ -58,18 +62,55 @@ struct system_model {
     compiled_system<T> sys;
     vector_t<T> q, u;
     T t;
+    vector_t<T> udot;  ///< inverse dynamics: the accelerations given
   };
   template <Scalar T>
   static prepared<T> prepare(const input& in) {
     vector_t<T> q(static_cast<Eigen::Index>(in.q.size())), u(static_cast<Eigen::Index>(in.u.size()));
     for (std::size_t i = 0; i < in.q.size(); ++i) q(static_cast<Eigen::Index>(i)) = value<T>(in.q[i]);
     for (std::size_t j = 0; j < in.u.size(); ++j) u(static_cast<Eigen::Index>(j)) = value<T>(in.u[j]);
-    prepared<T> p{&in, compiled_system<T>(*in.def), q, u, value<T>(in.t)};
+    prepared<T> p{&in, compiled_system<T>(*in.def), q, u, value<T>(in.t), vector_t<T>()};
+    if (in.inverse_dynamics) {
+      p.udot.resize(static_cast<Eigen::Index>(in.udot.size()));
+      for (std::size_t j = 0; j < in.udot.size(); ++j) p.udot(static_cast<Eigen::Index>(j)) = value<T>(in.udot[j]);
+    }
     if (!in.solved.empty()) solve_dependent_speeds(p.sys, p.q, p.u, p.t, in.solved);
     return p;
   }
+  /// A tree's joints: each one's wrench (forward dynamics: with the accelerations r; inverse
+  /// dynamics: the efforts that give the accelerations asked for, then the wrenches).
+  template <Scalar T>
+  static void add_joints(const prepared<T>& m, const vector_t<T>& udot, const vector_t<T>* efforts, evaluation<T>& e) {
+    const std::vector<joint_wrench_result<T>> w = joint_wrenches(m.sys, m.q, m.u, m.t, udot, efforts);
+    const system_definition& d = *m.in->def;
+    for (std::size_t k = 0; k < w.size(); ++k) {
+      const system_joint_definition& j = d.bodies[static_cast<std::size_t>(m.sys.links[k].body)].joint;
+      if (efforts && j.type != system_joint_definition::kind::fixed)
+        e.results.push_back(detail::scalar_result(j.name + "_effort", w[k].effort));
+      e.results.push_back(detail::vector_result(j.name + "_force", w[k].force));
+      e.results.push_back(detail::vector_result(j.name + "_moment", w[k].moment));
+    }
+    for (std::size_t k = 0; k < w.size(); ++k) {
+      const system_joint_definition& j = d.bodies[static_cast<std::size_t>(m.sys.links[k].body)].joint;
+      if (j.type != system_joint_definition::kind::fixed)
+        e.checks.push_back(detail::scalar_result(j.name + "_virtual_work", w[k].residual));
+    }
+  }
+  /// Inverse dynamics: the efforts P - Q = M u' + b - Q (Appell's equations), per coordinate.
+  template <Scalar T>
+  static evaluation<T> compute_inverse(const prepared<T>& m) {
+    const expression_system<T> sys{&m.sys};
+    const appell_equations<T> eq = gibbs_appell(sys, m.q, m.u, m.t);
+    const vector_t<T> efforts = eq.P(m.udot) - eq.Q;
+    evaluation<T> e;
+    add_joints(m, m.udot, &efforts, e);
+    e.checks.insert(e.checks.begin(), detail::scalar_result("virtual_work_invariant",
+        virtual_work_residual(sys, eq, m.q, m.u, m.t, m.udot, vector_t<T>(vector_t<T>::Ones(sys.speeds())))));
+    return e;
+  }
   template <Scalar T>
   static evaluation<T> compute(const prepared<T>& m) {
+    if (m.in->inverse_dynamics) return compute_inverse(m);
     const system_motion_result<T> r = system_motion(m.sys, m.q, m.u, m.t);
     evaluation<T> e;
     for (std::size_t j = 0; j < m.in->acceleration_names.size(); ++j)
@@ -102,6 +143,7 @@ struct system_model {
         e.contacts.push_back(judged_contact(name, f[k].normal, tangential, contacts[k].mu));
       }
     }
+    if (!m.sys.links.empty()) add_joints(m, r.accelerations, static_cast<const vector_t<T>*>(nullptr), e);
     e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
     for (std::size_t c = 0; c < constraints.size(); ++c) {
       const auto i = static_cast<Eigen::Index>(c);

@@ -296,6 +296,7 @@ struct system_problem {
       m->sys.parameters[i] = compiled_expression<T>(*d.parameters[i]).eval_at(x.data());
       x[i] = m->sys.parameters[i];
     }
+    m->sys.refresh_links();  // the joints' constants from the parameters' new values
     system_problem out = *this;
     out.model = std::move(m);
     return out;

@@ -1,0 +1,113 @@
+// appell/reactions/joint_wrench.hpp -- the wrench each joint of a tree transmits (paper sec. 5).
+//
+// A link hangs from its parent by a joint: the joint's constraints remove the relative motions
+// it does not allow (five for a revolute or prismatic joint, six for a fixed one).  Cotton's
+// reaction of those constraints is eq. (14)-(15): with the constrained motion's accelerations,
+// for each direction d a constraint removes (a rigid motion of the link and everything beyond
+// it: a unit twist at the joint's origin), Q'_d = dS/dv'_d - Q_d,
+//   dS/dv'_d = sum over the subtree of m a_G . v_d(G) + (I alpha + omega x I omega) . omega_d,
+//   Q_d      = sum over the subtree of F . v_d(G) + Gamma . omega_d,
+// the bodies' accelerations those of the motion (v'_d = 0 on it).  Over the six unit twists
+// (translations along L's axes, rotations about them through its origin) these are the force and
+// the moment about the origin that the parent exerts on the link through the joint, on L's axes:
+// the sums over the subtree of (m a_G - F) and of (G - O) x (m a_G - F) + I alpha + omega x I omega
+// - Gamma.  Each is accumulated from the link's children (shifted to its origin), so all the
+// wrenches cost O(N) once the kinematics are known.  The actuator's effort belongs to the wrench
+// (its component along the axis is the effort: the check below); the actuators of joints beyond
+// cancel in pairs inside the subtree.
+//
+// Checks: along the joint's free direction the wrench's virtual power is the effort,
+//   axis . moment - effort (revolute),  axis . force - effort (prismatic),
+// which Appell's equation of that coordinate gives independently (its row of M u' + b - Q).
+#pragma once
+
+#include <vector>
+
+#include "appell/scenes/expression_system.hpp"
+
+namespace appell {
+
+template <class T>
+struct joint_wrench_result {
+  vec3<T> force = zero_matrix<vec3<T>>();   ///< by the parent on the link, on the link's (joint's) axes
+  vec3<T> moment = zero_matrix<vec3<T>>();  ///< about the joint's origin, on the same axes
+  T effort = T(0);                          ///< the effort the wrench carries along the free direction
+  T residual = T(0);                        ///< axis . (moment or force) - effort: 0
+};
+
+/// Every link's joint wrench (in the definition's link order) at (q, u, t) with accelerations
+/// udot.  efforts: the efforts when they are not part of the system (inverse dynamics: the
+/// efforts Appell's equations give, per coordinate); null: the links' own efforts (forward
+/// dynamics: they act in the bodies' forces, and each wrench carries its joint's).
+template <Scalar T>
+std::vector<joint_wrench_result<T>> joint_wrenches(const compiled_system<T>& c, const vector_t<T>& q,
+                                                   const vector_t<T>& u, const T& t, const vector_t<T>& udot,
+                                                   const vector_t<T>* efforts = nullptr) {
+  using K = system_joint_definition::kind;
+  using link = typename compiled_system<T>::link;
+  const expression_system<T> sys{&c};
+  const std::vector<body_kinematics<T>> kin = differentiate_kinematics(sys, q, u, t);
+  const std::vector<T> x = c.template variables<T>(q, u, t);
+  const std::vector<T> values = c.evaluate(c.body_tape, x);
+  const vector_t<T> qd = c.rates(x, values, c.kinematics_on_body_tape);
+  vec3<T> g;
+  for (int i = 0; i < 3; ++i) g(i) = c.gravity[static_cast<std::size_t>(i)].at(values.data());
+  const auto states = c.link_states(q, qd, g, values.data());
+  const std::size_t n = c.links.size();
+  std::vector<vec3<T>> F(n, zero_matrix<vec3<T>>()), M(n, zero_matrix<vec3<T>>());  // sum (m a - F), about L's origin
+  std::vector<joint_wrench_result<T>> out(n);
+  for (std::size_t k = n; k-- > 0;) {
+    const link& L = c.links[k];
+    const body_kinematics<T>& B = kin[static_cast<std::size_t>(L.body)];
+    const body_state<T>& s = B.state;
+    vec3<T> a, al;  // a_G, alpha on the inertia's axes
+    for (int r = 0; r < 3; ++r) {
+      T ar = B.cv(r), alr = B.cw(r);
+      for (Eigen::Index j = 0; j < udot.size(); ++j) {
+        if (!structurally_zero(B.Jv(r, j))) ar += B.Jv(r, j) * udot(j);
+        if (!structurally_zero(B.Jw(r, j))) alr += B.Jw(r, j) * udot(j);
+      }
+      a(r) = ar, al(r) = alr;
+    }
+    vec3<T> f, m;
+    const vec3<T> Ial = mat_vec(s.inertia, al), gyro = gyroscopic(s.inertia, s.omega);
+    for (int r = 0; r < 3; ++r) {
+      f(r) = s.mass * a(r) - s.force(r);
+      m(r) = Ial(r) + gyro(r) - s.couple(r);
+    }
+    if (!L.Rin_identity) {
+      f = compiled_system<T>::times(L.Rin, f);
+      m = compiled_system<T>::times(L.Rin, m);
+    }
+    F[k] += f;
+    M[k] += vec3<T>(m + cross(L.com, f));
+    // The wrench: the subtree's sums and this joint's own actuator (not in the sums: its other half
+    // acts on the parent).
+    joint_wrench_result<T>& w = out[k];
+    w.force = F[k];
+    w.moment = M[k];
+    if (L.type != K::fixed) {
+      if (efforts) {
+        w.effort = (*efforts)(L.coordinate);
+      } else if (L.effort) {
+        w.effort = L.effort.at(values.data());
+        const vec3<T> e = compiled_system<T>::scaled(L.axis, w.effort);
+        if (L.type == K::revolute) {
+          w.moment += e;
+        } else {
+          w.force += e;
+          w.moment += cross(L.com, e);
+        }
+      }
+      w.residual = dot(L.axis, L.type == K::revolute ? w.moment : w.force) - w.effort;
+    }
+    if (L.parent < 0) continue;
+    const auto p = static_cast<std::size_t>(c.link_of[static_cast<std::size_t>(L.parent)]);
+    const vec3<T> fp = c.to_parent(L, states[k], F[k]);
+    F[p] += fp;
+    M[p] += vec3<T>(c.to_parent(L, states[k], M[k]) + cross(states[k].offset, fp));
+  }
+  return out;
+}
+
+}  // namespace appell

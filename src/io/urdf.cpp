@@ -1,0 +1,418 @@
+// URDF files read as `system` scenes (appell/io/urdf.hpp): parsed with tinyxml2 (the parser
+// urdfdom uses), every number kept as the decimal text written in the file.
+#include "appell/io/urdf.hpp"
+
+#include <tinyxml2.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "appell/io/model.hpp"
+#include "appell/io/models/system.hpp"
+#include "appell/scalar/decimal.hpp"
+
+namespace appell {
+
+namespace {
+
+/// "file:LINE: <joint name="j1">" for messages.
+std::string where(const std::string& file, const tinyxml2::XMLElement* e) {
+  std::string s = file + ":" + std::to_string(e->GetLineNum()) + ": <" + e->Name();
+  if (const char* n = e->Attribute("name")) s += " name=\"" + printable(n) + "\"";
+  return s + ">";
+}
+
+bool is_decimal(const std::string& s) {
+  static const std::regex r(R"([+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]{1,6})?)");
+  return s.size() <= 200 && std::regex_match(s, r);
+}
+
+std::string attribute(const std::string& file, const tinyxml2::XMLElement* e, const char* name) {
+  const char* v = e->Attribute(name);
+  if (!v) throw input_error(where(file, e) + ": missing the attribute " + name);
+  return v;
+}
+
+std::string number(const std::string& file, const tinyxml2::XMLElement* e, const char* name) {
+  std::string v = attribute(file, e, name);
+  const auto b = v.find_first_not_of(" \t\r\n"), l = v.find_last_not_of(" \t\r\n");
+  v = b == std::string::npos ? "" : v.substr(b, l - b + 1);
+  if (!is_decimal(v))
+    throw input_error(where(file, e) + ": " + name + "=\"" + printable(v) + "\" is not a decimal number");
+  return v;
+}
+
+/// "0.1 0 -2" (an attribute of three numbers); `fallback` when the attribute is absent.
+std::array<std::string, 3> triple(const std::string& file, const tinyxml2::XMLElement* e, const char* name,
+                                  const std::array<std::string, 3>& fallback) {
+  const char* v = e->Attribute(name);
+  if (!v) return fallback;
+  std::istringstream in(v);
+  std::vector<std::string> parts;
+  for (std::string s; in >> s;) parts.push_back(s);
+  if (parts.size() != 3)
+    throw input_error(where(file, e) + ": " + name + "=\"" + printable(v) + "\" is not three numbers");
+  std::array<std::string, 3> out;
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (!is_decimal(parts[i]))
+      throw input_error(where(file, e) + ": " + name + "=\"" + printable(v) + "\": '" + printable(parts[i]) +
+                        "' is not a decimal number");
+    out[i] = parts[i];
+  }
+  return out;
+}
+
+void read_origin(const std::string& file, const tinyxml2::XMLElement* parent, std::array<std::string, 3>& xyz,
+                 std::array<std::string, 3>& rpy) {
+  const tinyxml2::XMLElement* o = parent->FirstChildElement("origin");
+  if (!o) return;
+  if (o->NextSiblingElement("origin")) throw input_error(where(file, o->NextSiblingElement("origin")) + ": a second origin");
+  xyz = triple(file, o, "xyz", xyz);
+  rpy = triple(file, o, "rpy", rpy);
+}
+
+bool is_zero(const std::string& d) { return decimal_sign_of_sum({{1, d}}) == 0; }
+
+}  // namespace
+
+urdf_robot parse_urdf(const std::string& text, const std::string& file) {
+  if (text.size() > urdf_limits::bytes)
+    throw input_error(file + ": larger than the limit of " + std::to_string(urdf_limits::bytes) + " bytes");
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
+    throw input_error(file + ": not XML (" + printable(doc.ErrorStr() ? doc.ErrorStr() : "", 160) + ")");
+  const tinyxml2::XMLElement* root = doc.RootElement();
+  if (!root) throw input_error(file + ": not a URDF (no element)");
+  if (std::string(root->Name()) != "robot")
+    throw input_error(file + ":" + std::to_string(root->GetLineNum()) + ": not a URDF (the root element is <" +
+                      printable(root->Name()) + ">, not <robot>)");
+  urdf_robot robot;
+  if (const char* n = root->Attribute("name")) robot.name = n;
+  std::set<std::string> link_names, joint_names;
+  for (const tinyxml2::XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
+    const std::string tag = e->Name();
+    if (tag == "link") {
+      urdf_robot::link l;
+      l.name = attribute(file, e, "name");
+      l.line = e->GetLineNum();
+      if (!link_names.insert(l.name).second) throw input_error(where(file, e) + ": a second link of this name");
+      if (const tinyxml2::XMLElement* in = e->FirstChildElement("inertial")) {
+        if (in->NextSiblingElement("inertial")) throw input_error(where(file, e) + ": two <inertial> elements");
+        l.in.given = true;
+        read_origin(file, in, l.in.xyz, l.in.rpy);
+        const tinyxml2::XMLElement* m = in->FirstChildElement("mass");
+        if (!m) throw input_error(where(file, in) + " of link \"" + printable(l.name) + "\": missing <mass>");
+        l.in.mass = number(file, m, "value");
+        if (decimal_sign_of_sum({{1, l.in.mass}}) < 0)
+          throw input_error(where(file, m) + " of link \"" + printable(l.name) + "\": a negative mass");
+        const tinyxml2::XMLElement* i = in->FirstChildElement("inertia");
+        if (!i) throw input_error(where(file, in) + " of link \"" + printable(l.name) + "\": missing <inertia>");
+        const char* names[6] = {"ixx", "iyy", "izz", "ixy", "iyz", "ixz"};
+        for (std::size_t k = 0; k < 6; ++k) l.in.inertia[k] = number(file, i, names[k]);
+      }
+      robot.links.push_back(std::move(l));
+      if (robot.links.size() > urdf_limits::links)
+        throw input_error(where(file, e) + ": more than " + std::to_string(urdf_limits::links) + " links");
+    } else if (tag == "joint") {
+      urdf_robot::joint j;
+      j.name = attribute(file, e, "name");
+      j.line = e->GetLineNum();
+      if (!joint_names.insert(j.name).second) throw input_error(where(file, e) + ": a second joint of this name");
+      j.type = attribute(file, e, "type");
+      if (j.type == "floating" || j.type == "planar")
+        throw input_error(where(file, e) + ": a " + j.type + " joint is not supported (revolute, continuous, "
+                                           "prismatic and fixed are; the base is fixed)");
+      if (j.type != "revolute" && j.type != "continuous" && j.type != "prismatic" && j.type != "fixed")
+        throw input_error(where(file, e) + ": unknown joint type \"" + printable(j.type) +
+                          "\" (revolute, continuous, prismatic, fixed)");
+      if (e->FirstChildElement("mimic"))
+        throw input_error(where(file, e) + ": <mimic> is not supported (a joint that follows another is a constraint)");
+      const tinyxml2::XMLElement* p = e->FirstChildElement("parent");
+      const tinyxml2::XMLElement* c = e->FirstChildElement("child");
+      if (!p) throw input_error(where(file, e) + ": missing <parent>");
+      if (!c) throw input_error(where(file, e) + ": missing <child>");
+      j.parent = attribute(file, p, "link");
+      j.child = attribute(file, c, "link");
+      read_origin(file, e, j.xyz, j.rpy);
+      if (const tinyxml2::XMLElement* a = e->FirstChildElement("axis")) j.axis = triple(file, a, "xyz", j.axis);
+      if (j.type != "fixed" && is_zero(j.axis[0]) && is_zero(j.axis[1]) && is_zero(j.axis[2]))
+        throw input_error(where(file, e) + ": the axis is 0");
+      robot.joints.push_back(std::move(j));
+    }
+  }
+  if (robot.links.empty()) throw input_error(file + ": a robot without links");
+  // The tree: every joint between known links, a link moved by one joint at most, one root.
+  std::map<std::string, const urdf_robot::joint*> parent_of;
+  for (const auto& j : robot.joints) {
+    for (const std::string* l : {&j.parent, &j.child})
+      if (!link_names.count(*l))
+        throw input_error(file + ":" + std::to_string(j.line) + ": <joint name=\"" + printable(j.name) +
+                          "\">: no link named \"" + printable(*l) + "\"");
+    if (j.parent == j.child)
+      throw input_error(file + ":" + std::to_string(j.line) + ": <joint name=\"" + printable(j.name) +
+                        "\">: a link joined to itself (a loop)");
+    const auto [it, fresh] = parent_of.emplace(j.child, &j);
+    if (!fresh)
+      throw input_error(file + ":" + std::to_string(j.line) + ": <joint name=\"" + printable(j.name) + "\">: link \"" +
+                        printable(j.child) + "\" has two parents (joints \"" + printable(it->second->name) + "\" and \"" +
+                        printable(j.name) + "\"): a loop, which URDF cannot describe as a tree");
+  }
+  std::vector<std::string> roots;
+  for (const auto& l : robot.links)
+    if (!parent_of.count(l.name)) roots.push_back(l.name);
+  if (roots.empty()) throw input_error(file + ": no root link (every link has a parent: a loop)");
+  if (roots.size() > 1)
+    throw input_error(file + ": " + std::to_string(roots.size()) + " root links (\"" + printable(roots[0]) + "\", \"" +
+                      printable(roots[1]) + "\"...): the links are not one tree");
+  robot.root = roots[0];
+  std::vector<urdf_robot::joint> ordered;
+  std::vector<std::string> frontier{robot.root};
+  while (!frontier.empty()) {
+    std::vector<std::string> next;
+    for (const auto& l : frontier)
+      for (const auto& j : robot.joints)
+        if (j.parent == l) {
+          ordered.push_back(j);
+          next.push_back(j.child);
+        }
+    frontier = std::move(next);
+  }
+  if (ordered.size() != robot.joints.size()) {
+    for (const auto& j : robot.joints)
+      if (std::none_of(ordered.begin(), ordered.end(), [&](const urdf_robot::joint& x) { return x.name == j.name; }))
+        throw input_error(file + ":" + std::to_string(j.line) + ": <joint name=\"" + printable(j.name) +
+                          "\">: not reached from the root link \"" + printable(robot.root) + "\" (a loop)");
+  }
+  robot.joints = std::move(ordered);
+  if (std::none_of(robot.joints.begin(), robot.joints.end(), [](const urdf_robot::joint& j) { return j.type != "fixed"; }))
+    throw input_error(file + ": no joint moves (revolute, continuous or prismatic): nothing to compute");
+  return robot;
+}
+
+urdf_robot read_urdf_file(const std::string& path) {
+  return parse_urdf(read_text_file(path, urdf_limits::bytes, "the URDF file"), path);
+}
+
+std::map<std::string, std::string> urdf_joint_names(const urdf_robot& robot) {
+  static const std::set<std::string> reserved{"pi", "t", "sin", "cos", "tan", "exp", "log", "sqrt", "rx", "ry", "rz"};
+  std::map<std::string, std::string> out;
+  std::set<std::string> used;
+  for (const auto& j : robot.joints) {
+    std::string s;
+    for (char ch : j.name) s += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+    const auto b = s.find_first_not_of('_');
+    s = b == std::string::npos ? "" : s.substr(b);
+    while (!s.empty() && s.back() == '_') s.pop_back();
+    if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) s = "joint_" + s;
+    if (s.size() > 48) s.resize(48);
+    if (reserved.count(s)) s += "_";
+    std::string name = s;
+    for (int k = 2; used.count(name) || used.count(name + "_dot"); ++k) name = s + "_" + std::to_string(k);
+    used.insert(name);
+    out[j.name] = name;
+  }
+  return out;
+}
+
+std::string urdf_to_system(const urdf_robot& robot, const urdf_scene_options& o) {
+  using json = nlohmann::ordered_json;
+  const std::map<std::string, std::string> names = urdf_joint_names(robot);
+  auto list = [](const auto& a) {
+    json j = json::array();
+    for (const auto& x : a) j.push_back(x);
+    return j;
+  };
+  json doc;
+  doc["model"] = "system";
+  json coords = json::array();
+  for (const auto& j : robot.joints)
+    if (j.type != "fixed") coords.push_back(names.at(j.name));
+  doc["coordinates"] = coords;
+  doc["gravity"] = list(o.gravity);
+  json bodies = json::object();
+  for (const auto& j : robot.joints) {
+    const auto& l = *std::find_if(robot.links.begin(), robot.links.end(), [&](const urdf_robot::link& x) { return x.name == j.child; });
+    json body = json::object();
+    if (l.in.given && !is_zero(l.in.mass)) {
+      body["mass"] = l.in.mass;
+      body["inertia"] = list(l.in.inertia);
+      json in = json::object();
+      if (!(is_zero(l.in.xyz[0]) && is_zero(l.in.xyz[1]) && is_zero(l.in.xyz[2]))) in["xyz"] = list(l.in.xyz);
+      if (!(is_zero(l.in.rpy[0]) && is_zero(l.in.rpy[1]) && is_zero(l.in.rpy[2]))) in["rpy"] = list(l.in.rpy);
+      if (!in.empty()) body["inertial"] = in;
+    }
+    json joint = json::object();
+    joint["name"] = names.at(j.name);
+    if (j.parent != robot.root) joint["parent"] = j.parent;
+    joint["type"] = j.type == "continuous" ? "revolute" : j.type;
+    if (j.type != "fixed") joint["coordinate"] = names.at(j.name);
+    joint["origin"] = list(j.xyz);
+    joint["rpy"] = list(j.rpy);
+    if (j.type != "fixed") {
+      joint["axis"] = list(j.axis);
+      if (o.efforts.count(j.name)) joint["effort"] = o.efforts.at(j.name);
+    }
+    body["joint"] = joint;
+    bodies[l.name] = body;
+  }
+  doc["bodies"] = bodies;
+  json state = json::object();
+  for (const auto& j : robot.joints) {
+    if (j.type == "fixed") continue;
+    const std::string& n = names.at(j.name);
+    const auto it = o.state.find(j.name);
+    state[n] = it == o.state.end() ? std::string("0") : it->second.first;
+    state[n + "_dot"] = it == o.state.end() ? std::string("0") : it->second.second;
+  }
+  doc["state"] = state;
+  if (!o.accelerations.empty()) {
+    json acc = json::object();
+    for (const auto& j : robot.joints)
+      if (j.type != "fixed") acc[names.at(j.name) + "_ddot"] = o.accelerations.at(j.name);
+    doc["accelerations"] = acc;
+  }
+  std::string text = "{";
+  bool first = true;  // one top-level field per line, bodies one per line: a file a person can read
+  for (auto it = doc.begin(); it != doc.end(); ++it) {
+    text += first ? "" : ",\n ";
+    first = false;
+    text += json(it.key()).dump() + ": ";
+    if (it.key() == "bodies") {
+      text += "{";
+      bool fb = true;
+      for (auto b = it.value().begin(); b != it.value().end(); ++b) {
+        text += (fb ? "\n   " : ",\n   ") + json(b.key()).dump() + ": " + b.value().dump();
+        fb = false;
+      }
+      text += "}";
+    } else {
+      text += it.value().dump();
+    }
+  }
+  return text + "}\n";
+}
+
+namespace {
+
+/// The scene model "urdf": {"model": "urdf", "file": F, "base": "fixed", "gravity": [3],
+/// "state": {joint: {"q": x, "q_dot": y}}, "torques": {joint: x} | "accelerations": {joint: x}}.
+std::string urdf_scene_text(object_reader& scene, std::string& file) {
+  file = scene.string("file");
+  std::filesystem::path path(file);
+  if (path.is_relative() && !scene_directory().empty()) path = std::filesystem::path(scene_directory()) / path;
+  const urdf_robot robot = read_urdf_file(path.string());
+  if (scene.has("base") && scene.string("base") != "fixed")
+    throw input_error(scene.path("base") + ": only \"fixed\" is supported (the root link is the ground)");
+  urdf_scene_options o;
+  const std::vector<decimal_field> g = scene.numbers("gravity", 3);
+  for (std::size_t i = 0; i < 3; ++i) o.gravity[i] = g[i].text;
+  std::set<std::string> moving;
+  for (const auto& j : robot.joints)
+    if (j.type != "fixed") moving.insert(j.name);
+  auto joint_of = [&](const std::string& section, const std::string& name) {
+    if (!moving.count(name)) {
+      const bool fixed = std::any_of(robot.joints.begin(), robot.joints.end(), [&](const auto& j) { return j.name == name; });
+      throw input_error(section + "." + printable(name) + ": " +
+                        (fixed ? "a fixed joint (it has no coordinate)" : "no joint of this name in " + file));
+    }
+  };
+  const json_value& state = scene.raw("state");
+  if (state.type != json_value::kind::object) throw input_error(scene.path("state") + ": expected an object, joint by joint");
+  for (const auto& m : state.members) {
+    joint_of("state", m.key);
+    object_reader r(m.value, "state." + m.key);
+    const decimal_field q = r.number("q"), qd = r.number("q_dot");
+    r.finish();
+    o.state[m.key] = {q.text, qd.text};
+  }
+  for (const auto& j : moving)
+    if (!o.state.count(j)) throw input_error("state: joint \"" + printable(j) + "\" is missing (q and q_dot of every moving joint)");
+  o.with_state = true;
+  if (scene.has("torques") && scene.has("accelerations"))
+    throw input_error("accelerations: give the torques (forward dynamics) or the accelerations (inverse dynamics), not both");
+  for (const char* section : {"torques", "accelerations"}) {
+    if (!scene.has(section)) continue;
+    const json_value& v = scene.raw(section);
+    if (v.type != json_value::kind::object) throw input_error(scene.path(section) + ": expected an object, joint by joint");
+    auto& into = std::string(section) == "torques" ? o.efforts : o.accelerations;
+    for (const auto& m : v.members) {
+      joint_of(section, m.key);
+      into[m.key] = decimal_text(m.value, std::string(section) + "." + m.key).text;
+    }
+    if (std::string(section) == "accelerations")
+      for (const auto& j : moving)
+        if (!o.accelerations.count(j)) throw input_error("accelerations: joint \"" + printable(j) + "\" is missing");
+  }
+  return urdf_to_system(robot, o);
+}
+
+/// The system file `text` read (what `appell convert` prints, appell reads); input_error
+/// naming `file` and the field otherwise.
+system_input read_as_system(const std::string& text, const std::string& file) {
+  const json_value doc = parse_json(text);
+  object_reader r(doc, "");
+  (void)r.string("model");
+  try {
+    system_input in = system_model::read(r);
+    r.finish();
+    return in;
+  } catch (const input_error& e) {
+    throw input_error(file + " (read as the system file `appell convert` prints): " + e.what());
+  }
+}
+
+std::shared_ptr<const model_input> read_urdf_scene(object_reader& scene) {
+  std::string file;
+  const std::string text = urdf_scene_text(scene, file);
+  return std::make_shared<system_input>(read_as_system(text, file));
+}
+
+}  // namespace
+
+std::string urdf_scene_system_text(const json_value& scene) {
+  object_reader r(scene, "");
+  (void)r.string("model");
+  std::string file;
+  std::string out = urdf_scene_text(r, file);
+  r.finish();
+  return out;
+}
+
+std::string convert_to_system(const std::string& path) {
+  const std::string text = read_text_file(path, urdf_limits::bytes, "a URDF file or a \"urdf\" scene");
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first != std::string::npos && text[first] == '<') {  // a URDF file: at rest, standard gravity
+    const std::string out = urdf_to_system(parse_urdf(text, path), urdf_scene_options{});
+    (void)read_as_system(out, path);
+    return out;
+  }
+  const json_value doc = parse_json(text);
+  object_reader scene(doc, "");
+  const std::string model = scene.string("model");
+  if (model != "urdf")
+    throw input_error(scene.path("model") + ": convert reads a URDF file or a \"urdf\" scene, not a '" + printable(model) + "' scene");
+  const scene_directory_scope scope(std::filesystem::path(path).parent_path().string());
+  std::string file;
+  const std::string out = urdf_scene_text(scene, file);
+  scene.finish();
+  (void)read_as_system(out, file);
+  return out;
+}
+
+const model_entry& urdf_model_entry() {
+  static const model_entry entry = [] {
+    model_entry e = make_model_entry<system_model>();
+    e.name = "urdf";
+    e.read = &read_urdf_scene;
+    return e;
+  }();
+  return entry;
+}
+
+}  // namespace appell

@@ -1,0 +1,185 @@
+// DART (Debian libdart-dev, libdart-utils-urdf-dev) on a `urdf` scene's states, for `appell
+// score` (tests/engine_score.sh):
+//   dart_reference states SCENE N SEED   the scene's joints at N random states (CSV for `appell reference --states`)
+//   dart_reference values SCENE STATES   DART's values at those states, columns named as appell's results
+// The robot is DART's own reading of the URDF (DartLoader, the root fixed to the world); the
+// scene's gravity and torques are applied; forward dynamics by DART's articulated-body
+// recursion (Skeleton::computeForwardDynamics); each joint's wrench is
+// -Joint::getWrenchToChildBodyNode() (torque first, then force, on the joint's frame: the child
+// link's frame for a URDF), which appell's <joint>_moment and <joint>_force are (the sign: below).
+// DART's headers are C++17 (CMake builds this unit so).
+// not <dart/dart.hpp>: Debian 12 ships IkFast.hpp without the ikfast.h it includes
+#include <dart/dynamics/BodyNode.hpp>
+#include <dart/dynamics/Joint.hpp>
+#include <dart/dynamics/Skeleton.hpp>
+#include <dart/utils/urdf/DartLoader.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace {
+
+/// appell's name for a URDF joint (SCENES.md, `urdf`: "/j1" becomes "j1").
+std::string appell_name(const std::string& urdf) {
+  std::string s;
+  for (char c : urdf) s += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  const auto b = s.find_first_not_of('_');
+  s = b == std::string::npos ? "" : s.substr(b);
+  while (!s.empty() && s.back() == '_') s.pop_back();
+  if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) s = "joint_" + s;
+  return s;
+}
+
+std::string g17(double x) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+struct scene {
+  std::string urdf;
+  Eigen::Vector3d gravity;
+  std::map<std::string, double> torques;
+  std::vector<std::string> joints;  ///< the moving joints, in the scene's state order
+};
+
+scene read_scene(const std::string& path) {
+  std::ifstream in(path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  scene s;
+  std::filesystem::path file = j.at("file").get<std::string>();
+  if (file.is_relative()) file = std::filesystem::path(path).parent_path() / file;
+  s.urdf = file.string();
+  for (int i = 0; i < 3; ++i) s.gravity[i] = std::stod(j.at("gravity")[i].get<std::string>());
+  if (j.contains("torques"))
+    for (auto it = j["torques"].begin(); it != j["torques"].end(); ++it) s.torques[it.key()] = std::stod(it.value().get<std::string>());
+  for (auto it = j.at("state").begin(); it != j.at("state").end(); ++it) s.joints.push_back(it.key());
+  return s;
+}
+
+/// The URDF without its geometry (<visual>, <collision>): DART fails on meshes it cannot find
+/// (the WAM's package:// URIs), and the dynamics need none.
+std::string without_geometry(const std::string& path) {
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const std::string tag : {"visual", "collision"})
+    for (std::size_t at; (at = text.find("<" + tag)) != std::string::npos;) {
+      const std::string close = "</" + tag + ">";
+      std::size_t end = text.find(close, at);
+      const std::size_t self = text.find("/>", at), gt = text.find('>', at);
+      if (self != std::string::npos && self + 1 == gt) end = self + 2;  // <visual/>
+      else if (end == std::string::npos) throw std::runtime_error(path + ": an unclosed <" + tag + ">");
+      else end += close.size();
+      text.erase(at, end - at);
+    }
+  const auto out = std::filesystem::temp_directory_path() / ("dart_reference_" + std::to_string(::getpid()) + ".urdf");
+  std::ofstream(out) << text;
+  return out.string();
+}
+
+dart::dynamics::SkeletonPtr load(const scene& s) {
+  dart::utils::DartLoader::Options options;
+  options.mDefaultRootJointType = dart::utils::DartLoader::RootJointType::FIXED;
+  dart::utils::DartLoader loader(options);
+  const std::string bare = without_geometry(s.urdf);
+  auto skel = loader.parseSkeleton(dart::common::Uri::createFromPath(bare));
+  std::filesystem::remove(bare);
+  if (!skel) throw std::runtime_error("DART could not read " + s.urdf);
+  skel->setGravity(s.gravity);
+  return skel;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) try {
+  const std::string m = argc > 1 ? argv[1] : "";
+  if (!((m == "states" && argc == 5) || (m == "values" && argc == 4))) {
+    std::cerr << "usage: dart_reference states SCENE N SEED | values SCENE STATES\n";
+    return 2;
+  }
+  const std::string mode = argv[1];
+  const scene s = read_scene(argv[2]);
+  if (mode == "states") {  // q in [-1.5, 1.5], q' in [-2, 2], on a grid of 1e-6
+    std::mt19937_64 rng(std::stoull(argv[4]));
+    std::uniform_int_distribution<long> q(-1500000, 1500000), qd(-2000000, 2000000);
+    std::cout << "state";
+    for (const auto& j : s.joints) std::cout << ",state." << j << ".q,state." << j << ".q_dot";
+    std::cout << "\n";
+    const int n = std::stoi(argv[3]);
+    for (int r = 0; r < n; ++r) {
+      std::cout << "s" << r;
+      for (std::size_t k = 0; k < s.joints.size(); ++k) {
+        char b[64];
+        std::snprintf(b, sizeof b, ",%.6f,%.6f", q(rng) * 1e-6, qd(rng) * 1e-6);
+        std::cout << b;
+      }
+      std::cout << "\n";
+    }
+    return 0;
+  }
+  auto skel = load(s);
+  std::ifstream in(argv[3]);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  {
+    std::stringstream ss(line);
+    for (std::string f; std::getline(ss, f, ',');) header.push_back(f);
+  }
+  // output columns: every moving joint's acceleration, then every joint's wrench
+  std::cout << "state";
+  for (const auto& j : s.joints) std::cout << "," << appell_name(j) << "_ddot";
+  for (std::size_t k = 0; k < skel->getNumJoints(); ++k) {
+    const auto* joint = skel->getJoint(k);
+    if (joint->getParentBodyNode() == nullptr) continue;  // the root's weld to the world: not a URDF joint
+    const std::string n = appell_name(joint->getName());
+    for (int i = 0; i < 3; ++i) std::cout << "," << n << "_force[" << i << "]";
+    for (int i = 0; i < 3; ++i) std::cout << "," << n << "_moment[" << i << "]";
+  }
+  std::cout << "\n";
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
+    for (std::size_t c = 1; c < header.size() && c < f.size(); ++c) {
+      const std::string& h = header[c];  // state.JOINT.q or state.JOINT.q_dot
+      const bool rate = h.size() > 6 && h.compare(h.size() - 6, 6, ".q_dot") == 0;
+      const std::string joint = h.substr(6, h.size() - 6 - (rate ? 6 : 2));
+      auto* jt = skel->getJoint(joint);
+      if (!jt) throw std::runtime_error("no joint " + joint + " in DART's skeleton");
+      if (rate) jt->setVelocity(0, std::stod(f[c]));
+      else jt->setPosition(0, std::stod(f[c]));
+    }
+    for (const auto& [j, tau] : s.torques) skel->getJoint(j)->setForce(0, tau);
+    skel->computeForwardDynamics();
+    std::cout << f[0];
+    for (const auto& j : s.joints) std::cout << "," << g17(skel->getJoint(j)->getAcceleration(0));
+    for (std::size_t k = 0; k < skel->getNumJoints(); ++k) {
+      const auto* joint = skel->getJoint(k);
+      if (joint->getParentBodyNode() == nullptr) continue;
+      // DART 6.12 returns the opposite wrench (the child's on the parent, on the child's joint
+      // frame): its moment about a joint's axis is minus the torque commanded there (SCENES.md,
+      // `urdf`: every component of 200 states opposite to appell's, 10 to 16 digits).  Negated
+      // here, so that the score measures the rest.
+      const Eigen::Vector6d w = -joint->getWrenchToChildBodyNode();
+      for (int i = 0; i < 3; ++i) std::cout << "," << g17(w[3 + i]);
+      for (int i = 0; i < 3; ++i) std::cout << "," << g17(w[i]);
+    }
+    std::cout << "\n";
+  }
+  return 0;
+} catch (const std::exception& e) {
+  std::cerr << "dart_reference: " << e.what() << "\n";
+  return 4;
+}

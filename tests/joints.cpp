@@ -1,0 +1,459 @@
+// Links of a tree (SCENES.md, "links of a tree") and robots from URDF:
+//  * a tree's accelerations are those of the same system written with expressions (centres and
+//    orientations composed by hand from the joints' data): the expression model's value at 256
+//    bits lies in the tree's enclosures (interval, mpfi), over random states;
+//  * a joint's wrench is the reaction of the released joint: the child a free body (six
+//    coordinates), the joint five holonomic constraints, the wrench of their reactions (Cotton's,
+//    equal to Lagrange's) by the virtual work -- the existing machinery, another path entirely;
+//  * inverse dynamics gives back the torques forward dynamics took (URDF arm and the WAM);
+//  * a URDF scene is its converted system file; bad URDF input is refused naming the element.
+#define BOOST_TEST_MODULE joints
+#include <boost/test/unit_test.hpp>
+
+#include <cstring>
+#include <filesystem>
+#include <iomanip>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <unistd.h>
+
+#include "appell/io/models/system.hpp"
+#include "appell/io/scene.hpp"
+#include "appell/io/urdf.hpp"
+#include "bounds_400.hpp"
+
+using namespace appell;
+using testing::bounds_of;
+using testing::ref_t;  // 400 bits
+
+namespace {
+
+std::string data(const std::string& f) { return std::string(APPELL_SOURCE_DIR "/data/") + f; }
+
+scene_input from_text(const std::string& text) { return read_scene(parse_json(text)); }
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// One link of a chain: its joint's data both ways (the tree's fields; elementary rotations for
+/// the expression version).
+struct chain_link {
+  std::string name, joint, q;  // q: the coordinate ("" fixed)
+  std::array<std::string, 3> origin, com;
+  std::vector<std::pair<int, std::string>> R0, axis_turn, Rin;  // (axis, angle), left to right
+  std::array<std::string, 3> rpy, axis, com_rpy;                // the tree's fields
+  std::array<std::string, 3> unit_axis;                         // the axis normalized (expressions)
+  std::string mass;
+  std::array<std::string, 6> inertia;
+  std::string effort;
+};
+
+/// A 3-vector of expressions turned by elementary rotations (applied right to left).
+std::array<std::string, 3> turned(std::array<std::string, 3> v, const std::vector<std::pair<int, std::string>>& rs) {
+  for (auto it = rs.rbegin(); it != rs.rend(); ++it) {
+    const int k = it->first, i = (k + 1) % 3, j = (k + 2) % 3;
+    const std::string c = "cos(" + it->second + ")", s = "sin(" + it->second + ")";
+    std::array<std::string, 3> r = v;
+    r[static_cast<std::size_t>(i)] = "(" + c + "*" + v[static_cast<std::size_t>(i)] + " - " + s + "*" + v[static_cast<std::size_t>(j)] + ")";
+    r[static_cast<std::size_t>(j)] = "(" + s + "*" + v[static_cast<std::size_t>(i)] + " + " + c + "*" + v[static_cast<std::size_t>(j)] + ")";
+    v = r;
+  }
+  return v;
+}
+std::string list(const std::array<std::string, 3>& v) { return "[\"" + v[0] + "\", \"" + v[1] + "\", \"" + v[2] + "\"]"; }
+std::string product(const std::vector<std::pair<int, std::string>>& rs) {
+  std::string s;
+  for (const auto& [a, angle] : rs) s += std::string(s.empty() ? "" : " ") + "r" + "xyz"[a] + "(" + angle + ")";
+  return s;
+}
+
+/// The two-link arm of the tests: a shoulder about z under a turned frame, an elbow about
+/// (0, 1, 1) under a frame turned about two axes, both links' inertia axes turned or not.
+std::vector<chain_link> arm() {
+  chain_link a;
+  a.name = "upper", a.joint = "shoulder", a.q = "q1";
+  a.origin = {"0", "0", "0.1"}, a.rpy = {"0", "0", "0.5"}, a.R0 = {{2, "0.5"}};
+  a.axis = {"0", "0", "1"}, a.unit_axis = a.axis, a.axis_turn = {{2, "q1"}};
+  a.com = {"0.1", "0.01", "0.2"}, a.com_rpy = {"0.3", "0", "0"}, a.Rin = {{0, "0.3"}};
+  a.mass = "1.2", a.inertia = {"0.02", "0.018", "0.005", "0.001", "0", "0.0005"};
+  a.effort = "0.3";
+  chain_link b;
+  b.name = "fore", b.joint = "elbow", b.q = "q2";
+  b.origin = {"0", "0.02", "0.4"}, b.rpy = {"1.5707963", "0", "0.2"}, b.R0 = {{2, "0.2"}, {0, "1.5707963"}};
+  b.axis = {"0", "1", "1"}, b.unit_axis = {"0", "1/sqrt(2)", "1/sqrt(2)"}, b.axis_turn = {{0, "-pi/4"}, {2, "q2"}, {0, "pi/4"}};
+  b.com = {"0.05", "0", "0.15"}, b.com_rpy = {"0", "0", "0"};
+  b.mass = "0.8", b.inertia = {"0.01", "0.012", "0.004", "0", "0.0002", "0"};
+  b.effort = "-0.1 - 0.05*q2_dot";
+  return {a, b};
+}
+
+std::string state_text(const std::array<std::string, 4>& s) {
+  return "\"state\": {\"q1\": \"" + s[0] + "\", \"q2\": \"" + s[1] + "\", \"q1_dot\": \"" + s[2] + "\", \"q2_dot\": \"" +
+         s[3] + "\"}";
+}
+
+std::string tree_file(const std::vector<chain_link>& links, const std::array<std::string, 4>& state) {
+  std::string s = "{\"model\": \"system\", \"coordinates\": [\"q1\", \"q2\"], \"gravity\": [\"0\", \"0\", \"-9.81\"], \"bodies\": {";
+  for (std::size_t k = 0; k < links.size(); ++k) {
+    const chain_link& l = links[k];
+    s += std::string(k ? ", " : "") + "\"" + l.name + "\": {\"mass\": \"" + l.mass + "\", \"inertia\": [";
+    for (std::size_t i = 0; i < 6; ++i) s += std::string(i ? ", " : "") + "\"" + l.inertia[i] + "\"";
+    s += "], \"inertial\": {\"xyz\": " + list(l.com) + ", \"rpy\": " + list(l.com_rpy) + "}, \"joint\": {\"name\": \"" +
+         l.joint + "\"" + (k ? ", \"parent\": \"" + links[k - 1].name + "\"" : "") + ", \"type\": \"revolute\", \"coordinate\": \"" +
+         l.q + "\", \"origin\": " + list(l.origin) + ", \"rpy\": " + list(l.rpy) + ", \"axis\": " + list(l.axis) +
+         ", \"effort\": \"" + l.effort + "\"}}";
+  }
+  return s + "}, " + state_text(state) + "}";
+}
+
+/// The same arm with centres and orientations written out; `released`: the first link free (six
+/// coordinates: q1, e1, e2 turning it, x y z its centre), its joint to the ground five
+/// constraints, with the wrench of their reactions at the joint's origin (the links beyond hang
+/// from the free link's coordinates).
+std::string expression_file(const std::vector<chain_link>& links, const std::array<std::string, 4>& state, bool released,
+                            const std::string& released_state = "") {
+  std::string bodies;
+  std::vector<std::pair<int, std::string>> R;  // the link frame's rotations so far
+  std::array<std::string, 3> O{"0", "0", "0"};  // its origin
+  std::vector<std::array<std::string, 3>> axes;  // each joint's axis on the fixed axes
+  std::string constraints, wrench;
+  for (std::size_t k = 0; k < links.size(); ++k) {
+    const chain_link& l = links[k];
+    const auto o = turned(l.origin, R);
+    for (int i = 0; i < 3; ++i) O[static_cast<std::size_t>(i)] = "(" + O[static_cast<std::size_t>(i)] + " + " + o[static_cast<std::size_t>(i)] + ")";
+    R.insert(R.end(), l.R0.begin(), l.R0.end());
+    axes.push_back(turned(l.unit_axis, R));  // the axis, before the joint's own turn (which keeps it)
+    const bool free = released && k == 0;
+    auto joint_turn = l.axis_turn;
+    if (free) joint_turn.insert(joint_turn.end(), {{0, "e1"}, {1, "e2"}});  // about axes normal to the joint's (z)
+    R.insert(R.end(), joint_turn.begin(), joint_turn.end());
+    auto body_R = R;
+    body_R.insert(body_R.end(), l.Rin.begin(), l.Rin.end());
+    const auto c = turned(l.com, R);
+    std::array<std::string, 3> G;
+    for (int i = 0; i < 3; ++i) G[static_cast<std::size_t>(i)] = "(" + O[static_cast<std::size_t>(i)] + " + " + c[static_cast<std::size_t>(i)] + ")";
+    // the efforts: +tau axis on the link, -tau axis on its parent (couples, fixed axes)
+    std::array<std::string, 3> couple;
+    for (int i = 0; i < 3; ++i) {
+      couple[static_cast<std::size_t>(i)] = "(" + l.effort + ")*" + axes[k][static_cast<std::size_t>(i)];
+      if (k + 1 < links.size())
+        couple[static_cast<std::size_t>(i)] += " - (" + links[k + 1].effort + ")*(" + "AXIS" + std::to_string(k + 1) + "_" + std::to_string(i) + ")";
+    }
+    std::string body = "\"" + l.name + "\": {\"mass\": \"" + l.mass + "\", \"inertia\": [";
+    for (std::size_t i = 0; i < 6; ++i) body += std::string(i ? ", " : "") + "\"" + l.inertia[i] + "\"";
+    body += "], \"center\": " + (free ? std::string("[\"x\", \"y\", \"z\"]") : list(G)) + ", \"orientation\": \"" + product(body_R) +
+            "\", \"couple\": " + list(couple) + "}";
+    bodies += (k ? ", " : "") + body;
+    if (free) {  // the links beyond hang from the free link: its origin is (x, y, z) - R c
+      const std::array<std::string, 3> P{"x", "y", "z"};
+      const std::array<std::string, 3> jointO = O;
+      for (int i = 0; i < 3; ++i)
+        O[static_cast<std::size_t>(i)] = "(" + P[static_cast<std::size_t>(i)] + " - " + c[static_cast<std::size_t>(i)] + ")";
+      wrench = "\"shoulder_joint\": {\"body\": \"" + l.name + "\", \"point\": " + list(jointO) +
+               ", \"constraints\": [\"jx\", \"jy\", \"jz\", \"je1\", \"je2\"]}";
+      for (int i = 0; i < 3; ++i)
+        constraints += std::string(i ? ", " : "") + "\"j" + "xyz"[i] + "\": {\"holonomic\": \"" + "xyz"[i] + " - " + G[static_cast<std::size_t>(i)] + "\"}";
+      constraints += ", \"je1\": {\"holonomic\": \"e1\"}, \"je2\": {\"holonomic\": \"e2\"}";
+    }
+  }
+  // the parent's -tau axis of the next joint (placeholders filled now that the axes are known)
+  for (std::size_t k = 1; k < axes.size(); ++k)
+    for (int i = 0; i < 3; ++i) {
+      const std::string key = "AXIS" + std::to_string(k) + "_" + std::to_string(i);
+      for (std::size_t at; (at = bodies.find(key)) != std::string::npos;) bodies.replace(at, key.size(), axes[k][static_cast<std::size_t>(i)]);
+    }
+  std::string s = "{\"model\": \"system\", \"coordinates\": [\"q1\", \"q2\"" +
+                  std::string(released ? ", \"e1\", \"e2\", \"x\", \"y\", \"z\"" : "") +
+                  "], \"gravity\": [\"0\", \"0\", \"-9.81\"], \"bodies\": {" + bodies + "}";
+  if (released) {
+    s += ", \"constraints\": {" + constraints + "}, \"wrenches\": {" + wrench + "}";
+    s += ", \"solve_speeds\": [\"e1_dot\", \"e2_dot\", \"x_dot\", \"y_dot\", \"z_dot\"], " + released_state + "}";
+    return s;
+  }
+  return s + ", " + state_text(state) + "}";
+}
+
+template <class T>
+std::pair<ref_t, ref_t> bounds(const evaluation<T>& e, const std::string& name, std::size_t i = 0) {
+  return bounds_of(e.result(name).values[i]);
+}
+
+std::string decimal(const ref_t& x) {
+  std::ostringstream o;
+  o << std::setprecision(100) << x;
+  return o.str();
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(a_tree_gives_the_accelerations_of_the_system_written_with_expressions) {
+  std::mt19937_64 rng(20261127);
+  std::uniform_real_distribution<double> angle(-3, 3), rate(-4, 4);
+  int checked = 0;
+  for (int n = 0; n < 12; ++n) {
+    std::ostringstream s[4];
+    s[0] << angle(rng), s[1] << angle(rng), s[2] << rate(rng), s[3] << rate(rng);
+    const std::array<std::string, 4> st{s[0].str(), s[1].str(), s[2].str(), s[3].str()};
+    if (std::getenv("JOINTS_DUMP")) {
+      std::ofstream(std::string(std::getenv("JOINTS_DUMP")) + "/tree.json") << tree_file(arm(), st);
+      std::ofstream(std::string(std::getenv("JOINTS_DUMP")) + "/expr.json") << expression_file(arm(), st, false);
+    }
+    const scene_input tree = from_text(tree_file(arm(), st));
+    const scene_input expr = from_text(expression_file(arm(), st, false));
+    // the truth at 512 bits (its own rounding far below the 256-bit enclosure's width)
+    const evaluation<mpfr> truth = [&] {
+      const mp_precision_scope high(512);
+      return evaluate<mpfr>(expr);
+    }();
+    const mp_precision_scope scope(256);
+    const evaluation<mpfi> wide = evaluate<mpfi>(tree);
+    const evaluation<interval> narrow = evaluate<interval>(tree);
+    for (const char* name : {"q1_ddot", "q2_ddot"}) {
+      const ref_t x = bounds(truth, name).first;
+      for (const auto& [lo, hi] : {bounds(wide, name), bounds(narrow, name)}) {
+        BOOST_TEST((lo <= x && x <= hi), name << " at state " << n << ": " << x << " outside [" << lo << ", " << hi << "]");
+        BOOST_TEST(double(hi - lo) <= 1e-12 * std::max(1.0, double(abs(x))));
+      }
+      ++checked;
+    }
+    // the tree's own checks: eq. (4) and each joint's virtual work hold
+    for (const char* c : {"virtual_work_invariant", "shoulder_virtual_work", "elbow_virtual_work"}) {
+      const auto [lo, hi] = bounds_of(narrow.check(c).values[0]);
+      BOOST_TEST((lo <= 0 && 0 <= hi), c);
+    }
+  }
+  BOOST_TEST(checked == 24);
+}
+
+BOOST_AUTO_TEST_CASE(a_joint_wrench_is_the_reaction_of_the_released_joint) {
+  // The shoulder released: the upper arm free (six coordinates), its joint to the ground five
+  // constraints, the forearm hanging from it; the wrench of the constraints' reactions at the
+  // joint's origin (fixed axes) against the tree's shoulder wrench (link axes) turned to the
+  // fixed axes, less the actuator's couple (an applied couple in the released system).
+  const mp_precision_scope scope(256);
+  const ref_t pi = boost::math::constants::pi<ref_t>();
+  (void)pi;
+  auto rot = [](int axis, const ref_t& a, std::array<ref_t, 3> v) {
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    const ref_t c = cos(a), s = sin(a), vi = v[static_cast<std::size_t>(i)], vj = v[static_cast<std::size_t>(j)];
+    v[static_cast<std::size_t>(i)] = c * vi - s * vj;
+    v[static_cast<std::size_t>(j)] = s * vi + c * vj;
+    return v;
+  };
+  std::mt19937_64 rng(32);
+  std::uniform_real_distribution<double> angle(-3, 3), rate(-4, 4);
+  for (int n = 0; n < 6; ++n) {
+    std::ostringstream s[4];
+    s[0] << angle(rng), s[1] << angle(rng), s[2] << rate(rng), s[3] << rate(rng);
+    const std::array<std::string, 4> st{s[0].str(), s[1].str(), s[2].str(), s[3].str()};
+    const evaluation<mpfi> t = evaluate<mpfi>(from_text(tree_file(arm(), st)));
+    const ref_t q1(st[0]);
+    auto RL1 = [&](const std::array<ref_t, 3>& v) { return rot(2, ref_t("0.5") + q1, v); };
+    const std::array<ref_t, 3> c = RL1({ref_t("0.1"), ref_t("0.01"), ref_t("0.2")});
+    const std::string released_state = "\"state\": {\"q1\": \"" + st[0] + "\", \"q2\": \"" + st[1] +
+                                       "\", \"e1\": \"0\", \"e2\": \"0\", \"x\": \"" + decimal(c[0]) + "\", \"y\": \"" +
+                                       decimal(c[1]) + "\", \"z\": \"" + decimal(ref_t("0.1") + c[2]) + "\", \"q1_dot\": \"" +
+                                       st[2] + "\", \"q2_dot\": \"" + st[3] + "\"}";
+    const evaluation<mpfi> r = evaluate<mpfi>(from_text(expression_file(arm(), st, true, released_state)));
+    // the same motion
+    for (const char* name : {"q1_ddot", "q2_ddot"}) {
+      const auto [lo, hi] = bounds(t, name);
+      const auto [rlo, rhi] = bounds(r, name);
+      BOOST_TEST((lo <= rhi && rlo <= hi), name << " at state " << n);
+      BOOST_TEST(double(hi - lo) < 1e-60);
+    }
+    std::array<ref_t, 3> F, M;
+    for (std::size_t i = 0; i < 3; ++i) {
+      F[i] = bounds(t, "shoulder_force", i).first;
+      M[i] = bounds(t, "shoulder_moment", i).first;
+    }
+    M[2] -= ref_t("0.3");  // the actuator's couple about z
+    const std::array<ref_t, 3> Ff = RL1(F), Mf = RL1(M);
+    for (std::size_t i = 0; i < 3; ++i) {
+      const auto [flo, fhi] = bounds(r, "shoulder_joint_force", i);
+      const auto [mlo, mhi] = bounds(r, "shoulder_joint_moment", i);
+      BOOST_TEST(double(abs(Ff[i] - flo)) < 1e-50, "force " << i << " at state " << n << ": tree " << Ff[i] << ", released " << flo);
+      BOOST_TEST(double(abs(Mf[i] - mlo)) < 1e-50, "moment " << i << " at state " << n << ": tree " << Mf[i] << ", released " << mlo);
+      BOOST_TEST(double(fhi - flo) < 1e-50);
+      BOOST_TEST(double(mhi - mlo) < 1e-50);
+    }
+    // the released joint's own checks: Cotton's reactions are Lagrange's; the wrench does their work
+    for (const char* k : {"jx", "jy", "jz", "je1", "je2"}) {
+      const auto [lo, hi] = bounds_of(r.check(std::string(k) + "_cotton_minus_lagrange").values[0]);
+      BOOST_TEST((lo <= 0 && 0 <= hi));
+    }
+    BOOST_TEST(double(abs(Ff[2])) > 1);  // the arm's weight at least: not a wrench that is 0 both ways
+  }
+}
+
+BOOST_AUTO_TEST_CASE(inverse_dynamics_gives_back_the_torques_forward_dynamics_took) {
+  struct robot {
+    std::string scene;
+    std::vector<std::string> joints;
+  };
+  std::vector<robot> robots{{data("scenes/urdf_appell_arm.json"), {"waist", "shoulder", "elbow", "slide"}}};
+  if (std::filesystem::exists("/usr/share/doc/dart/data/urdf/wam/wam.urdf"))
+    robots.push_back({data("scenes/urdf_wam.json"), {"/j1", "/j2", "/j3", "/j4", "/j5", "/j6", "/j7"}});
+  else
+    BOOST_TEST_MESSAGE("dart-doc's WAM is not installed: the WAM is left out (scripts/deps.sh installs it)");
+  for (const robot& rb : robots) {
+    const mp_precision_scope scope(256);
+    const scene_input fwd = read_scene_file(rb.scene);
+    const evaluation<mpfi> f = evaluate<mpfi>(fwd);
+    // the scene again, its torques replaced by the accelerations found (100 digits)
+    std::string text = slurp(rb.scene);
+    const auto at = text.find("\"torques\"");
+    BOOST_REQUIRE(at != std::string::npos);
+    const std::string torques = text.substr(at, text.rfind('}') - at);
+    std::string acc = "\"accelerations\": {";
+    const auto names = urdf_joint_names(read_urdf_file(rb.scene.find("wam") != std::string::npos
+                                                           ? "/usr/share/doc/dart/data/urdf/wam/wam.urdf"
+                                                           : data("urdf/appell_arm.urdf")));
+    for (std::size_t k = 0; k < rb.joints.size(); ++k)
+      acc += std::string(k ? ", " : "") + "\"" + rb.joints[k] + "\": \"" +
+             decimal(bounds(f, names.at(rb.joints[k]) + "_ddot").first) + "\"";
+    text.replace(at, torques.size(), acc + "}");
+    const std::string dir = std::filesystem::path(rb.scene).parent_path().string();
+    const std::string tmp = dir + "/.inverse_" + std::to_string(::getpid()) + ".json";
+    std::ofstream(tmp) << text;
+    scene_input inv;
+    try {
+      inv = read_scene_file(tmp);
+    } catch (...) {
+      std::filesystem::remove(tmp);
+      throw;
+    }
+    std::filesystem::remove(tmp);
+    const evaluation<mpfi> i = evaluate<mpfi>(inv);
+    const std::string given = torques;
+    for (const std::string& j : rb.joints) {
+      const std::string n = names.at(j);
+      const auto key = given.find("\"" + j + "\"");
+      const auto q1 = given.find('"', given.find(':', key) + 1) + 1;
+      const ref_t tau(given.substr(q1, given.find('"', q1) - q1));
+      const auto [lo, hi] = bounds(i, n + "_effort");
+      BOOST_TEST(double(abs(lo - tau)) < 1e-60, j << ": effort " << lo << ", torque given " << tau);
+      BOOST_TEST(double(hi - lo) < 1e-60);
+      for (std::size_t c = 0; c < 3; ++c)
+        for (const char* w : {"_force", "_moment"}) {
+          const auto [a, b] = bounds(f, n + w, c);
+          const auto [x, y] = bounds(i, n + w, c);
+          BOOST_TEST(double(abs(a - x)) < 1e-55, j << w << "[" << c << "]");
+        }
+      const auto [vlo, vhi] = bounds_of(i.check(n + "_virtual_work").values[0]);
+      BOOST_TEST((vlo <= 0 && 0 <= vhi));
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_urdf_scene_is_its_converted_system_file) {
+  const std::string scene = data("scenes/urdf_appell_arm.json");
+  const std::string text = convert_to_system(scene);
+  BOOST_TEST(text.find("\"model\": \"system\"") != std::string::npos);
+  BOOST_TEST(text.find("\"1.5707963267948966\"") != std::string::npos);  // the URDF's decimal, as written
+  const evaluation<interval> a = evaluate<interval>(read_scene_file(scene));
+  const evaluation<interval> b = evaluate<interval>(from_text(text));
+  BOOST_REQUIRE(a.results.size() == b.results.size());
+  for (std::size_t k = 0; k < a.results.size(); ++k)
+    for (std::size_t c = 0; c < a.results[k].values.size(); ++c) {
+      BOOST_TEST(a.results[k].name == b.results[k].name);
+      const auto [lo, hi] = bounds_of(a.results[k].values[c]);
+      const auto [blo, bhi] = bounds_of(b.results[k].values[c]);
+      BOOST_TEST((lo == blo && hi == bhi), a.results[k].name);
+    }
+  // every joint's wrench is reported (the fixed flange's too), every moving joint's check
+  for (const char* j : {"waist", "shoulder", "elbow", "slide", "flange"}) {
+    BOOST_CHECK_NO_THROW(a.result(std::string(j) + "_force"));
+    BOOST_CHECK_NO_THROW(a.result(std::string(j) + "_moment"));
+  }
+  BOOST_CHECK_THROW(a.check("flange_virtual_work"), std::out_of_range);
+}
+
+BOOST_AUTO_TEST_CASE(bad_urdf_input_is_refused_naming_the_element) {
+  const std::string arm = slurp(data("urdf/appell_arm.urdf"));
+  auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string s = arm;
+    const auto at = s.find(from);
+    BOOST_REQUIRE(at != std::string::npos);
+    return s.replace(at, from.size(), to);
+  };
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"<robot><link name=\"a\"", "not XML"},
+      {"<?xml version=\"1.0\"?><sdf/>", "not a URDF"},
+      {replaced("type=\"prismatic\"", "type=\"helical\""), "unknown joint type \"helical\""},
+      {replaced("type=\"prismatic\"", "type=\"floating\""), "floating joint is not supported"},
+      {replaced("<axis xyz=\"0 0.6 0.8\"/>", "<axis xyz=\"0 0 0.0\"/>"), "name=\"elbow\">: the axis is 0"},
+      {replaced("<axis xyz=\"0 0.6 0.8\"/>", "<axis xyz=\"0 0.6\"/>"), "not three numbers"},
+      {replaced("value=\"1.7\"", "value=\"1.7kg\""), "not a decimal number"},
+      {replaced("<child link=\"forearm\"/>", "<child link=\"turret\"/>"), "has two parents"},
+      {replaced("<parent link=\"ram\"/>", "<parent link=\"nowhere\"/>"), "no link named \"nowhere\""},
+      {replaced("<joint name=\"elbow\"", "<joint name=\"shoulder\""), "a second joint of this name"},
+      {replaced("<mass value=\"0.35\"/>", "<mass value=\"-0.35\"/>"), "a negative mass"},
+  };
+  const std::string dir = std::filesystem::temp_directory_path().string();
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const std::string file = dir + "/appell_bad_" + std::to_string(::getpid()) + "_" + std::to_string(k) + ".urdf";
+    std::ofstream(file) << cases[k].first;
+    std::string message;
+    try {
+      (void)read_urdf_file(file);
+    } catch (const input_error& e) {
+      message = e.what();
+    }
+    std::filesystem::remove(file);
+    BOOST_TEST(message.find(cases[k].second) != std::string::npos, "case " << k << ": \"" << message << "\"");
+  }
+  // a link without inertial data at the end of the chain: the mass matrix is singular
+  {
+    // the ram and the tool massless: the slide moves nothing
+    std::string s = arm;
+    for (const char* m : {"<mass value=\"0.35\"/>", "<mass value=\"0.25\"/>"}) {
+      const auto at = s.find(m);
+      BOOST_REQUIRE(at != std::string::npos);
+      s.replace(at, std::strlen(m), "<mass value=\"0\"/>");
+    }
+    const std::string file = dir + "/appell_massless_" + std::to_string(::getpid()) + ".urdf";
+    std::ofstream(file) << s;
+    const std::string scene = dir + "/appell_massless_" + std::to_string(::getpid()) + ".json";
+    std::ofstream(scene) << "{\"model\": \"urdf\", \"file\": \"" << file << "\", \"gravity\": [0, 0, -9.81], \"state\": "
+                         << "{\"waist\": {\"q\": 0, \"q_dot\": 0}, \"shoulder\": {\"q\": 0, \"q_dot\": 0}, "
+                         << "\"elbow\": {\"q\": 0, \"q_dot\": 0}, \"slide\": {\"q\": 0, \"q_dot\": 0}}}";
+    std::string message;
+    try {
+      (void)read_scene_file(scene);
+    } catch (const input_error& e) {
+      message = e.what();
+    }
+    std::filesystem::remove(file);
+    std::filesystem::remove(scene);
+    BOOST_TEST(message.find("bodies.ram.joint: the mass matrix is singular") != std::string::npos, message);
+  }
+  // the scene: an unknown joint, a missing one, a fixed one given a state
+  const std::string scene = slurp(data("scenes/urdf_appell_arm.json"));
+  auto scene_with = [&](const std::string& from, const std::string& to) {
+    std::string s = scene;
+    const auto at = s.find(from);
+    BOOST_REQUIRE(at != std::string::npos);
+    s.replace(at, from.size(), to);
+    const std::string file = std::string(APPELL_SOURCE_DIR "/data/scenes/.bad_") + std::to_string(::getpid()) + ".json";
+    std::ofstream(file) << s;
+    std::string message;
+    try {
+      (void)read_scene_file(file);
+    } catch (const input_error& e) {
+      message = e.what();
+    }
+    std::filesystem::remove(file);
+    return message;
+  };
+  BOOST_TEST(scene_with("\"waist\": {", "\"wrist\": {").find("state.wrist: no joint of this name") != std::string::npos);
+  BOOST_TEST(scene_with("\"waist\": {\"q\": \"0.4\", \"q_dot\": \"0.7\"},", "").find("state: joint \"waist\" is missing") !=
+             std::string::npos);
+  BOOST_TEST(scene_with("\"waist\": {", "\"flange\": {\"q\": \"0\", \"q_dot\": \"0\"}, \"waist\": {")
+                 .find("state.flange: a fixed joint") != std::string::npos);
+  BOOST_TEST(scene_with("\"file\": \"../urdf/appell_arm.urdf\"", "\"file\": \"../urdf/none.urdf\"").find("cannot read the URDF file") !=
+             std::string::npos);
+}
