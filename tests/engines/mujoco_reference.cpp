@@ -1,0 +1,172 @@
+// MuJoCo 2.2.2 (Debian libmujoco-dev) on a `urdf` scene's states, for `appell score`
+// (tests/engine_score.sh):
+//   mujoco_reference states SCENE N SEED   the scene's joints at N random states (CSV)
+//   mujoco_reference values SCENE STATES   MuJoCo's values at those states, named as appell's results
+// MuJoCo compiles the URDF itself (mj_loadXML; the geometry stripped, static bodies kept apart:
+// fusestatic off); joint limits and contacts disabled (appell models neither), the scene's
+// gravity and torques (qfrc_applied). Forward dynamics: mj_forward's qacc. Wrenches: cfrc_int
+// after mj_rnePostConstraint, the interaction force with the parent, rotation first, on the world
+// axes about the subtree centre of mass of the root (d->subtree_com[m->body_rootid[b]]): shifted
+// here to the body's origin (the joint's, for a URDF) and turned onto the body's axes.
+#include <mujoco/mujoco.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace {
+
+std::string appell_name(const std::string& urdf) {
+  std::string s;
+  for (char c : urdf) s += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  const auto b = s.find_first_not_of('_');
+  s = b == std::string::npos ? "" : s.substr(b);
+  while (!s.empty() && s.back() == '_') s.pop_back();
+  if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) s = "joint_" + s;
+  return s;
+}
+
+std::string g17(double x) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+/// The URDF without geometry, with MuJoCo's compiler told to keep static bodies apart.
+std::string prepared_urdf(const std::string& path) {
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const std::string tag : {"visual", "collision"})
+    for (std::size_t at; (at = text.find("<" + tag)) != std::string::npos;) {
+      const std::string close = "</" + tag + ">";
+      std::size_t end = text.find(close, at);
+      const std::size_t self = text.find("/>", at), gt = text.find('>', at);
+      if (self != std::string::npos && self + 1 == gt) end = self + 2;
+      else if (end == std::string::npos) throw std::runtime_error(path + ": an unclosed <" + tag + ">");
+      else end += close.size();
+      text.erase(at, end - at);
+    }
+  const auto robot = text.find("<robot");
+  const auto open_end = text.find('>', robot);
+  text.insert(open_end + 1, "<mujoco><compiler fusestatic=\"false\" discardvisual=\"true\" balanceinertia=\"false\"/></mujoco>");
+  const auto out = std::filesystem::temp_directory_path() / ("mujoco_reference_" + std::to_string(::getpid()) + ".urdf");
+  std::ofstream(out) << text;
+  return out.string();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) try {
+  const std::string mode = argc > 1 ? argv[1] : "";
+  if (!((mode == "states" && argc == 5) || (mode == "values" && argc == 4))) {
+    std::cerr << "usage: mujoco_reference states SCENE N SEED | values SCENE STATES\n";
+    return 2;
+  }
+  std::ifstream sin(argv[2]);
+  const nlohmann::json scene = nlohmann::json::parse(sin);
+  std::vector<std::string> joints;
+  for (auto it = scene.at("state").begin(); it != scene.at("state").end(); ++it) joints.push_back(it.key());
+  if (mode == "states") {
+    std::mt19937_64 rng(std::stoull(argv[4]));
+    std::uniform_int_distribution<long> q(-1500000, 1500000), qd(-2000000, 2000000);
+    std::cout << "state";
+    for (const auto& j : joints) std::cout << ",state." << j << ".q,state." << j << ".q_dot";
+    std::cout << "\n";
+    for (int r = 0; r < std::stoi(argv[3]); ++r) {
+      std::cout << "s" << r;
+      for (std::size_t k = 0; k < joints.size(); ++k) {
+        char b[64];
+        std::snprintf(b, sizeof b, ",%.6f,%.6f", q(rng) * 1e-6, qd(rng) * 1e-6);
+        std::cout << b;
+      }
+      std::cout << "\n";
+    }
+    return 0;
+  }
+  std::filesystem::path file = scene.at("file").get<std::string>();
+  if (file.is_relative()) file = std::filesystem::path(argv[2]).parent_path() / file;
+  const std::string bare = prepared_urdf(file.string());
+  char error[1000] = "";
+  mjModel* m = mj_loadXML(bare.c_str(), nullptr, error, sizeof error);
+  std::filesystem::remove(bare);
+  if (!m) throw std::runtime_error(std::string("MuJoCo could not compile ") + file.string() + ": " + error);
+  m->opt.disableflags |= mjDSBL_LIMIT | mjDSBL_CONTACT;
+  const auto& g = scene.at("gravity");
+  for (int i = 0; i < 3; ++i) m->opt.gravity[i] = std::stod(g[i].get<std::string>());
+  mjData* d = mj_makeData(m);
+  auto joint_id = [&](const std::string& name) {
+    const int id = mj_name2id(m, mjOBJ_JOINT, name.c_str());
+    if (id < 0) throw std::runtime_error("no joint " + name + " in MuJoCo's model");
+    return id;
+  };
+  std::ifstream in(argv[3]);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  {
+    std::stringstream ss(line);
+    for (std::string f; std::getline(ss, f, ',');) header.push_back(f);
+  }
+  // bodies with a parent other than the world, and the URDF joint that makes each (by the child)
+  std::cout << "state";
+  for (const auto& j : joints) std::cout << "," << appell_name(j) << "_ddot";
+  std::vector<std::pair<int, std::string>> wrenches;  // (body, joint name)
+  for (int b = 1; b < m->nbody; ++b) {
+    if (m->body_jntnum[b] != 1) continue;  // a fixed joint's body has no MuJoCo joint: left out
+    const std::string name = mj_id2name(m, mjOBJ_JOINT, m->body_jntadr[b]);
+    wrenches.emplace_back(b, name);
+    const std::string n = appell_name(name);
+    for (int i = 0; i < 3; ++i) std::cout << "," << n << "_force[" << i << "]";
+    for (int i = 0; i < 3; ++i) std::cout << "," << n << "_moment[" << i << "]";
+  }
+  std::cout << "\n";
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
+    mj_resetData(m, d);
+    for (std::size_t c = 1; c < header.size() && c < f.size(); ++c) {
+      const std::string& h = header[c];
+      const bool rate = h.size() > 6 && h.compare(h.size() - 6, 6, ".q_dot") == 0;
+      const int id = joint_id(h.substr(6, h.size() - 6 - (rate ? 6 : 2)));
+      if (rate) d->qvel[m->jnt_dofadr[id]] = std::stod(f[c]);
+      else d->qpos[m->jnt_qposadr[id]] = std::stod(f[c]);
+    }
+    if (scene.contains("torques"))
+      for (auto it = scene["torques"].begin(); it != scene["torques"].end(); ++it)
+        d->qfrc_applied[m->jnt_dofadr[joint_id(it.key())]] = std::stod(it.value().get<std::string>());
+    mj_forward(m, d);
+    mj_rnePostConstraint(m, d);
+    std::cout << f[0];
+    for (const auto& j : joints) std::cout << "," << g17(d->qacc[m->jnt_dofadr[joint_id(j)]]);
+    for (const auto& [b, name] : wrenches) {
+      const mjtNum* w = d->cfrc_int + 6 * b;  // torque about c, force; world axes
+      const mjtNum* c = d->subtree_com + 3 * m->body_rootid[b];
+      const mjtNum* p = d->xpos + 3 * b;
+      const mjtNum* R = d->xmat + 9 * b;  // body axes to world, row-major
+      double M[3], F[3] = {w[3], w[4], w[5]}, r[3] = {c[0] - p[0], c[1] - p[1], c[2] - p[2]};
+      M[0] = w[0] + r[1] * F[2] - r[2] * F[1];
+      M[1] = w[1] + r[2] * F[0] - r[0] * F[2];
+      M[2] = w[2] + r[0] * F[1] - r[1] * F[0];
+      for (int i = 0; i < 3; ++i) std::cout << "," << g17(R[i] * F[0] + R[3 + i] * F[1] + R[6 + i] * F[2]);
+      for (int i = 0; i < 3; ++i) std::cout << "," << g17(R[i] * M[0] + R[3 + i] * M[1] + R[6 + i] * M[2]);
+    }
+    std::cout << "\n";
+  }
+  mj_deleteData(d);
+  mj_deleteModel(m);
+  return 0;
+} catch (const std::exception& e) {
+  std::cerr << "mujoco_reference: " << e.what() << "\n";
+  return 4;
+}
