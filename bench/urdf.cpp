@@ -1,12 +1,15 @@
 // Robots from URDF (Google Benchmark): one `eval` of a `urdf` scene -- the forward dynamics and
 // every joint's wrench, with their checks -- in double, interval and mpfi at 113 bits, on the
 // robots Debian's dart-doc ships (the WAM arm, 7 joints; the KUKA KR5, 6; the Atlas humanoid,
-// 27, pelvis fixed) and appell's own arm, in one run.  Goals (issue 32): the WAM within 1 ms in
-// interval and 20 ms in mpfi at 113 bits; the Atlas within 10 ms in interval.
+// 27, pelvis fixed) and appell's own arm, in one run; and cost against size on generated serial
+// chains of 1 to 64 links.  Goals (issue 32): the WAM within 1 ms in interval and 20 ms in mpfi at
+// 113 bits; the Atlas within 10 ms in interval.
 // Run: build/bench/appell_bench_urdf
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 
@@ -20,6 +23,45 @@ namespace {
 const char* const robots[] = {"urdf_appell_arm.json", "urdf_wam.json", "urdf_kr5.json", "urdf_atlas.json"};
 const std::pair<const char*, std::optional<unsigned>> scalars[] = {{"double", std::nullopt}, {"interval", std::nullopt},
                                                                    {"mpfi", 113u}};
+
+const int chain_sizes[] = {1, 2, 4, 8, 16, 32, 64};
+
+/// A generated serial chain of n links (URDF and its scene, in the temporary directory): joints
+/// about z and y in turn, each frame turned (rpy 0.1 0 0.2), full inertia tensors.
+std::string chain_scene(int n) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string urdf = (dir / ("appell_bench_chain_" + std::to_string(n) + ".urdf")).string();
+  std::ofstream u(urdf);
+  u << "<robot name=\"chain\"><link name=\"l0\"/>";
+  for (int k = 1; k <= n; ++k)
+    u << "<link name=\"l" << k << "\"><inertial><origin xyz=\"0 0.01 0.15\" rpy=\"0.1 0 0\"/><mass value=\"1\"/>"
+      << "<inertia ixx=\"0.008\" ixy=\"0.0001\" ixz=\"0.0002\" iyy=\"0.0085\" iyz=\"-0.0001\" izz=\"0.002\"/></inertial></link>"
+      << "<joint name=\"j" << k << "\" type=\"revolute\"><parent link=\"l" << k - 1 << "\"/><child link=\"l" << k << "\"/>"
+      << "<origin xyz=\"0 0 0.3\" rpy=\"0.1 0 0.2\"/><axis xyz=\"" << (k % 2 ? "0 0 1" : "0 1 0") << "\"/></joint>";
+  u << "</robot>\n";
+  const std::string path = (dir / ("appell_bench_chain_" + std::to_string(n) + ".json")).string();
+  std::ofstream sc(path);
+  sc << "{\"model\": \"urdf\", \"file\": \"" << urdf << "\", \"gravity\": [\"0\", \"0\", \"-9.81\"], \"state\": {";
+  for (int k = 1; k <= n; ++k)
+    sc << (k > 1 ? ", " : "") << "\"j" << k << "\": {\"q\": \"0." << (k * 37) % 100 << "\", \"q_dot\": \"-0." << (k * 53) % 100 << "\"}";
+  sc << "}}\n";
+  return path;
+}
+
+void bench_chain(benchmark::State& state, std::string scalar, int n) {
+  const scene_input scene = read_scene_file(chain_scene(n));
+  with_scalar(scalar, std::nullopt, [&]<class T>(std::type_identity<T>) {
+    const prepared_scene<T> prepared = prepare<T>(scene);
+    try {
+      (void)compute<T>(prepared);
+    } catch (const certification_error& e) {  // interval<double> on the longest chains
+      state.SkipWithError((std::string("not certified: ") + e.what()).c_str());
+      return 0;
+    }
+    for (auto _ : state) benchmark::DoNotOptimize(compute<T>(prepared));
+    return 0;
+  });
+}
 
 void bench(benchmark::State& state, std::string scalar, std::optional<unsigned> bits, std::string file) {
   const scene_input scene = read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
@@ -55,6 +97,28 @@ class table_reporter : public median_reporter {
       }
       std::cout << "\n";
     }
+    std::cout << "\ngenerated chains (revolute joints, turned frames, full inertia), one eval, microseconds\n  "
+              << std::setw(4) << "N" << std::setw(12) << "double" << std::setw(12) << "interval" << "\n";
+    for (int n : chain_sizes) {
+      std::cout << "  " << std::setw(4) << n;
+      for (const char* s : {"double", "interval"}) {
+        const double t = ns(std::string("chain-") + s + "/" + std::to_string(n));
+        std::cout << std::setw(12) << std::fixed << std::setprecision(1) << (t > 0 ? t / 1e3 : std::nan(""));
+      }
+      std::cout << "\n";
+    }
+    std::cout << "fitted exponent p of cost ~ N^p (N = 8 to 64):";
+    for (const char* c : {"double", "interval"}) {
+      double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
+      for (int n : chain_sizes) {
+        const double t = ns(std::string("chain-") + c + "/" + std::to_string(n));
+        if (n < 8 || !(t > 0)) continue;
+        const double x = std::log(n), y = std::log(t);
+        sx += x, sy += y, sxx += x * x, sxy += x * y, m += 1;
+      }
+      if (m >= 2) std::cout << "  " << c << " " << std::setprecision(2) << (m * sxy - sx * sy) / (m * sxx - sx * sx);
+    }
+    std::cout << "\n";
   }
 };
 
@@ -66,6 +130,9 @@ int main(int argc, char** argv) {
     for (const auto& [s, b] : scalars)
       benchmark::RegisterBenchmark((std::string(s) + "/" + r).c_str(), bench, std::string(s), b, std::string(r));
   }
+  for (int n : chain_sizes)
+    for (const char* s : {"double", "interval"})
+      benchmark::RegisterBenchmark((std::string("chain-") + s + "/" + std::to_string(n)).c_str(), bench_chain, std::string(s), n);
   benchmark::Initialize(&argc, argv);
   table_reporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

@@ -44,7 +44,7 @@ struct urdf_robot {
 /// What a URDF file may hold (the limits of scene files and of the system model).
 struct urdf_limits {
   static constexpr std::size_t bytes = json_limits::bytes;
-  static constexpr std::size_t links = 64;
+  static constexpr std::size_t links = 65;  ///< 64 joints and the root link (the system model holds 64 bodies)
 };
 
 /// Parses URDF text; input_error naming the element (and its line) on anything it cannot take:
