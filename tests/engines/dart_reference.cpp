@@ -14,6 +14,7 @@
 #include <dart/dynamics/Skeleton.hpp>
 #include <dart/utils/urdf/DartLoader.hpp>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -103,8 +104,8 @@ dart::dynamics::SkeletonPtr load(const scene& s) {
 
 int main(int argc, char** argv) try {
   const std::string m = argc > 1 ? argv[1] : "";
-  if (!((m == "states" && argc == 5) || (m == "values" && argc == 4))) {
-    std::cerr << "usage: dart_reference states SCENE N SEED | values SCENE STATES\n";
+  if (!((m == "states" && argc == 5) || (m == "values" && argc == 4) || (m == "time" && argc == 4))) {
+    std::cerr << "usage: dart_reference states SCENE N SEED | values SCENE STATES | time SCENE REPS\n";
     return 2;
   }
   const std::string mode = argv[1];
@@ -128,6 +129,25 @@ int main(int argc, char** argv) try {
     return 0;
   }
   auto skel = load(s);
+  if (mode == "time") {  // the scene's own state: forward dynamics and every joint's wrench, per call
+    std::ifstream sin(argv[2]);
+    const nlohmann::json j = nlohmann::json::parse(sin);
+    for (auto it = j.at("state").begin(); it != j.at("state").end(); ++it) {
+      skel->getJoint(it.key())->setPosition(0, std::stod(it.value().at("q").get<std::string>()));
+      skel->getJoint(it.key())->setVelocity(0, std::stod(it.value().at("q_dot").get<std::string>()));
+    }
+    for (const auto& [name, tau] : s.torques) skel->getJoint(name)->setForce(0, tau);
+    const int reps = std::stoi(argv[3]);
+    double sink = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int r = 0; r < reps; ++r) {
+      skel->computeForwardDynamics();
+      for (std::size_t k = 0; k < skel->getNumJoints(); ++k) sink += skel->getJoint(k)->getWrenchToChildBodyNode()[0];
+    }
+    const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count() / reps;
+    std::cout << "dart " << us << " us per forward dynamics and joint wrenches (" << (sink != 0) << ")\n";
+    return 0;
+  }
   std::ifstream in(argv[3]);
   std::string line;
   std::getline(in, line);

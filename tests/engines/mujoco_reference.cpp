@@ -10,6 +10,7 @@
 // here to the body's origin (the joint's, for a URDF) and turned onto the body's axes.
 #include <mujoco/mujoco.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -67,8 +68,8 @@ std::string prepared_urdf(const std::string& path) {
 
 int main(int argc, char** argv) try {
   const std::string mode = argc > 1 ? argv[1] : "";
-  if (!((mode == "states" && argc == 5) || (mode == "values" && argc == 4))) {
-    std::cerr << "usage: mujoco_reference states SCENE N SEED | values SCENE STATES\n";
+  if (!((mode == "states" && argc == 5) || (mode == "values" && argc == 4) || (mode == "time" && argc == 4))) {
+    std::cerr << "usage: mujoco_reference states SCENE N SEED | values SCENE STATES | time SCENE REPS\n";
     return 2;
   }
   std::ifstream sin(argv[2]);
@@ -108,6 +109,25 @@ int main(int argc, char** argv) try {
     if (id < 0) throw std::runtime_error("no joint " + name + " in MuJoCo's model");
     return id;
   };
+  if (mode == "time") {  // the scene's own state: mj_forward and mj_rnePostConstraint, per call
+    for (auto it = scene.at("state").begin(); it != scene.at("state").end(); ++it) {
+      const int id = joint_id(it.key());
+      d->qpos[m->jnt_qposadr[id]] = std::stod(it.value().at("q").get<std::string>());
+      d->qvel[m->jnt_dofadr[id]] = std::stod(it.value().at("q_dot").get<std::string>());
+    }
+    if (scene.contains("torques"))
+      for (auto it = scene["torques"].begin(); it != scene["torques"].end(); ++it)
+        d->qfrc_applied[m->jnt_dofadr[joint_id(it.key())]] = std::stod(it.value().get<std::string>());
+    const int reps = std::stoi(argv[3]);
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int r = 0; r < reps; ++r) {
+      mj_forward(m, d);
+      mj_rnePostConstraint(m, d);
+    }
+    const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count() / reps;
+    std::cout << "mujoco " << us << " us per mj_forward and mj_rnePostConstraint\n";
+    return 0;
+  }
   std::ifstream in(argv[3]);
   std::string line;
   std::getline(in, line);
