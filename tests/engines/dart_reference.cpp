@@ -16,6 +16,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include "engine_common.hpp"
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -30,22 +31,9 @@
 
 namespace {
 
-/// appell's name for a URDF joint (SCENES.md, `urdf`: "/j1" becomes "j1").
-std::string appell_name(const std::string& urdf) {
-  std::string s;
-  for (char c : urdf) s += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  const auto b = s.find_first_not_of('_');
-  s = b == std::string::npos ? "" : s.substr(b);
-  while (!s.empty() && s.back() == '_') s.pop_back();
-  if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) s = "joint_" + s;
-  return s;
-}
+using engine::appell_name;
+using engine::g17;
 
-std::string g17(double x) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.17g", x);
-  return b;
-}
 
 struct scene {
   std::string urdf;
@@ -68,31 +56,11 @@ scene read_scene(const std::string& path) {
   return s;
 }
 
-/// The URDF without its geometry (<visual>, <collision>): DART fails on meshes it cannot find
-/// (the WAM's package:// URIs), and the dynamics need none.
-std::string without_geometry(const std::string& path) {
-  std::ifstream in(path);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  for (const std::string tag : {"visual", "collision"})
-    for (std::size_t at; (at = text.find("<" + tag)) != std::string::npos;) {
-      const std::string close = "</" + tag + ">";
-      std::size_t end = text.find(close, at);
-      const std::size_t self = text.find("/>", at), gt = text.find('>', at);
-      if (self != std::string::npos && self + 1 == gt) end = self + 2;  // <visual/>
-      else if (end == std::string::npos) throw std::runtime_error(path + ": an unclosed <" + tag + ">");
-      else end += close.size();
-      text.erase(at, end - at);
-    }
-  const auto out = std::filesystem::temp_directory_path() / ("dart_reference_" + std::to_string(::getpid()) + ".urdf");
-  std::ofstream(out) << text;
-  return out.string();
-}
-
 dart::dynamics::SkeletonPtr load(const scene& s) {
   dart::utils::DartLoader::Options options;
   options.mDefaultRootJointType = dart::utils::DartLoader::RootJointType::FIXED;
   dart::utils::DartLoader loader(options);
-  const std::string bare = without_geometry(s.urdf);
+  const std::string bare = engine::without_geometry(s.urdf, "dart_reference");
   auto skel = loader.parseSkeleton(dart::common::Uri::createFromPath(bare));
   std::filesystem::remove(bare);
   if (!skel) throw std::runtime_error("DART could not read " + s.urdf);
@@ -110,22 +78,8 @@ int main(int argc, char** argv) try {
   }
   const std::string mode = argv[1];
   const scene s = read_scene(argv[2]);
-  if (mode == "states") {  // q in [-1.5, 1.5], q' in [-2, 2], on a grid of 1e-6
-    std::mt19937_64 rng(std::stoull(argv[4]));
-    std::uniform_int_distribution<long> q(-1500000, 1500000), qd(-2000000, 2000000);
-    std::cout << "state";
-    for (const auto& j : s.joints) std::cout << ",state." << j << ".q,state." << j << ".q_dot";
-    std::cout << "\n";
-    const int n = std::stoi(argv[3]);
-    for (int r = 0; r < n; ++r) {
-      std::cout << "s" << r;
-      for (std::size_t k = 0; k < s.joints.size(); ++k) {
-        char b[64];
-        std::snprintf(b, sizeof b, ",%.6f,%.6f", q(rng) * 1e-6, qd(rng) * 1e-6);
-        std::cout << b;
-      }
-      std::cout << "\n";
-    }
+  if (mode == "states") {
+    engine::print_states(s.joints, std::stoi(argv[3]), std::stoull(argv[4]), false);
     return 0;
   }
   auto skel = load(s);
@@ -151,11 +105,7 @@ int main(int argc, char** argv) try {
   std::ifstream in(argv[3]);
   std::string line;
   std::getline(in, line);
-  std::vector<std::string> header;
-  {
-    std::stringstream ss(line);
-    for (std::string f; std::getline(ss, f, ',');) header.push_back(f);
-  }
+  const std::vector<std::string> header = engine::fields(line);
   // output columns: every moving joint's acceleration, then every joint's wrench
   std::cout << "state";
   for (const auto& j : s.joints) std::cout << "," << appell_name(j) << "_ddot";
@@ -169,9 +119,7 @@ int main(int argc, char** argv) try {
   std::cout << "\n";
   while (std::getline(in, line)) {
     if (line.empty()) continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
+    const std::vector<std::string> f = engine::fields(line);
     for (std::size_t c = 1; c < header.size() && c < f.size(); ++c) {
       const std::string& h = header[c];  // state.JOINT.q or state.JOINT.q_dot
       const bool rate = h.size() > 6 && h.compare(h.size() - 6, 6, ".q_dot") == 0;

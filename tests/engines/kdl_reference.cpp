@@ -11,6 +11,7 @@
 #include <kdl_parser/kdl_parser.hpp>
 
 #include <cstdio>
+#include "engine_common.hpp"
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -21,26 +22,8 @@
 #include <string>
 #include <vector>
 
-namespace {
-
-/// appell's name for a URDF joint (SCENES.md, `urdf`: "/j1" becomes "j1").
-std::string appell_name(const std::string& urdf) {
-  std::string s;
-  for (char c : urdf) s += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  const auto b = s.find_first_not_of('_');
-  s = b == std::string::npos ? "" : s.substr(b);
-  while (!s.empty() && s.back() == '_') s.pop_back();
-  if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) s = "joint_" + s;
-  return s;
-}
-
-std::string g17(double x) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.17g", x);
-  return b;
-}
-
-}  // namespace
+using engine::appell_name;
+using engine::g17;
 
 int main(int argc, char** argv) try {
   const std::string mode = argc > 1 ? argv[1] : "";
@@ -52,21 +35,8 @@ int main(int argc, char** argv) try {
   const nlohmann::json scene = nlohmann::json::parse(sin);
   std::vector<std::string> joints;
   for (auto it = scene.at("state").begin(); it != scene.at("state").end(); ++it) joints.push_back(it.key());
-  if (mode == "states") {  // q in [-1.5, 1.5], q' in [-2, 2], q'' in [-5, 5], on a grid of 1e-6
-    std::mt19937_64 rng(std::stoull(argv[4]));
-    std::uniform_int_distribution<long> q(-1500000, 1500000), qd(-2000000, 2000000), qdd(-5000000, 5000000);
-    std::cout << "state";
-    for (const auto& j : joints) std::cout << ",state." << j << ".q,state." << j << ".q_dot,accelerations." << j;
-    std::cout << "\n";
-    for (int r = 0; r < std::stoi(argv[3]); ++r) {
-      std::cout << "s" << r;
-      for (std::size_t k = 0; k < joints.size(); ++k) {
-        char b[96];
-        std::snprintf(b, sizeof b, ",%.6f,%.6f,%.6f", q(rng) * 1e-6, qd(rng) * 1e-6, qdd(rng) * 1e-6);
-        std::cout << b;
-      }
-      std::cout << "\n";
-    }
+  if (mode == "states") {  // with q'' (inverse dynamics)
+    engine::print_states(joints, std::stoi(argv[3]), std::stoull(argv[4]), true);
     return 0;
   }
   std::filesystem::path file = scene.at("file").get<std::string>();
@@ -96,20 +66,14 @@ int main(int argc, char** argv) try {
   std::ifstream in(argv[3]);
   std::string line;
   std::getline(in, line);
-  std::vector<std::string> header;
-  {
-    std::stringstream ss(line);
-    for (std::string f; std::getline(ss, f, ',');) header.push_back(f);
-  }
+  const std::vector<std::string> header = engine::fields(line);
   std::cout << "state";
   for (const auto& j : chain_joints) std::cout << "," << appell_name(j) << "_effort";
   std::cout << "\n";
   const unsigned n = chain.getNrOfJoints();
   while (std::getline(in, line)) {
     if (line.empty()) continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
+    const std::vector<std::string> f = engine::fields(line);
     std::map<std::string, double> q, qd, qdd;
     for (std::size_t c = 1; c < header.size() && c < f.size(); ++c) {
       const std::string& h = header[c];

@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include "engine_common.hpp"
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -26,43 +27,9 @@
 
 namespace {
 
-std::string appell_name(const std::string& urdf) {
-  std::string s;
-  for (char c : urdf) s += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  const auto b = s.find_first_not_of('_');
-  s = b == std::string::npos ? "" : s.substr(b);
-  while (!s.empty() && s.back() == '_') s.pop_back();
-  if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) s = "joint_" + s;
-  return s;
-}
+using engine::appell_name;
+using engine::g17;
 
-std::string g17(double x) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.17g", x);
-  return b;
-}
-
-/// The URDF without geometry, with MuJoCo's compiler told to keep static bodies apart.
-std::string prepared_urdf(const std::string& path) {
-  std::ifstream in(path);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  for (const std::string tag : {"visual", "collision"})
-    for (std::size_t at; (at = text.find("<" + tag)) != std::string::npos;) {
-      const std::string close = "</" + tag + ">";
-      std::size_t end = text.find(close, at);
-      const std::size_t self = text.find("/>", at), gt = text.find('>', at);
-      if (self != std::string::npos && self + 1 == gt) end = self + 2;
-      else if (end == std::string::npos) throw std::runtime_error(path + ": an unclosed <" + tag + ">");
-      else end += close.size();
-      text.erase(at, end - at);
-    }
-  const auto robot = text.find("<robot");
-  const auto open_end = text.find('>', robot);
-  text.insert(open_end + 1, "<mujoco><compiler fusestatic=\"false\" discardvisual=\"true\" balanceinertia=\"false\"/></mujoco>");
-  const auto out = std::filesystem::temp_directory_path() / ("mujoco_reference_" + std::to_string(::getpid()) + ".urdf");
-  std::ofstream(out) << text;
-  return out.string();
-}
 
 }  // namespace
 
@@ -77,25 +44,15 @@ int main(int argc, char** argv) try {
   std::vector<std::string> joints;
   for (auto it = scene.at("state").begin(); it != scene.at("state").end(); ++it) joints.push_back(it.key());
   if (mode == "states") {
-    std::mt19937_64 rng(std::stoull(argv[4]));
-    std::uniform_int_distribution<long> q(-1500000, 1500000), qd(-2000000, 2000000);
-    std::cout << "state";
-    for (const auto& j : joints) std::cout << ",state." << j << ".q,state." << j << ".q_dot";
-    std::cout << "\n";
-    for (int r = 0; r < std::stoi(argv[3]); ++r) {
-      std::cout << "s" << r;
-      for (std::size_t k = 0; k < joints.size(); ++k) {
-        char b[64];
-        std::snprintf(b, sizeof b, ",%.6f,%.6f", q(rng) * 1e-6, qd(rng) * 1e-6);
-        std::cout << b;
-      }
-      std::cout << "\n";
-    }
+    engine::print_states(joints, std::stoi(argv[3]), std::stoull(argv[4]), false);
     return 0;
   }
   std::filesystem::path file = scene.at("file").get<std::string>();
   if (file.is_relative()) file = std::filesystem::path(argv[2]).parent_path() / file;
-  const std::string bare = prepared_urdf(file.string());
+  // static bodies kept apart (fusestatic off), so that every URDF link is a MuJoCo body
+  const std::string bare = engine::without_geometry(
+      file.string(), "mujoco_reference",
+      "<mujoco><compiler fusestatic=\"false\" discardvisual=\"true\" balanceinertia=\"false\"/></mujoco>");
   char error[1000] = "";
   mjModel* m = mj_loadXML(bare.c_str(), nullptr, error, sizeof error);
   std::filesystem::remove(bare);
@@ -131,11 +88,7 @@ int main(int argc, char** argv) try {
   std::ifstream in(argv[3]);
   std::string line;
   std::getline(in, line);
-  std::vector<std::string> header;
-  {
-    std::stringstream ss(line);
-    for (std::string f; std::getline(ss, f, ',');) header.push_back(f);
-  }
+  const std::vector<std::string> header = engine::fields(line);
   // bodies with a parent other than the world, and the URDF joint that makes each (by the child)
   std::cout << "state";
   for (const auto& j : joints) std::cout << "," << appell_name(j) << "_ddot";
@@ -151,9 +104,7 @@ int main(int argc, char** argv) try {
   std::cout << "\n";
   while (std::getline(in, line)) {
     if (line.empty()) continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
+    const std::vector<std::string> f = engine::fields(line);
     mj_resetData(m, d);
     for (std::size_t c = 1; c < header.size() && c < f.size(); ++c) {
       const std::string& h = header[c];

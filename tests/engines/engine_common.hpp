@@ -1,0 +1,92 @@
+// tests/engines/engine_common.hpp -- what the engine programs (C++17, no appell header) share:
+// appell's names for URDF joints, numbers printed to 17 digits, CSV lines, the URDF without its
+// geometry, and the random states of a scene's joints.
+#pragma once
+
+#include <unistd.h>
+
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace engine {
+
+/// appell's name for a URDF joint (SCENES.md, `urdf`: "/j1" becomes "j1").
+inline std::string appell_name(const std::string& urdf) {
+  std::string s;
+  for (char c : urdf) s += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  const auto b = s.find_first_not_of('_');
+  s = b == std::string::npos ? "" : s.substr(b);
+  while (!s.empty() && s.back() == '_') s.pop_back();
+  if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) s = "joint_" + s;
+  return s;
+}
+
+inline std::string g17(double x) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+/// The comma-separated fields of one CSV line (the states files have no quoted fields).
+inline std::vector<std::string> fields(const std::string& line) {
+  std::vector<std::string> f;
+  std::stringstream ss(line);
+  for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
+  return f;
+}
+
+/// A copy of the URDF at `path` without <visual> and <collision> (engines fail on meshes they
+/// cannot find, and the dynamics need none), `extra` inserted after <robot ...>, in the temporary
+/// directory under `name`; the caller removes it.
+inline std::string without_geometry(const std::string& path, const std::string& name, const std::string& extra = "") {
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const std::string tag : {"visual", "collision"})
+    for (std::size_t at; (at = text.find("<" + tag)) != std::string::npos;) {
+      const std::string close = "</" + tag + ">";
+      std::size_t end = text.find(close, at);
+      const std::size_t self = text.find("/>", at), gt = text.find('>', at);
+      if (self != std::string::npos && self + 1 == gt) end = self + 2;  // <visual/>
+      else if (end == std::string::npos) throw std::runtime_error(path + ": an unclosed <" + tag + ">");
+      else end += close.size();
+      text.erase(at, end - at);
+    }
+  if (!extra.empty()) text.insert(text.find('>', text.find("<robot")) + 1, extra);
+  const auto out = std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()) + ".urdf");
+  std::ofstream(out) << text;
+  return out.string();
+}
+
+/// N random states of the joints on a grid of 1e-6 (CSV for `appell reference --states`): q in
+/// [-1.5, 1.5], q' in [-2, 2], and with `accelerations` q'' in [-5, 5] (inverse dynamics).
+inline void print_states(const std::vector<std::string>& joints, int n, unsigned long long seed, bool accelerations) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<long> q(-1500000, 1500000), qd(-2000000, 2000000), qdd(-5000000, 5000000);
+  std::cout << "state";
+  for (const auto& j : joints) {
+    std::cout << ",state." << j << ".q,state." << j << ".q_dot";
+    if (accelerations) std::cout << ",accelerations." << j;
+  }
+  std::cout << "\n";
+  for (int r = 0; r < n; ++r) {
+    std::cout << "s" << r;
+    for (std::size_t k = 0; k < joints.size(); ++k) {
+      char b[96];
+      const long x = q(rng), v = qd(rng);  // drawn in this order (function arguments have none)
+      if (accelerations) std::snprintf(b, sizeof b, ",%.6f,%.6f,%.6f", x * 1e-6, v * 1e-6, qdd(rng) * 1e-6);
+      else std::snprintf(b, sizeof b, ",%.6f,%.6f", x * 1e-6, v * 1e-6);
+      std::cout << b;
+    }
+    std::cout << "\n";
+  }
+}
+
+}  // namespace engine
