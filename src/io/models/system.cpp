@@ -1,5 +1,6 @@
-// Scene model "system": schema, symbolic differentiation and validation (SCENES.md
-// in this repository), and its registry entry.
+// Scene model "system": its reader, in named phases (SCENES.md in this repository), and its
+// registry entry.  The 256-bit checks at the state are in system_checks.cpp, the projection in
+// system_projection.cpp; what the three share in system_reading.hpp.
 //
 // Everything that can be decided once is decided here, on the exact decimals:
 // names (undefined, duplicate, reserved, circular parameters), what each
@@ -10,17 +11,15 @@
 // the state on every constraint, and the constraints independent.  What
 // 256 bits cannot tell from exact is taken as exact (as for the cone of
 // top_on_cone); the scalar the user asks for certifies the rest.
-#include "appell/io/models/system.hpp"
-#include "appell/io/validate.hpp"
+#include "system_reading.hpp"
 
 #include <algorithm>
 #include <cctype>
-#include <cstdio>
 #include <functional>
 #include <set>
 
 namespace appell {
-namespace {
+namespace system_reading {
 
 const std::set<std::string>& reserved_names() {
   static const std::set<std::string> r{"pi", "t", "sin", "cos", "tan", "exp", "log", "sqrt", "rx", "ry", "rz"};
@@ -54,16 +53,16 @@ const json_value& object_value(object_reader& r, const std::string& key) {
   return v;
 }
 
+void require_at_most(std::size_t n, std::size_t limit, const std::string& what) {
+  if (n > limit) throw input_error(what + ": more than " + std::to_string(limit) + " (" + std::to_string(n) + ")");
+}
+
 /// What a system file may hold (bounded time and memory on any input): more is bad input.
 struct system_limits {
   static constexpr std::size_t names = 64;        ///< coordinates; speeds; bodies; constraints (each)
   static constexpr std::size_t rotations = 16;    ///< factors of one orientation
   static constexpr std::size_t operations = 200000;  ///< all expressions and derivatives, unfolded
 };
-
-void require_at_most(std::size_t n, std::size_t limit, const std::string& what) {
-  if (n > limit) throw input_error(what + ": more than " + std::to_string(limit) + " (" + std::to_string(n) + ")");
-}
 
 class builder {
  public:
@@ -123,6 +122,17 @@ class builder {
   }
 };
 
+/// What the reading phases share: the scene, the input being filled, the expressions' builder
+/// (which holds the definition), and the names read first.
+struct reading {
+  object_reader& scene;
+  system_input in{};
+  builder b{};
+  std::vector<std::string> coordinates{}, speeds{};
+  std::vector<std::pair<std::string, std::string>> parameter_texts{};  ///< name, text
+  std::vector<std::string> link_parents{};  ///< per body: its joint's parent as written ("" the ground)
+};
+
 /// "rz(psi) rx(theta) rz(phi)": elementary rotations, left to right.
 std::vector<std::pair<int, std::string>> rotation_factors(const std::string& s, const std::string& where) {
   std::vector<std::pair<int, std::string>> out;
@@ -148,191 +158,36 @@ std::vector<std::pair<int, std::string>> rotation_factors(const std::string& s, 
   return out;
 }
 
-void require_in_256_bits(bool certainly_true, bool certainly_false, const std::string& what) {
-  if (certainly_false) throw input_error(what);
-  if (!certainly_true) throw input_error(what + " (within 2^-256: taken as exact)");
+/// A body with its centre and orientation on the fixed axes, by name (for a point velocity, a
+/// wrench): its index.
+int body_on_fixed_axes(const system_definition& def, object_reader& r, const std::string& what) {
+  const std::string body = r.string("body");
+  const auto it = std::find_if(def.bodies.begin(), def.bodies.end(),
+                               [&](const system_body_definition& x) { return x.name == body; });
+  if (it == def.bodies.end()) throw input_error(r.path("body") + ": no body named '" + printable(body) + "'");
+  if (it->is_link)
+    throw input_error(r.path("body") + ": " + what + " needs a body given by its centre and orientation; '" + body +
+                      "' is a link of a tree (its joint's wrench is a result of its own)");
+  if (it->body_axes || it->has_omega)
+    throw input_error(r.path("body") + ": " + what + " needs the body's centre and orientation on the fixed axes (not omega)");
+  if (it->has_matrix)
+    throw input_error(r.path("body") + ": " + what + " needs the body's orientation as a product of rotations (not a matrix)");
+  return static_cast<int>(it - def.bodies.begin());
 }
 
-/// x as a 90-digit decimal (the midpoint of its enclosure).
-std::string decimal_90(const mpfi& x) { return mpfi_mid(x).str(90, std::ios_base::scientific); }
-
-/// "project" (SCENES.md): the state moved onto the constraints, at 400 bits.  The coordinates
-/// move along the holonomic constraints' gradients taken at the given state,
-/// q = q0 + W(q0) A_h(q0)^T lambda with f(q, t) = 0 (lambda by the chord iteration with
-/// A_h A_h^T; the step shrinks by about the distance at each pass), then the speeds
-/// orthogonally onto A(q, t) u = a(q, t) (unless solve_speeds computes them from the
-/// constraints).  Written back as 90-digit decimals, which the checks that follow accept
-/// or refuse as any state: the values certified are those of that state.
-void project_at_400_bits(system_input& in) {
-  // At 400 bits (constants and all): the 90-digit decimals it writes are then within 1e-90 of
-  // the projection, far inside the 256-bit checks that follow.
-  const system_definition& d = *in.def;
-  const mp_precision_scope precision(400);
-  const compiled_system<mpfi> sys(d);
-  vector_t<mpfi> q(d.vars.coordinates), u(d.vars.speeds);
-  for (int i = 0; i < d.vars.coordinates; ++i) q(i) = value<mpfi>(in.q[static_cast<std::size_t>(i)]);
-  for (int j = 0; j < d.vars.speeds; ++j) u(j) = value<mpfi>(in.u[static_cast<std::size_t>(j)]);
-  const mpfi t = value<mpfi>(in.t);
-  const int s = static_cast<int>(d.constraints.size()), nq = d.vars.coordinates, n = d.vars.speeds;
-  in.q_given = in.q;
-  in.u_given = in.u;
-  auto mids = [](vector_t<mpfi>& v) {
-    for (Eigen::Index i = 0; i < v.size(); ++i) v(i) = mpfi(mpfi_mid(v(i)));
-  };
-  std::vector<int> H;
-  for (int r = 0; r < s; ++r)
-    if (d.constraints[static_cast<std::size_t>(r)].holonomic) H.push_back(r);
-  const int m = static_cast<int>(H.size());
-  if (m > 0) {
-    matrix_t<mpfi> A(s, n);
-    vector_t<mpfi> a(s);
-    expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
-    matrix_t<mpfi> W(nq, n);
-    if (d.rates_as_speeds) {
-      W = matrix_t<mpfi>::Identity(nq, n);
-    } else {  // q' = W u + w: W's columns from the kinematics at the unit speeds
-      const expression_system<mpfi> es{&sys};
-      vector_t<mpfi> e = vector_t<mpfi>::Zero(n);
-      const vector_t<mpfi> w = es.qdot(q, e, t);
-      for (int j = 0; j < n; ++j) {
-        e(j) = 1;
-        W.col(j) = es.qdot(q, e, t) - w;
-        e(j) = 0;
-      }
-    }
-    matrix_t<mpfi> Ah(m, n);
-    for (int k = 0; k < m; ++k) Ah.row(k) = A.row(H[static_cast<std::size_t>(k)]);
-    const matrix_t<mpfi> D = W * Ah.transpose();
-    const matrix_t<mpfi> G = Ah * Ah.transpose();
-    const vector_t<mpfi> q0 = q;
-    vector_t<mpfi> lambda = vector_t<mpfi>::Zero(m);
-    for (int pass = 0; pass < 100; ++pass) {
-      q = q0 + D * lambda;
-      mids(q);
-      const std::vector<mpfi> cv = sys.evaluate(sys.constraint_tape, sys.variables(q, u, t));
-      vector_t<mpfi> f(m);
-      for (int k = 0; k < m; ++k) f(k) = sys.constraints[static_cast<std::size_t>(H[static_cast<std::size_t>(k)])].f.value.at(cv.data());
-      vector_t<mpfi> step;
-      try {
-        step = solve(G, f);
-      } catch (const certification_error&) {
-        throw input_error("project: the holonomic constraints are dependent at the state (their gradients)");
-      }
-      mids(step);
-      lambda -= step;
-      mids(lambda);
-      bool small = true;
-      for (int k = 0; k < m; ++k)
-        if (abs(mpfi_mid(step(k))) > mpfr("1e-110") * (1 + abs(mpfi_mid(lambda(k))))) small = false;
-      if (small) break;
-    }
-    q = q0 + D * lambda;
-    mids(q);
+/// Three expressions in q and t (a point, a direction).
+std::array<shared_expression, 3> point_of_q_t(builder& b, object_reader& r, const std::string& key) {
+  std::array<shared_expression, 3> out;
+  const json_value& v = r.raw(key);
+  if (v.type != json_value::kind::array || v.items.size() != 3)
+    throw input_error(r.path(key) + ": expected a list of 3 expressions in q and t");
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::string where = r.path(key) + "[" + std::to_string(i) + "]";
+    out[i] = b.parse(expression_text(v.items[i], where), where);
+    if (b.depends_on_speeds(*out[i])) throw input_error(where + ": depends on the speeds (a function of q and t)");
   }
-  if (in.solved.empty() && s > 0) {  // the speeds: u - A^T (A A^T)^-1 (A u - a)
-    matrix_t<mpfi> A(s, n);
-    vector_t<mpfi> a(s);
-    expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
-    vector_t<mpfi> y;
-    try {
-      y = solve(matrix_t<mpfi>(A * A.transpose()), vector_t<mpfi>(A * u - a));
-    } catch (const certification_error&) {
-      throw input_error("project: the constraints are dependent at the state");
-    }
-    u -= A.transpose() * y;
-    mids(u);
-  }
-  for (int i = 0; i < nq; ++i)
-    if (!is_finite(q(i)))
-      throw input_error("project: the projection onto the holonomic constraints does not converge from the state "
-                        "(too far from them)");
-  for (int i = 0; i < nq; ++i) in.q[static_cast<std::size_t>(i)].text = decimal_90(q(i));
-  for (int j = 0; j < n; ++j)
-    if (std::find(in.solved.begin(), in.solved.end(), j) == in.solved.end())
-      in.u[static_cast<std::size_t>(j)].text = decimal_90(u(j));
+  return out;
 }
-
-std::string short_text(const mpfi& x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", approx_double(x));
-  return buf;
-}
-
-/// The projected state (decimals) read back at the caller's precision, and the moves against
-/// "project": refused when the coordinates or the speeds move farther than it.
-void check_projection_moves(const system_input& in, vector_t<mpfi>& q, vector_t<mpfi>& u) {
-  const system_definition& d = *in.def;
-  const int nq = d.vars.coordinates, n = d.vars.speeds;
-  const mpfi tol = value<mpfi>(*in.project);
-  mpfi dq2 = 0, du2 = 0;
-  for (int i = 0; i < nq; ++i) {
-    q(i) = value<mpfi>(in.q[static_cast<std::size_t>(i)]);
-    dq2 += sqr(mpfi(q(i) - value<mpfi>(in.q_given[static_cast<std::size_t>(i)])));
-  }
-  for (int j = 0; j < n; ++j) {
-    if (std::find(in.solved.begin(), in.solved.end(), j) != in.solved.end()) continue;
-    u(j) = value<mpfi>(in.u[static_cast<std::size_t>(j)]);
-    du2 += sqr(mpfi(u(j) - value<mpfi>(in.u_given[static_cast<std::size_t>(j)])));
-  }
-  if (certainly_positive(mpfi(sqrt(dq2) - tol)))
-    throw input_error("state: off the constraints; the projection moves the coordinates by about " + short_text(sqrt(dq2)) +
-                      ", more than project = " + in.project->text);
-  if (certainly_positive(mpfi(sqrt(du2) - tol)))
-    throw input_error("state: off the constraints; the projection moves the speeds by about " + short_text(sqrt(du2)) +
-                      ", more than project = " + in.project->text);
-}
-
-/// The state replaced by its projection (project_at_400_bits), read back into q and u at the
-/// caller's precision, and the moves checked.
-void project_state(system_input& in, vector_t<mpfi>& q, vector_t<mpfi>& u) {
-  project_at_400_bits(in);
-  check_projection_moves(in, q, u);
-}
-
-/// At 256 bits, at the state: the speeds move `body` in 6 independent ways (J J^T, Gaussian
-/// elimination with every pivot certainly positive), so that the constraints' virtual work fixes
-/// `what` (a wrench, a contact's force); and each named constraint's row is a virtual power of
-/// that body alone (A_c^T in the range of J^T).  input_error naming `where` otherwise.
-void check_body_fixes_force(const system_definition& d, const std::string& where, int body, const matrix_t<mpfi>& J,
-                            const matrix_t<mpfi>& A, const std::vector<int>& constraints, const std::string& what) {
-  const int n = d.vars.speeds;
-  const std::string& name = d.bodies[static_cast<std::size_t>(body)].name;
-  matrix_t<mpfi> N = wrench_normal_equations(J, vector_t<mpfi>(vector_t<mpfi>::Zero(n))).first;
-  for (int p = 0; p < 6; ++p) {
-    if (!certainly_positive(N(p, p)))
-      throw input_error(where + ".body: the speeds move " + name +
-                        " in fewer than 6 independent ways at the state, so the constraints' virtual work does "
-                        "not fix " + what + " (describe the body free: 6 speeds, the constraints as rows)");
-    for (int r = p + 1; r < 6; ++r) {
-      const mpfi f = N(r, p) / N(p, p);
-      for (int c = p; c < 6; ++c) N(r, c) -= f * N(p, c);
-    }
-  }
-  for (int c : constraints) {
-    const vector_t<mpfi> g = A.row(c).transpose();
-    const auto [Nc, rhs] = wrench_normal_equations(J, g);
-    const vector_t<mpfi> y = solve_spd(Nc, rhs);
-    for (int j = 0; j < n; ++j) {
-      mpfi e = -g(j);
-      for (int r = 0; r < 6; ++r) e += J(r, j) * y(r);
-      if (!possibly_zero(e))
-        throw input_error(where + ".constraints: " + d.constraints[static_cast<std::size_t>(c)].name +
-                          " is not a constraint on " + name + " alone (its virtual work involves " +
-                          d.names[static_cast<std::size_t>(d.vars.u(j))] + " beyond the body's motion)");
-    }
-  }
-}
-
-/// The linearization's reference motion: the state (the projected one, with "project") with
-/// what "about" sets.
-void set_reference_motion(linearize_input& li, const system_input& in) {
-  li.q = in.q;
-  li.u = in.u;
-  for (const auto& [i, v] : li.about_q) li.q[static_cast<std::size_t>(i)] = v;
-  for (const auto& [j, v] : li.about_u) li.u[static_cast<std::size_t>(j)] = v;
-}
-
-}  // namespace
 
 /// A link's fields (SCENES.md, "links of a tree"): "joint" {name, parent, type, coordinate,
 /// origin, rpy, axis, effort}, "mass" and "inertia" (optional together: a massless frame),
@@ -453,42 +308,22 @@ void order_links(system_definition& def, const std::vector<std::string>& parents
     if (def.bodies[i].is_link) place(static_cast<int>(i));
 }
 
-/// The sign of each axis along a basis vector, and every axis not 0, at 256 bits.
-void settle_link_axes(system_definition& def) {
-  if (def.link_order.empty()) return;
-  mp_precision_scope scope(256);
-  std::vector<mpfi> x(static_cast<std::size_t>(def.vars.size()), mpfi(0));
-  for (int p : def.parameter_order)
-    x[static_cast<std::size_t>(p)] = compiled_expression<mpfi>(*def.parameters[static_cast<std::size_t>(p)]).eval_at(x.data());
-  for (auto& body : def.bodies) {
-    auto& j = body.joint;
-    if (!body.is_link || j.type == system_joint_definition::kind::fixed) continue;
-    const std::string where = "bodies." + body.name + ".joint.axis";
-    mpfi n2 = 0;
-    for (const auto& e : j.axis)
-      if (e) n2 += sqr(compiled_expression<mpfi>(*e).eval_at(x.data()));
-    if (!certainly_positive(n2)) throw input_error(where + ": the axis is 0");
-    if (j.along >= 0) {
-      const mpfi a = compiled_expression<mpfi>(*j.axis[static_cast<std::size_t>(j.along)]).eval_at(x.data());
-      j.sign = certainly_negative(a) ? -1 : 1;
-    }
-  }
-}
-
-system_input system_model::read(object_reader& scene) {
-  system_input in;
-  builder b;
-  system_definition& def = b.def;
-
+/// The names: parameters, coordinates, speeds (q_dot after the coordinates without "speeds"), t;
+/// each a distinct identifier, none reserved.
+void read_names(reading& R) {
+  object_reader& scene = R.scene;
+  system_input& in = R.in;
+  system_definition& def = R.b.def;
+  auto& coordinates = R.coordinates;
+  auto& speeds = R.speeds;
+  auto& parameter_texts = R.parameter_texts;
   // Names: parameters, coordinates, speeds, t.
-  std::vector<std::pair<std::string, std::string>> parameter_texts;  // name, text
   if (scene.has("parameters")) {
     const json_value& p = object_value(scene, "parameters");
     for (const auto& m : p.members)
       parameter_texts.emplace_back(m.key, expression_text(m.value, scene.path("parameters") + "." + m.key));
   }
-  const std::vector<std::string> coordinates = name_list(scene.raw("coordinates"), scene.path("coordinates"));
-  std::vector<std::string> speeds;
+  coordinates = name_list(scene.raw("coordinates"), scene.path("coordinates"));
   def.rates_as_speeds = !scene.has("speeds");
   if (coordinates.empty() && def.rates_as_speeds)
     throw input_error(scene.path("coordinates") + ": a system needs coordinates, or named speeds");
@@ -525,7 +360,14 @@ system_input system_model::read(object_reader& scene) {
                           (def.rates_as_speeds ? " (the speeds are named q_dot after the coordinates)" : ""));
     }
   }
+}
 
+/// The parameters' expressions, and an order that evaluates each after those it uses (a
+/// circular definition refused).
+void read_parameters(reading& R) {
+  builder& b = R.b;
+  system_definition& def = R.b.def;
+  auto& parameter_texts = R.parameter_texts;
   // Parameters: expressions of parameters, evaluated in an order that puts each after those it uses.
   for (const auto& [name, text] : parameter_texts) {
     const std::string where = "parameters." + name;
@@ -557,7 +399,14 @@ system_input system_model::read(object_reader& scene) {
     };
     for (int p = 0; p < P; ++p) visit(p);
   }
+}
 
+/// The kinematics q' = K(q, u, t), each affine in the speeds (only with named speeds).
+void read_kinematics(reading& R) {
+  object_reader& scene = R.scene;
+  builder& b = R.b;
+  system_definition& def = R.b.def;
+  auto& coordinates = R.coordinates;
   // Kinematics.
   if (!def.rates_as_speeds) {
     const json_value& k = object_value(scene, "kinematics");
@@ -576,7 +425,13 @@ system_input system_model::read(object_reader& scene) {
   } else if (scene.has("kinematics")) {
     throw input_error(scene.path("kinematics") + ": kinematics need named speeds (without \"speeds\", u = q')");
   }
+}
 
+/// Gravity: three constants.
+void read_gravity(reading& R) {
+  object_reader& scene = R.scene;
+  builder& b = R.b;
+  system_definition& def = R.b.def;
   // Gravity.
   if (scene.has("gravity")) {
     const json_value& g = scene.raw("gravity");
@@ -587,9 +442,17 @@ system_input system_model::read(object_reader& scene) {
       def.gravity[i] = b.constant(expression_text(g.items[i], where), where);
     }
   }
+}
 
+/// The bodies: given by their centre and orientation (or omega, or on their own axes), or links
+/// of a tree placed by their joints; the links ordered each after its parent.
+void read_bodies(reading& R) {
+  object_reader& scene = R.scene;
+  builder& b = R.b;
+  system_definition& def = R.b.def;
+  auto& coordinates = R.coordinates;
+  auto& link_parents = R.link_parents;
   // Bodies.
-  std::vector<std::string> link_parents;  // per body: its joint's parent as written ("" the ground)
   const json_value& bodies = object_value(scene, "bodies");
   if (bodies.members.empty()) throw input_error("bodies: a system needs at least one body");
   require_at_most(bodies.members.size(), system_limits::names, "bodies");
@@ -703,35 +566,15 @@ system_input system_model::read(object_reader& scene) {
   }
 
   order_links(def, link_parents);
+}
 
-  // A body with its centre and orientation on the fixed axes, by name; three functions of q and t.
-  auto body_on_fixed_axes = [&](object_reader& r, const std::string& what) {
-    const std::string body = r.string("body");
-    const auto it = std::find_if(def.bodies.begin(), def.bodies.end(),
-                                 [&](const system_body_definition& x) { return x.name == body; });
-    if (it == def.bodies.end()) throw input_error(r.path("body") + ": no body named '" + printable(body) + "'");
-    if (it->is_link)
-      throw input_error(r.path("body") + ": " + what + " needs a body given by its centre and orientation; '" + body +
-                        "' is a link of a tree (its joint's wrench is a result of its own)");
-    if (it->body_axes || it->has_omega)
-      throw input_error(r.path("body") + ": " + what + " needs the body's centre and orientation on the fixed axes (not omega)");
-    if (it->has_matrix)
-      throw input_error(r.path("body") + ": " + what + " needs the body's orientation as a product of rotations (not a matrix)");
-    return static_cast<int>(it - def.bodies.begin());
-  };
-  auto point_of_q_t = [&](object_reader& r, const std::string& key) {
-    std::array<shared_expression, 3> out;
-    const json_value& v = r.raw(key);
-    if (v.type != json_value::kind::array || v.items.size() != 3)
-      throw input_error(r.path(key) + ": expected a list of 3 expressions in q and t");
-    for (std::size_t i = 0; i < 3; ++i) {
-      const std::string where = r.path(key) + "[" + std::to_string(i) + "]";
-      out[i] = b.parse(expression_text(v.items[i], where), where);
-      if (b.depends_on_speeds(*out[i])) throw input_error(where + ": depends on the speeds (a function of q and t)");
-    }
-    return out;
-  };
-
+/// The constraints: holonomic f(q, t) = 0, nonholonomic g(q, u, t) = 0 affine in u, or a
+/// point's velocity along a direction.
+void read_constraints(reading& R) {
+  object_reader& scene = R.scene;
+  builder& b = R.b;
+  system_definition& def = R.b.def;
+  auto& speeds = R.speeds;
   // Constraints.
   if (scene.has("constraints")) {
     const json_value& cs = object_value(scene, "constraints");
@@ -750,10 +593,10 @@ system_input system_model::read(object_reader& scene) {
       if (pv) {
         // n . (v_G + omega x (P - G)) = 0 for the material point of a body at P
         object_reader p = r.object("point_velocity");
-        k.body = body_on_fixed_axes(p, "a point velocity");
-        k.point = point_of_q_t(p, "point");
-        k.direction = point_of_q_t(p, "direction");
-        if (p.has("support")) k.support = point_of_q_t(p, "support");
+        k.body = body_on_fixed_axes(def, p, "a point velocity");
+        k.point = point_of_q_t(b, p, "point");
+        k.direction = point_of_q_t(b, p, "direction");
+        if (p.has("support")) k.support = point_of_q_t(b, p, "support");
         p.finish();
         r.finish();
         def.constraints.push_back(std::move(k));
@@ -778,7 +621,13 @@ system_input system_model::read(object_reader& scene) {
       throw input_error(scene.path("constraints") + ": " + std::to_string(def.constraints.size()) + " constraints on " +
                         std::to_string(speeds.size()) + " speeds leave nothing to move");
   }
+}
 
+/// The constraint wrenches: on a named body, reduced to a named point.
+void read_wrenches(reading& R) {
+  object_reader& scene = R.scene;
+  builder& b = R.b;
+  system_definition& def = R.b.def;
   // Constraint wrenches: on a named body, reduced to a named point.
   if (scene.has("wrenches")) {
     const json_value& ws = object_value(scene, "wrenches");
@@ -789,11 +638,11 @@ system_input system_model::read(object_reader& scene) {
       w.name = m.key;
       if (!is_identifier(w.name))
         throw input_error("wrenches: '" + printable(w.name) + "' is not a name (a letter or _, then letters, digits, _)");
-      w.body = body_on_fixed_axes(r, "a wrench");
+      w.body = body_on_fixed_axes(def, r, "a wrench");
       if (def.bodies[static_cast<std::size_t>(w.body)].rotations.empty())
         throw input_error(r.path("body") + ": a wrench needs a body with an orientation (a couple on a body that "
                                            "does not turn does no work)");
-      w.point = point_of_q_t(r, "point");
+      w.point = point_of_q_t(b, r, "point");
       for (const std::string& name : name_list(r.raw("constraints"), r.path("constraints"))) {
         const auto it = std::find_if(def.constraints.begin(), def.constraints.end(),
                                      [&](const system_constraint_definition& x) { return x.name == name; });
@@ -809,7 +658,13 @@ system_input system_model::read(object_reader& scene) {
       def.wrenches.push_back(std::move(w));
     }
   }
+}
 
+/// The contacts: which constraints make one, its normal, its friction (SCENES.md "contacts").
+void read_contacts(reading& R) {
+  object_reader& scene = R.scene;
+  builder& b = R.b;
+  system_definition& def = R.b.def;
   // Contacts: which constraints make one, its normal, its friction (SCENES.md "contacts").
   if (scene.has("contacts")) {
     const json_value& cs = object_value(scene, "contacts");
@@ -844,7 +699,7 @@ system_input system_model::read(object_reader& scene) {
         if (std::find(k.constraints.begin(), k.constraints.end(), k.normal) == k.constraints.end())
           throw input_error(r.path("normal") + ": '" + name + "' is not one of the contact's constraints");
       } else if (nv.type == json_value::kind::array) {
-        k.direction = point_of_q_t(r, "normal");
+        k.direction = point_of_q_t(b, r, "normal");
       } else {
         throw input_error(r.path("normal") + ": expected a constraint's name (\"-name\" for the other side) or a "
                                              "direction, 3 expressions in q and t");
@@ -866,7 +721,7 @@ system_input system_model::read(object_reader& scene) {
           throw input_error(r.path("body") + ": a contact's body needs its centre on the fixed axes and an orientation "
                                              "as rotations, or omega on the fixed axes");
         k.body = static_cast<int>(it - def.bodies.begin());
-        k.point = point_of_q_t(r, "point");
+        k.point = point_of_q_t(b, r, "point");
         if (it->has_omega)
           for (std::size_t i = 0; i < 3; ++i)
             k.omega_du[i] = b.speed_coefficients(*it->omega[i], "bodies." + body + ".omega[" + std::to_string(i) + "]");
@@ -887,7 +742,14 @@ system_input system_model::read(object_reader& scene) {
       def.contacts.push_back(std::move(k));
     }
   }
+}
 
+/// The speeds the constraints determine (solve_speeds: one per constraint).
+void read_solve_speeds(reading& R) {
+  object_reader& scene = R.scene;
+  system_input& in = R.in;
+  system_definition& def = R.b.def;
+  auto& speeds = R.speeds;
   // Speeds the constraints determine (given neither in the state nor by hand).
   if (scene.has("solve_speeds")) {
     for (const std::string& name : name_list(scene.raw("solve_speeds"), scene.path("solve_speeds"))) {
@@ -902,7 +764,15 @@ system_input system_model::read(object_reader& scene) {
       throw input_error(scene.path("solve_speeds") + ": " + std::to_string(in.solved.size()) +
                         " speeds for " + std::to_string(def.constraints.size()) + " constraints (one per constraint)");
   }
+}
 
+/// The state (q, u, t), the accelerations of inverse dynamics, the projection's tolerance.
+void read_state(reading& R) {
+  object_reader& scene = R.scene;
+  system_input& in = R.in;
+  system_definition& def = R.b.def;
+  auto& coordinates = R.coordinates;
+  auto& speeds = R.speeds;
   // The state.
   object_reader state = scene.object("state");
   for (const auto& q : coordinates) in.q.push_back(state.number(q));
@@ -938,7 +808,16 @@ system_input system_model::read(object_reader& scene) {
     in.project = scene.number("project");
     require_positive(scene, "project", *in.project, "a tolerance");
   }
+}
 
+/// The linearization (optional): only `linearize` reads it; its refusal is kept for that command
+/// (linearize_refusal), not raised here.
+void read_linearization(reading& R) {
+  object_reader& scene = R.scene;
+  system_input& in = R.in;
+  system_definition& def = R.b.def;
+  auto& coordinates = R.coordinates;
+  auto& speeds = R.speeds;
   // The linearization (optional): about the state with "about" applied.  Only `linearize` reads
   // the section: a refusal of it is kept for that command (linearize_refusal), not raised here.
   if (scene.has("linearize")) try {
@@ -1050,7 +929,12 @@ system_input system_model::read(object_reader& scene) {
     in.linearize.reset();
     in.linearize_refusal = e.what();
   }
+}
 
+/// Every result's name distinct.
+void check_result_names(reading& R) {
+  system_input& in = R.in;
+  system_definition& def = R.b.def;
   {  // the result names must be distinct
     std::set<std::string> results(in.acceleration_names.begin(), in.acceleration_names.end());
     for (const auto& k : def.constraints)
@@ -1074,263 +958,29 @@ system_input system_model::read(object_reader& scene) {
         if (!results.insert(k.name + suffix).second)
           throw input_error("contacts." + k.name + ": its result " + k.name + suffix + " has the name of another result");
   }
-  settle_link_axes(b.def);
-  auto shared = std::make_shared<system_definition>(std::move(b.def));
-  in.def = shared;
+}
 
-  // At the state, at 256 bits.
-  try {
-    mp_precision_scope scope(256);
-    const compiled_system<mpfi> sys(*shared);
-    const system_definition& d = *shared;
-    vector_t<mpfi> q(d.vars.coordinates), u(d.vars.speeds);
-    for (int i = 0; i < d.vars.coordinates; ++i) q(i) = value<mpfi>(in.q[static_cast<std::size_t>(i)]);
-    for (int j = 0; j < d.vars.speeds; ++j) u(j) = value<mpfi>(in.u[static_cast<std::size_t>(j)]);
-    const mpfi t = value<mpfi>(in.t);
-    if (in.project) {
-      project_state(in, q, u);
-      if (in.linearize) set_reference_motion(*in.linearize, in);  // from the projected state
-    }
-    for (std::size_t r = 0; r < d.constraints.size(); ++r) {  // point_velocity directions, before any solve
-      const auto& kc = sys.constraints[r];
-      if (kc.body < 0) continue;
-      const std::vector<mpfi> cv0 = sys.evaluate(sys.constraint_tape, sys.variables(q, u, t));
-      mpfi nn = 0;
-      for (const auto& e : kc.direction) nn += sqr(e.at(cv0.data()));
-      if (!certainly_positive(nn))
-        throw input_error("constraints." + d.constraints[r].name + ".point_velocity.direction: 0 at the state");
-    }
-    if (!in.solved.empty()) {
-      try {
-        solve_dependent_speeds(sys, q, u, t, in.solved);
-      } catch (const certification_error&) {
-        throw input_error("solve_speeds: the constraints do not determine these speeds at the state (singular)");
-      }
-    }
-    const std::vector<mpfi> x = sys.variables(q, u, t);
-    (void)sys.evaluate(sys.kinematics_tape, x);
-    const std::vector<mpfi> bv = sys.evaluate(sys.body_tape, x), cv = sys.evaluate(sys.constraint_tape, x);
-    std::vector<body_state<mpfi>> states;
-    expression_system<mpfi>{&sys}.bodies<mpfi>(q, u, t, states);
-    for (std::size_t i = 0; i < d.bodies.size(); ++i) {
-      const auto& bd = d.bodies[i];
-      const auto& bc = sys.bodies[i];
-      const std::string where = "bodies." + bd.name;
-      for (const auto& c : bc.center) (void)c.value.at(bv.data());
-      for (const auto& [axis, angle] : bc.rotations) (void)angle.value.at(bv.data());
-      if (bd.has_matrix) {  // orthogonal with det 1, and R^T dR skew in every coordinate and t (to first order a rotation)
-        mat3<mpfi> R;
-        for (int k = 0; k < 9; ++k) R(k / 3, k % 3) = bc.matrix[static_cast<std::size_t>(k)].value.at(bv.data());
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) {
-            mpfi e = i == j ? mpfi(-1) : mpfi(0);
-            for (int k = 0; k < 3; ++k) e += R(i, k) * R(j, k);
-            if (!possibly_zero(e))
-              throw input_error(where + ".orientation: not orthogonal at the state ((R R^T)(" + std::to_string(i) + ", " +
-                                std::to_string(j) + ") - " + (i == j ? "1" : "0") + " = " + to_string(e) + ")");
-          }
-        const mpfi det = R(0, 0) * (R(1, 1) * R(2, 2) - R(1, 2) * R(2, 1)) - R(0, 1) * (R(1, 0) * R(2, 2) - R(1, 2) * R(2, 0)) +
-                         R(0, 2) * (R(1, 0) * R(2, 1) - R(1, 1) * R(2, 0));
-        if (!possibly_zero(mpfi(det - 1)))
-          throw input_error(where + ".orientation: its determinant is " + to_string(det) + ", not 1 (a reflection)");
-        for (int var = 0; var <= d.vars.coordinates; ++var) {  // the coordinates, then t
-          mat3<mpfi> D = mat3<mpfi>::Zero();
-          for (int k = 0; k < 9; ++k) {
-            const auto& e = bc.matrix[static_cast<std::size_t>(k)];
-            if (var == d.vars.coordinates) {
-              if (e.dt) D(k / 3, k % 3) = e.dt.at(bv.data());
-            } else {
-              for (const auto& [i, de] : e.dq)
-                if (i == var) D(k / 3, k % 3) = de.at(bv.data());
-            }
-          }
-          for (int i = 0; i < 3; ++i)
-            for (int j = i; j < 3; ++j) {
-              mpfi e = 0;
-              for (int k = 0; k < 3; ++k) e += R(k, i) * D(k, j) + D(k, i) * R(k, j);
-              if (!possibly_zero(e))
-                throw input_error(where + ".orientation: not a rotation near the state (R^T dR/d" +
-                                  (var == d.vars.coordinates ? std::string("t") : d.names[static_cast<std::size_t>(d.vars.q(var))]) +
-                                  " is not skew-symmetric)");
-            }
-        }
-      }
-      if (bd.is_link && !bd.mass) continue;  // a massless frame
-      const mpfi mass = bc.mass.at(bv.data());
-      require_in_256_bits(certainly_positive(mass), certainly_nonpositive(mass),
-                          where + ".mass: must be positive (" + to_string(mass) + ")");
-      // Inertia: positive semidefinite (every principal minor >= 0); principal moments: the triangle inequalities.
-      mpfi I[6];
-      for (std::size_t k = 0; k < 6; ++k) I[k] = bc.inertia[k].at(bv.data());
-      const mpfi minors[] = {I[0], I[1], I[2], mpfi(I[0] * I[1] - I[3] * I[3]), mpfi(I[1] * I[2] - I[4] * I[4]),
-                             mpfi(I[0] * I[2] - I[5] * I[5]),
-                             mpfi(I[0] * (I[1] * I[2] - I[4] * I[4]) - I[3] * (I[3] * I[2] - I[4] * I[5]) +
-                                  I[5] * (I[3] * I[4] - I[1] * I[5]))};
-      for (const mpfi& m : minors)
-        if (certainly_negative(m))
-          throw input_error(where + ".inertia: not positive semidefinite (a principal minor is " + to_string(m) + ")");
-      if (bd.inertia[0] && !bd.inertia[3])
-        for (int k = 0; k < 3; ++k) {
-          const mpfi slack = I[(k + 1) % 3] + I[(k + 2) % 3] - I[k];
-          if (certainly_negative(slack))
-            throw input_error(where + ".inertia: principal moments must satisfy the triangle inequalities");
-        }
-    }
-    // A tree's mass matrix positive definite: each joint moves some mass or inertia that the
-    // joints before it do not (a link without inertial data at the end of a chain makes it singular).
-    if (!d.link_order.empty()) {
-      const appell_equations<mpfi> eq = gibbs_appell(expression_system<mpfi>{&sys}, q, u, t);
-      const int n = d.vars.speeds;
-      matrix_t<mpfi> L = matrix_t<mpfi>::Zero(n, n);
-      for (int k = 0; k < n; ++k) {
-        mpfi pivot = eq.M(k, k);
-        for (int j = 0; j < k; ++j) pivot -= sqr(L(k, j));
-        if (!certainly_positive(pivot)) {
-          std::string field = "coordinates." + d.names[static_cast<std::size_t>(d.vars.q(k < d.vars.coordinates ? k : 0))];
-          for (const auto& bd : d.bodies)
-            if (bd.is_link && bd.joint.coordinate == k) field = "bodies." + bd.name + ".joint";
-          throw input_error(field + ": the mass matrix is singular at the state: this joint moves no mass or inertia "
-                                    "that the joints before it do not move (a link without inertial data?)");
-        }
-        L(k, k) = sqrt(pivot);
-        for (int i = k + 1; i < n; ++i) {
-          mpfi x = eq.M(i, k);
-          for (int j = 0; j < k; ++j) x -= L(i, j) * L(k, j);
-          L(i, k) = x / L(k, k);
-        }
-      }
-    }
-    // The state on the constraints; the constraints independent.
-    if (!d.constraints.empty()) {
-      const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
-      matrix_t<mpfi> A(s, n);
-      vector_t<mpfi> a(s);
-      expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
-      for (int r = 0; r < s; ++r) {
-        const auto& k = d.constraints[static_cast<std::size_t>(r)];
-        const std::string where = "state: constraint " + k.name;
-        if (k.holonomic) {
-          const mpfi f = sys.constraints[static_cast<std::size_t>(r)].f.value.at(cv.data());
-          if (!possibly_zero(f))
-            throw input_error(where + " does not hold: f(q, t) = " + to_string(f));
-        } else if (k.body >= 0) {
-          // the direction was checked before the speeds were solved
-        } else {
-          (void)sys.constraints[static_cast<std::size_t>(r)].g.at(cv.data());
-        }
-        mpfi res = -a(r);
-        for (int j = 0; j < n; ++j) res += A(r, j) * u(j);
-        if (!possibly_zero(res))
-          throw input_error(where + ": the speeds violate it (" + std::string(k.holonomic ? "df/dt" : k.body >= 0 ? "n . v" : "g") + " = " +
-                            to_string(res) + ")");
-      }
-      // Independence: elimination with a pivot that is certainly nonzero in each row.
-      std::vector<bool> used(static_cast<std::size_t>(n), false);
-      for (int r = 0; r < s; ++r) {
-        int best = -1;
-        double best_abs = 0;
-        for (int j = 0; j < n; ++j)
-          if (!used[static_cast<std::size_t>(j)] && !possibly_zero(A(r, j)) && std::abs(approx_double(A(r, j))) > best_abs) {
-            best_abs = std::abs(approx_double(A(r, j)));
-            best = j;
-          }
-        if (best < 0)
-          throw input_error("constraints." + d.constraints[static_cast<std::size_t>(r)].name +
-                            ": depends on the constraints before it at the state (or is 0 there)");
-        used[static_cast<std::size_t>(best)] = true;
-        for (int r2 = r + 1; r2 < s; ++r2) {
-          const mpfi f = A(r2, best) / A(r, best);
-          for (int j = 0; j < n; ++j) A(r2, j) -= f * A(r, j);
-        }
-      }
-    }
-    // Each wrench fixed by its virtual work: the body moves in 6 independent ways
-    // (J J^T nonsingular), and each of its constraints' rows is a virtual power of
-    // that body alone (A_c^T in the range of J^T).
-    if (!d.wrenches.empty()) {
-      const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
-      const std::vector<mpfi> w0 = sys.evaluate(sys.constraint_tape, sys.variables(q, vector_t<mpfi>(vector_t<mpfi>::Zero(n)), t));
-      matrix_t<mpfi> A(s, n);
-      vector_t<mpfi> a(s);
-      expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
-      for (std::size_t k = 0; k < d.wrenches.size(); ++k) {
-        const system_wrench_definition& wd = d.wrenches[k];
-        const std::string where = "wrenches." + wd.name;
-        const matrix_t<mpfi> J = point_twist_jacobian(sys, sys.wrenches[k], w0.data());
-        check_body_fixes_force(d, where, wd.body, J, A, wd.constraints, "a wrench");
-      }
-    }
-    // Each contact: a body that moves in 6 independent ways (its force from the virtual work),
-    // each constraint's force at the point a force alone, a normal that is not 0, and the
-    // other constraints' forces orthogonal to a normal constraint's.
-    if (!d.contacts.empty()) {
-      const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
-      const std::vector<mpfi> w0 = sys.evaluate(sys.constraint_tape, sys.variables(q, vector_t<mpfi>(vector_t<mpfi>::Zero(n)), t));
-      matrix_t<mpfi> A(s, n);
-      vector_t<mpfi> a(s);
-      expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
-      for (std::size_t k = 0; k < d.contacts.size(); ++k) {
-        const system_contact_definition& kd = d.contacts[k];
-        const std::string where = "contacts." + kd.name;
-        if (kd.body >= 0) {
-          const matrix_t<mpfi> J = contact_twist_jacobian(sys, sys.contacts[k], w0.data());
-          check_body_fixes_force(d, where, kd.body, J, A, kd.constraints, "the contact's force");
-        }
-        if (kd.normal < 0) {
-          mpfi nn = 0;
-          for (const auto& e : sys.contacts[k].direction) nn += sqr(e.at(w0.data()));
-          if (!certainly_positive(nn)) throw input_error(where + ".normal: 0 at the state");
-        }
-        for (std::size_t i = 0; i < kd.constraints.size(); ++i) {  // unit reactions, one at a time
-          vector_t<mpfi> unit = vector_t<mpfi>::Zero(s);
-          unit(kd.constraints[i]) = 1;
-          const contact_force_result<mpfi> f = contact_forces<mpfi, mpfi>(sys, q, t, unit)[k];
-          const std::string cname = d.constraints[static_cast<std::size_t>(kd.constraints[i])].name;
-          for (int x = 0; x < 3; ++x)
-            if (!possibly_zero(f.moment(x)))
-              throw input_error(where + ".point: " + cname + " exerts a couple about the point (a contact transmits a "
-                                "force at its point: leave pivoting or rolling constraints out of it)");
-          if (kd.constraints[i] == kd.normal && !certainly_positive(kd.side > 0 ? f.normal : mpfi(-f.normal)))
-            throw input_error(where + ".normal: " + cname + "'s force at the point is 0 at the state (no normal)");
-          if (kd.normal >= 0 && kd.constraints[i] != kd.normal) {
-            const mpfi along = f.normal;  // d_c . n for a unit reaction
-            if (!possibly_zero(along))
-              throw input_error(where + ".constraints: " + cname + " is not orthogonal to the normal " +
-                                d.constraints[static_cast<std::size_t>(kd.normal)].name + " at the state (its force along "
-                                "the normal per unit reaction: " + short_text(along) + ")");
-          }
-        }
-      }
-    }
-    if (in.linearize) try {  // the reference motion on the holonomic constraints; a nonzero speed; a range
-      const linearize_input& li = *in.linearize;
-      vector_t<mpfi> ql(d.vars.coordinates);
-      for (int i = 0; i < d.vars.coordinates; ++i) ql(i) = value<mpfi>(li.q[static_cast<std::size_t>(i)]);
-      const std::vector<mpfi> lv = sys.evaluate(sys.constraint_tape, sys.variables(ql, vector_t<mpfi>(vector_t<mpfi>::Zero(d.vars.speeds)), t));
-      for (int r : li.def.holonomic_rows) {
-        const mpfi f = sys.constraints[static_cast<std::size_t>(r)].f.value.at(lv.data());
-        if (!possibly_zero(f))
-          throw input_error("linearize.about: constraint " + d.constraints[static_cast<std::size_t>(r)].name +
-                            " does not hold: f(q, t) = " + to_string(f));
-      }
-      const decimal_field& v = li.u[static_cast<std::size_t>(li.def.speed)];
-      if (possibly_zero(value<mpfi>(v)))
-        throw input_error(v.path + ": the reference speed must not be 0 (K2 and C1 come from the motion at that speed)");
-      if (li.from && !certainly_less(value<mpfi>(*li.from), value<mpfi>(*li.to)))
-        throw input_error("linearize.critical_speeds: from must be less than to");
-      if (li.def.gravity >= 0 && possibly_zero(sys.parameters[static_cast<std::size_t>(li.def.gravity)]))
-        throw input_error("linearize.gravity: the parameter is 0 (K0 is the stiffness per unit g)");
-    } catch (const input_error& e) {
-      in.linearize.reset();
-      in.linearize_refusal = e.what();
-    } catch (const certification_error& e) {
-      in.linearize.reset();
-      in.linearize_refusal = std::string(e.what()) + " (within 2^-256 of it: taken as exact)";
-    }
-  } catch (const certification_error& e) {
-    throw input_error(std::string(e.what()) + " (within 2^-256 of it: taken as exact)");
-  }
-  return in;
+}  // namespace system_reading
+
+system_input system_model::read(object_reader& scene) {
+  using namespace system_reading;
+  reading R{scene};
+  read_names(R);
+  read_parameters(R);
+  read_kinematics(R);
+  read_gravity(R);
+  read_bodies(R);
+  read_constraints(R);
+  read_wrenches(R);
+  read_contacts(R);
+  read_solve_speeds(R);
+  read_state(R);
+  read_linearization(R);
+  check_result_names(R);
+  settle_link_axes(R.b.def);
+  R.in.def = std::make_shared<system_definition>(std::move(R.b.def));
+  check_at_state(R.in);
+  return std::move(R.in);
 }
 
 APPELL_DEFINE_MODEL_ENTRY(system_model)
