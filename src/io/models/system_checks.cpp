@@ -72,6 +72,266 @@ void settle_link_axes(system_definition& def) {
   }
 }
 
+/// The state at 256 bits, as the checks read it: the compiled system, q, u (the dependent
+/// speeds solved), t, and the tapes of the bodies and the constraints evaluated there.
+struct state_at_256_bits {
+  const system_definition& d;
+  const compiled_system<mpfi>& sys;
+  const vector_t<mpfi>& q;
+  const vector_t<mpfi>& u;
+  const mpfi& t;
+  const std::vector<mpfi>& bv;
+  const std::vector<mpfi>& cv;
+};
+
+/// Every body's expressions defined at the state; an orientation matrix a rotation (orthogonal,
+/// determinant 1, R^T dR skew in every coordinate and t); masses positive; inertia tensors
+/// positive semidefinite, principal moments within the triangle inequalities.
+void check_bodies(const state_at_256_bits& s) {
+  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv] = s;
+  for (std::size_t i = 0; i < d.bodies.size(); ++i) {
+    const auto& bd = d.bodies[i];
+    const auto& bc = sys.bodies[i];
+    const std::string where = "bodies." + bd.name;
+    for (const auto& c : bc.center) (void)c.value.at(bv.data());
+    for (const auto& [axis, angle] : bc.rotations) (void)angle.value.at(bv.data());
+    if (bd.has_matrix) {  // orthogonal with det 1, and R^T dR skew in every coordinate and t (to first order a rotation)
+      mat3<mpfi> R;
+      for (int k = 0; k < 9; ++k) R(k / 3, k % 3) = bc.matrix[static_cast<std::size_t>(k)].value.at(bv.data());
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          mpfi e = i == j ? mpfi(-1) : mpfi(0);
+          for (int k = 0; k < 3; ++k) e += R(i, k) * R(j, k);
+          if (!possibly_zero(e))
+            throw input_error(where + ".orientation: not orthogonal at the state ((R R^T)(" + std::to_string(i) + ", " +
+                              std::to_string(j) + ") - " + (i == j ? "1" : "0") + " = " + to_string(e) + ")");
+        }
+      const mpfi det = R(0, 0) * (R(1, 1) * R(2, 2) - R(1, 2) * R(2, 1)) - R(0, 1) * (R(1, 0) * R(2, 2) - R(1, 2) * R(2, 0)) +
+                       R(0, 2) * (R(1, 0) * R(2, 1) - R(1, 1) * R(2, 0));
+      if (!possibly_zero(mpfi(det - 1)))
+        throw input_error(where + ".orientation: its determinant is " + to_string(det) + ", not 1 (a reflection)");
+      for (int var = 0; var <= d.vars.coordinates; ++var) {  // the coordinates, then t
+        mat3<mpfi> D = mat3<mpfi>::Zero();
+        for (int k = 0; k < 9; ++k) {
+          const auto& e = bc.matrix[static_cast<std::size_t>(k)];
+          if (var == d.vars.coordinates) {
+            if (e.dt) D(k / 3, k % 3) = e.dt.at(bv.data());
+          } else {
+            for (const auto& [i, de] : e.dq)
+              if (i == var) D(k / 3, k % 3) = de.at(bv.data());
+          }
+        }
+        for (int i = 0; i < 3; ++i)
+          for (int j = i; j < 3; ++j) {
+            mpfi e = 0;
+            for (int k = 0; k < 3; ++k) e += R(k, i) * D(k, j) + D(k, i) * R(k, j);
+            if (!possibly_zero(e))
+              throw input_error(where + ".orientation: not a rotation near the state (R^T dR/d" +
+                                (var == d.vars.coordinates ? std::string("t") : d.names[static_cast<std::size_t>(d.vars.q(var))]) +
+                                " is not skew-symmetric)");
+          }
+      }
+    }
+    if (bd.is_link && !bd.mass) continue;  // a massless frame
+    const mpfi mass = bc.mass.at(bv.data());
+    require_in_256_bits(certainly_positive(mass), certainly_nonpositive(mass),
+                        where + ".mass: must be positive (" + to_string(mass) + ")");
+    // Inertia: positive semidefinite (every principal minor >= 0); principal moments: the triangle inequalities.
+    mpfi I[6];
+    for (std::size_t k = 0; k < 6; ++k) I[k] = bc.inertia[k].at(bv.data());
+    const mpfi minors[] = {I[0], I[1], I[2], mpfi(I[0] * I[1] - I[3] * I[3]), mpfi(I[1] * I[2] - I[4] * I[4]),
+                           mpfi(I[0] * I[2] - I[5] * I[5]),
+                           mpfi(I[0] * (I[1] * I[2] - I[4] * I[4]) - I[3] * (I[3] * I[2] - I[4] * I[5]) +
+                                I[5] * (I[3] * I[4] - I[1] * I[5]))};
+    for (const mpfi& m : minors)
+      if (certainly_negative(m))
+        throw input_error(where + ".inertia: not positive semidefinite (a principal minor is " + to_string(m) + ")");
+    if (bd.inertia[0] && !bd.inertia[3])
+      for (int k = 0; k < 3; ++k) {
+        const mpfi slack = I[(k + 1) % 3] + I[(k + 2) % 3] - I[k];
+        if (certainly_negative(slack))
+          throw input_error(where + ".inertia: principal moments must satisfy the triangle inequalities");
+      }
+  }
+}
+
+/// A tree's mass matrix positive definite (Cholesky with every pivot certainly positive).
+void check_tree_mass_matrix(const state_at_256_bits& s) {
+  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv] = s;
+  // A tree's mass matrix positive definite: each joint moves some mass or inertia that the
+  // joints before it do not (a link without inertial data at the end of a chain makes it singular).
+  if (!d.link_order.empty()) {
+    const appell_equations<mpfi> eq = gibbs_appell(expression_system<mpfi>{&sys}, q, u, t);
+    const int n = d.vars.speeds;
+    matrix_t<mpfi> L = matrix_t<mpfi>::Zero(n, n);
+    for (int k = 0; k < n; ++k) {
+      mpfi pivot = eq.M(k, k);
+      for (int j = 0; j < k; ++j) pivot -= sqr(L(k, j));
+      if (!certainly_positive(pivot)) {
+        std::string field = "coordinates." + d.names[static_cast<std::size_t>(d.vars.q(k < d.vars.coordinates ? k : 0))];
+        for (const auto& bd : d.bodies)
+          if (bd.is_link && bd.joint.coordinate == k) field = "bodies." + bd.name + ".joint";
+        throw input_error(field + ": the mass matrix is singular at the state: this joint moves no mass or inertia "
+                                  "that the joints before it do not move (a link without inertial data?)");
+      }
+      L(k, k) = sqrt(pivot);
+      for (int i = k + 1; i < n; ++i) {
+        mpfi x = eq.M(i, k);
+        for (int j = 0; j < k; ++j) x -= L(i, j) * L(k, j);
+        L(i, k) = x / L(k, k);
+      }
+    }
+  }
+}
+
+/// The state on every constraint, and the constraints independent.
+void check_constraints_at_state(const state_at_256_bits& s) {
+  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv] = s;
+  // The state on the constraints; the constraints independent.
+  if (!d.constraints.empty()) {
+    const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
+    matrix_t<mpfi> A(s, n);
+    vector_t<mpfi> a(s);
+    expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
+    for (int r = 0; r < s; ++r) {
+      const auto& k = d.constraints[static_cast<std::size_t>(r)];
+      const std::string where = "state: constraint " + k.name;
+      if (k.holonomic) {
+        const mpfi f = sys.constraints[static_cast<std::size_t>(r)].f.value.at(cv.data());
+        if (!possibly_zero(f))
+          throw input_error(where + " does not hold: f(q, t) = " + to_string(f));
+      } else if (k.body >= 0) {
+        // the direction was checked before the speeds were solved
+      } else {
+        (void)sys.constraints[static_cast<std::size_t>(r)].g.at(cv.data());
+      }
+      mpfi res = -a(r);
+      for (int j = 0; j < n; ++j) res += A(r, j) * u(j);
+      if (!possibly_zero(res))
+        throw input_error(where + ": the speeds violate it (" + std::string(k.holonomic ? "df/dt" : k.body >= 0 ? "n . v" : "g") + " = " +
+                          to_string(res) + ")");
+    }
+    // Independence: elimination with a pivot that is certainly nonzero in each row.
+    std::vector<bool> used(static_cast<std::size_t>(n), false);
+    for (int r = 0; r < s; ++r) {
+      int best = -1;
+      double best_abs = 0;
+      for (int j = 0; j < n; ++j)
+        if (!used[static_cast<std::size_t>(j)] && !possibly_zero(A(r, j)) && std::abs(approx_double(A(r, j))) > best_abs) {
+          best_abs = std::abs(approx_double(A(r, j)));
+          best = j;
+        }
+      if (best < 0)
+        throw input_error("constraints." + d.constraints[static_cast<std::size_t>(r)].name +
+                          ": depends on the constraints before it at the state (or is 0 there)");
+      used[static_cast<std::size_t>(best)] = true;
+      for (int r2 = r + 1; r2 < s; ++r2) {
+        const mpfi f = A(r2, best) / A(r, best);
+        for (int j = 0; j < n; ++j) A(r2, j) -= f * A(r, j);
+      }
+    }
+  }
+}
+
+/// Each wrench fixed by the constraints' virtual work.
+void check_wrenches_fixed(const state_at_256_bits& s) {
+  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv] = s;
+  // Each wrench fixed by its virtual work: the body moves in 6 independent ways
+  // (J J^T nonsingular), and each of its constraints' rows is a virtual power of
+  // that body alone (A_c^T in the range of J^T).
+  if (!d.wrenches.empty()) {
+    const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
+    const std::vector<mpfi> w0 = sys.evaluate(sys.constraint_tape, sys.variables(q, vector_t<mpfi>(vector_t<mpfi>::Zero(n)), t));
+    matrix_t<mpfi> A(s, n);
+    vector_t<mpfi> a(s);
+    expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
+    for (std::size_t k = 0; k < d.wrenches.size(); ++k) {
+      const system_wrench_definition& wd = d.wrenches[k];
+      const std::string where = "wrenches." + wd.name;
+      const matrix_t<mpfi> J = point_twist_jacobian(sys, sys.wrenches[k], w0.data());
+      check_body_fixes_force(d, where, wd.body, J, A, wd.constraints, "a wrench");
+    }
+  }
+}
+
+/// Each contact: its force fixed by the virtual work, a force at its point, its normal.
+void check_contacts_at_state(const state_at_256_bits& s) {
+  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv] = s;
+  // Each contact: a body that moves in 6 independent ways (its force from the virtual work),
+  // each constraint's force at the point a force alone, a normal that is not 0, and the
+  // other constraints' forces orthogonal to a normal constraint's.
+  if (!d.contacts.empty()) {
+    const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
+    const std::vector<mpfi> w0 = sys.evaluate(sys.constraint_tape, sys.variables(q, vector_t<mpfi>(vector_t<mpfi>::Zero(n)), t));
+    matrix_t<mpfi> A(s, n);
+    vector_t<mpfi> a(s);
+    expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
+    for (std::size_t k = 0; k < d.contacts.size(); ++k) {
+      const system_contact_definition& kd = d.contacts[k];
+      const std::string where = "contacts." + kd.name;
+      if (kd.body >= 0) {
+        const matrix_t<mpfi> J = contact_twist_jacobian(sys, sys.contacts[k], w0.data());
+        check_body_fixes_force(d, where, kd.body, J, A, kd.constraints, "the contact's force");
+      }
+      if (kd.normal < 0) {
+        mpfi nn = 0;
+        for (const auto& e : sys.contacts[k].direction) nn += sqr(e.at(w0.data()));
+        if (!certainly_positive(nn)) throw input_error(where + ".normal: 0 at the state");
+      }
+      for (std::size_t i = 0; i < kd.constraints.size(); ++i) {  // unit reactions, one at a time
+        vector_t<mpfi> unit = vector_t<mpfi>::Zero(s);
+        unit(kd.constraints[i]) = 1;
+        const contact_force_result<mpfi> f = contact_forces<mpfi, mpfi>(sys, q, t, unit)[k];
+        const std::string cname = d.constraints[static_cast<std::size_t>(kd.constraints[i])].name;
+        for (int x = 0; x < 3; ++x)
+          if (!possibly_zero(f.moment(x)))
+            throw input_error(where + ".point: " + cname + " exerts a couple about the point (a contact transmits a "
+                              "force at its point: leave pivoting or rolling constraints out of it)");
+        if (kd.constraints[i] == kd.normal && !certainly_positive(kd.side > 0 ? f.normal : mpfi(-f.normal)))
+          throw input_error(where + ".normal: " + cname + "'s force at the point is 0 at the state (no normal)");
+        if (kd.normal >= 0 && kd.constraints[i] != kd.normal) {
+          const mpfi along = f.normal;  // d_c . n for a unit reaction
+          if (!possibly_zero(along))
+            throw input_error(where + ".constraints: " + cname + " is not orthogonal to the normal " +
+                              d.constraints[static_cast<std::size_t>(kd.normal)].name + " at the state (its force along "
+                              "the normal per unit reaction: " + short_text(along) + ")");
+        }
+      }
+    }
+  }
+}
+
+/// The linearization's reference motion on the holonomic constraints, its speed not 0, its
+/// range of speeds ordered, its gravity parameter not 0; a refusal kept for `linearize`.
+void check_linearization_reference(const state_at_256_bits& s, system_input& in) {
+  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv] = s;
+  if (in.linearize) try {  // the reference motion on the holonomic constraints; a nonzero speed; a range
+    const linearize_input& li = *in.linearize;
+    vector_t<mpfi> ql(d.vars.coordinates);
+    for (int i = 0; i < d.vars.coordinates; ++i) ql(i) = value<mpfi>(li.q[static_cast<std::size_t>(i)]);
+    const std::vector<mpfi> lv = sys.evaluate(sys.constraint_tape, sys.variables(ql, vector_t<mpfi>(vector_t<mpfi>::Zero(d.vars.speeds)), t));
+    for (int r : li.def.holonomic_rows) {
+      const mpfi f = sys.constraints[static_cast<std::size_t>(r)].f.value.at(lv.data());
+      if (!possibly_zero(f))
+        throw input_error("linearize.about: constraint " + d.constraints[static_cast<std::size_t>(r)].name +
+                          " does not hold: f(q, t) = " + to_string(f));
+    }
+    const decimal_field& v = li.u[static_cast<std::size_t>(li.def.speed)];
+    if (possibly_zero(value<mpfi>(v)))
+      throw input_error(v.path + ": the reference speed must not be 0 (K2 and C1 come from the motion at that speed)");
+    if (li.from && !certainly_less(value<mpfi>(*li.from), value<mpfi>(*li.to)))
+      throw input_error("linearize.critical_speeds: from must be less than to");
+    if (li.def.gravity >= 0 && possibly_zero(sys.parameters[static_cast<std::size_t>(li.def.gravity)]))
+      throw input_error("linearize.gravity: the parameter is 0 (K0 is the stiffness per unit g)");
+  } catch (const input_error& e) {
+    in.linearize.reset();
+    in.linearize_refusal = e.what();
+  } catch (const certification_error& e) {
+    in.linearize.reset();
+    in.linearize_refusal = std::string(e.what()) + " (within 2^-256 of it: taken as exact)";
+  }
+}
+
 void check_at_state(system_input& in) {
   const std::shared_ptr<const system_definition> shared = in.def;
   // At the state, at 256 bits.
@@ -108,221 +368,13 @@ void check_at_state(system_input& in) {
     const std::vector<mpfi> bv = sys.evaluate(sys.body_tape, x), cv = sys.evaluate(sys.constraint_tape, x);
     std::vector<body_state<mpfi>> states;
     expression_system<mpfi>{&sys}.bodies<mpfi>(q, u, t, states);
-    for (std::size_t i = 0; i < d.bodies.size(); ++i) {
-      const auto& bd = d.bodies[i];
-      const auto& bc = sys.bodies[i];
-      const std::string where = "bodies." + bd.name;
-      for (const auto& c : bc.center) (void)c.value.at(bv.data());
-      for (const auto& [axis, angle] : bc.rotations) (void)angle.value.at(bv.data());
-      if (bd.has_matrix) {  // orthogonal with det 1, and R^T dR skew in every coordinate and t (to first order a rotation)
-        mat3<mpfi> R;
-        for (int k = 0; k < 9; ++k) R(k / 3, k % 3) = bc.matrix[static_cast<std::size_t>(k)].value.at(bv.data());
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) {
-            mpfi e = i == j ? mpfi(-1) : mpfi(0);
-            for (int k = 0; k < 3; ++k) e += R(i, k) * R(j, k);
-            if (!possibly_zero(e))
-              throw input_error(where + ".orientation: not orthogonal at the state ((R R^T)(" + std::to_string(i) + ", " +
-                                std::to_string(j) + ") - " + (i == j ? "1" : "0") + " = " + to_string(e) + ")");
-          }
-        const mpfi det = R(0, 0) * (R(1, 1) * R(2, 2) - R(1, 2) * R(2, 1)) - R(0, 1) * (R(1, 0) * R(2, 2) - R(1, 2) * R(2, 0)) +
-                         R(0, 2) * (R(1, 0) * R(2, 1) - R(1, 1) * R(2, 0));
-        if (!possibly_zero(mpfi(det - 1)))
-          throw input_error(where + ".orientation: its determinant is " + to_string(det) + ", not 1 (a reflection)");
-        for (int var = 0; var <= d.vars.coordinates; ++var) {  // the coordinates, then t
-          mat3<mpfi> D = mat3<mpfi>::Zero();
-          for (int k = 0; k < 9; ++k) {
-            const auto& e = bc.matrix[static_cast<std::size_t>(k)];
-            if (var == d.vars.coordinates) {
-              if (e.dt) D(k / 3, k % 3) = e.dt.at(bv.data());
-            } else {
-              for (const auto& [i, de] : e.dq)
-                if (i == var) D(k / 3, k % 3) = de.at(bv.data());
-            }
-          }
-          for (int i = 0; i < 3; ++i)
-            for (int j = i; j < 3; ++j) {
-              mpfi e = 0;
-              for (int k = 0; k < 3; ++k) e += R(k, i) * D(k, j) + D(k, i) * R(k, j);
-              if (!possibly_zero(e))
-                throw input_error(where + ".orientation: not a rotation near the state (R^T dR/d" +
-                                  (var == d.vars.coordinates ? std::string("t") : d.names[static_cast<std::size_t>(d.vars.q(var))]) +
-                                  " is not skew-symmetric)");
-            }
-        }
-      }
-      if (bd.is_link && !bd.mass) continue;  // a massless frame
-      const mpfi mass = bc.mass.at(bv.data());
-      require_in_256_bits(certainly_positive(mass), certainly_nonpositive(mass),
-                          where + ".mass: must be positive (" + to_string(mass) + ")");
-      // Inertia: positive semidefinite (every principal minor >= 0); principal moments: the triangle inequalities.
-      mpfi I[6];
-      for (std::size_t k = 0; k < 6; ++k) I[k] = bc.inertia[k].at(bv.data());
-      const mpfi minors[] = {I[0], I[1], I[2], mpfi(I[0] * I[1] - I[3] * I[3]), mpfi(I[1] * I[2] - I[4] * I[4]),
-                             mpfi(I[0] * I[2] - I[5] * I[5]),
-                             mpfi(I[0] * (I[1] * I[2] - I[4] * I[4]) - I[3] * (I[3] * I[2] - I[4] * I[5]) +
-                                  I[5] * (I[3] * I[4] - I[1] * I[5]))};
-      for (const mpfi& m : minors)
-        if (certainly_negative(m))
-          throw input_error(where + ".inertia: not positive semidefinite (a principal minor is " + to_string(m) + ")");
-      if (bd.inertia[0] && !bd.inertia[3])
-        for (int k = 0; k < 3; ++k) {
-          const mpfi slack = I[(k + 1) % 3] + I[(k + 2) % 3] - I[k];
-          if (certainly_negative(slack))
-            throw input_error(where + ".inertia: principal moments must satisfy the triangle inequalities");
-        }
-    }
-    // A tree's mass matrix positive definite: each joint moves some mass or inertia that the
-    // joints before it do not (a link without inertial data at the end of a chain makes it singular).
-    if (!d.link_order.empty()) {
-      const appell_equations<mpfi> eq = gibbs_appell(expression_system<mpfi>{&sys}, q, u, t);
-      const int n = d.vars.speeds;
-      matrix_t<mpfi> L = matrix_t<mpfi>::Zero(n, n);
-      for (int k = 0; k < n; ++k) {
-        mpfi pivot = eq.M(k, k);
-        for (int j = 0; j < k; ++j) pivot -= sqr(L(k, j));
-        if (!certainly_positive(pivot)) {
-          std::string field = "coordinates." + d.names[static_cast<std::size_t>(d.vars.q(k < d.vars.coordinates ? k : 0))];
-          for (const auto& bd : d.bodies)
-            if (bd.is_link && bd.joint.coordinate == k) field = "bodies." + bd.name + ".joint";
-          throw input_error(field + ": the mass matrix is singular at the state: this joint moves no mass or inertia "
-                                    "that the joints before it do not move (a link without inertial data?)");
-        }
-        L(k, k) = sqrt(pivot);
-        for (int i = k + 1; i < n; ++i) {
-          mpfi x = eq.M(i, k);
-          for (int j = 0; j < k; ++j) x -= L(i, j) * L(k, j);
-          L(i, k) = x / L(k, k);
-        }
-      }
-    }
-    // The state on the constraints; the constraints independent.
-    if (!d.constraints.empty()) {
-      const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
-      matrix_t<mpfi> A(s, n);
-      vector_t<mpfi> a(s);
-      expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
-      for (int r = 0; r < s; ++r) {
-        const auto& k = d.constraints[static_cast<std::size_t>(r)];
-        const std::string where = "state: constraint " + k.name;
-        if (k.holonomic) {
-          const mpfi f = sys.constraints[static_cast<std::size_t>(r)].f.value.at(cv.data());
-          if (!possibly_zero(f))
-            throw input_error(where + " does not hold: f(q, t) = " + to_string(f));
-        } else if (k.body >= 0) {
-          // the direction was checked before the speeds were solved
-        } else {
-          (void)sys.constraints[static_cast<std::size_t>(r)].g.at(cv.data());
-        }
-        mpfi res = -a(r);
-        for (int j = 0; j < n; ++j) res += A(r, j) * u(j);
-        if (!possibly_zero(res))
-          throw input_error(where + ": the speeds violate it (" + std::string(k.holonomic ? "df/dt" : k.body >= 0 ? "n . v" : "g") + " = " +
-                            to_string(res) + ")");
-      }
-      // Independence: elimination with a pivot that is certainly nonzero in each row.
-      std::vector<bool> used(static_cast<std::size_t>(n), false);
-      for (int r = 0; r < s; ++r) {
-        int best = -1;
-        double best_abs = 0;
-        for (int j = 0; j < n; ++j)
-          if (!used[static_cast<std::size_t>(j)] && !possibly_zero(A(r, j)) && std::abs(approx_double(A(r, j))) > best_abs) {
-            best_abs = std::abs(approx_double(A(r, j)));
-            best = j;
-          }
-        if (best < 0)
-          throw input_error("constraints." + d.constraints[static_cast<std::size_t>(r)].name +
-                            ": depends on the constraints before it at the state (or is 0 there)");
-        used[static_cast<std::size_t>(best)] = true;
-        for (int r2 = r + 1; r2 < s; ++r2) {
-          const mpfi f = A(r2, best) / A(r, best);
-          for (int j = 0; j < n; ++j) A(r2, j) -= f * A(r, j);
-        }
-      }
-    }
-    // Each wrench fixed by its virtual work: the body moves in 6 independent ways
-    // (J J^T nonsingular), and each of its constraints' rows is a virtual power of
-    // that body alone (A_c^T in the range of J^T).
-    if (!d.wrenches.empty()) {
-      const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
-      const std::vector<mpfi> w0 = sys.evaluate(sys.constraint_tape, sys.variables(q, vector_t<mpfi>(vector_t<mpfi>::Zero(n)), t));
-      matrix_t<mpfi> A(s, n);
-      vector_t<mpfi> a(s);
-      expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
-      for (std::size_t k = 0; k < d.wrenches.size(); ++k) {
-        const system_wrench_definition& wd = d.wrenches[k];
-        const std::string where = "wrenches." + wd.name;
-        const matrix_t<mpfi> J = point_twist_jacobian(sys, sys.wrenches[k], w0.data());
-        check_body_fixes_force(d, where, wd.body, J, A, wd.constraints, "a wrench");
-      }
-    }
-    // Each contact: a body that moves in 6 independent ways (its force from the virtual work),
-    // each constraint's force at the point a force alone, a normal that is not 0, and the
-    // other constraints' forces orthogonal to a normal constraint's.
-    if (!d.contacts.empty()) {
-      const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
-      const std::vector<mpfi> w0 = sys.evaluate(sys.constraint_tape, sys.variables(q, vector_t<mpfi>(vector_t<mpfi>::Zero(n)), t));
-      matrix_t<mpfi> A(s, n);
-      vector_t<mpfi> a(s);
-      expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
-      for (std::size_t k = 0; k < d.contacts.size(); ++k) {
-        const system_contact_definition& kd = d.contacts[k];
-        const std::string where = "contacts." + kd.name;
-        if (kd.body >= 0) {
-          const matrix_t<mpfi> J = contact_twist_jacobian(sys, sys.contacts[k], w0.data());
-          check_body_fixes_force(d, where, kd.body, J, A, kd.constraints, "the contact's force");
-        }
-        if (kd.normal < 0) {
-          mpfi nn = 0;
-          for (const auto& e : sys.contacts[k].direction) nn += sqr(e.at(w0.data()));
-          if (!certainly_positive(nn)) throw input_error(where + ".normal: 0 at the state");
-        }
-        for (std::size_t i = 0; i < kd.constraints.size(); ++i) {  // unit reactions, one at a time
-          vector_t<mpfi> unit = vector_t<mpfi>::Zero(s);
-          unit(kd.constraints[i]) = 1;
-          const contact_force_result<mpfi> f = contact_forces<mpfi, mpfi>(sys, q, t, unit)[k];
-          const std::string cname = d.constraints[static_cast<std::size_t>(kd.constraints[i])].name;
-          for (int x = 0; x < 3; ++x)
-            if (!possibly_zero(f.moment(x)))
-              throw input_error(where + ".point: " + cname + " exerts a couple about the point (a contact transmits a "
-                                "force at its point: leave pivoting or rolling constraints out of it)");
-          if (kd.constraints[i] == kd.normal && !certainly_positive(kd.side > 0 ? f.normal : mpfi(-f.normal)))
-            throw input_error(where + ".normal: " + cname + "'s force at the point is 0 at the state (no normal)");
-          if (kd.normal >= 0 && kd.constraints[i] != kd.normal) {
-            const mpfi along = f.normal;  // d_c . n for a unit reaction
-            if (!possibly_zero(along))
-              throw input_error(where + ".constraints: " + cname + " is not orthogonal to the normal " +
-                                d.constraints[static_cast<std::size_t>(kd.normal)].name + " at the state (its force along "
-                                "the normal per unit reaction: " + short_text(along) + ")");
-          }
-        }
-      }
-    }
-    if (in.linearize) try {  // the reference motion on the holonomic constraints; a nonzero speed; a range
-      const linearize_input& li = *in.linearize;
-      vector_t<mpfi> ql(d.vars.coordinates);
-      for (int i = 0; i < d.vars.coordinates; ++i) ql(i) = value<mpfi>(li.q[static_cast<std::size_t>(i)]);
-      const std::vector<mpfi> lv = sys.evaluate(sys.constraint_tape, sys.variables(ql, vector_t<mpfi>(vector_t<mpfi>::Zero(d.vars.speeds)), t));
-      for (int r : li.def.holonomic_rows) {
-        const mpfi f = sys.constraints[static_cast<std::size_t>(r)].f.value.at(lv.data());
-        if (!possibly_zero(f))
-          throw input_error("linearize.about: constraint " + d.constraints[static_cast<std::size_t>(r)].name +
-                            " does not hold: f(q, t) = " + to_string(f));
-      }
-      const decimal_field& v = li.u[static_cast<std::size_t>(li.def.speed)];
-      if (possibly_zero(value<mpfi>(v)))
-        throw input_error(v.path + ": the reference speed must not be 0 (K2 and C1 come from the motion at that speed)");
-      if (li.from && !certainly_less(value<mpfi>(*li.from), value<mpfi>(*li.to)))
-        throw input_error("linearize.critical_speeds: from must be less than to");
-      if (li.def.gravity >= 0 && possibly_zero(sys.parameters[static_cast<std::size_t>(li.def.gravity)]))
-        throw input_error("linearize.gravity: the parameter is 0 (K0 is the stiffness per unit g)");
-    } catch (const input_error& e) {
-      in.linearize.reset();
-      in.linearize_refusal = e.what();
-    } catch (const certification_error& e) {
-      in.linearize.reset();
-      in.linearize_refusal = std::string(e.what()) + " (within 2^-256 of it: taken as exact)";
-    }
+    const state_at_256_bits s{d, sys, q, u, t, bv, cv};
+    check_bodies(s);
+    check_tree_mass_matrix(s);
+    check_constraints_at_state(s);
+    check_wrenches_fixed(s);
+    check_contacts_at_state(s);
+    check_linearization_reference(s, in);
   } catch (const certification_error& e) {
     throw input_error(std::string(e.what()) + " (within 2^-256 of it: taken as exact)");
   }
