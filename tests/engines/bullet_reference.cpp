@@ -66,26 +66,11 @@ btQuaternion btq(const Matrix3d& m) {
   return btQuaternion(q.x(), q.y(), q.z(), q.w());
 }
 
-struct scene {
-  std::string urdf;
-  Vector3d gravity;
-  std::map<std::string, double> torques;
-  std::vector<std::string> joints;  ///< the moving joints, in the scene's state order
-};
+using engine::read_scene;
+using engine::read_state;
+using engine::scene;
 
-scene read_scene(const std::string& path) {
-  std::ifstream in(path);
-  const nlohmann::json j = nlohmann::json::parse(in);
-  scene s;
-  std::filesystem::path file = j.at("file").get<std::string>();
-  if (file.is_relative()) file = std::filesystem::path(path).parent_path() / file;
-  s.urdf = file.string();
-  for (int i = 0; i < 3; ++i) s.gravity[i] = std::stod(j.at("gravity")[i].get<std::string>());
-  if (j.contains("torques"))
-    for (auto it = j["torques"].begin(); it != j["torques"].end(); ++it) s.torques[it.key()] = std::stod(it.value().get<std::string>());
-  for (auto it = j.at("state").begin(); it != j.at("state").end(); ++it) s.joints.push_back(it.key());
-  return s;
-}
+Vector3d gravity_of(const scene& s) { return {s.gravity[0], s.gravity[1], s.gravity[2]}; }
 
 /// One link of the multibody: its URDF joint, and its principal frame on the URDF link's axes.
 struct mb_link {
@@ -212,7 +197,7 @@ void load_state(robot& r, const scene& s, const std::map<std::string, double>& q
   r.body->clearForcesAndTorques();
   for (const auto& [name, tau] : s.torques) r.body->addJointTorque(r.index.at(name), tau);
   if (gravity)
-    for (std::size_t k = 0; k < r.links.size(); ++k) r.body->addLinkForce(static_cast<int>(k), bt(Vector3d(r.links[k].mass * s.gravity)));
+    for (std::size_t k = 0; k < r.links.size(); ++k) r.body->addLinkForce(static_cast<int>(k), bt(Vector3d(r.links[k].mass * gravity_of(s))));
 }
 
 /// Featherstone's forward dynamics as btMultiBodyDynamicsWorld calls it, with dt = 0 (no step):
@@ -234,15 +219,6 @@ void print_feedback(const robot& r, std::size_t k) {
   const Vector3d m = R * ei(r.feedback[k].m_reactionForces.getAngular());
   for (int i = 0; i < 3; ++i) std::cout << "," << g17(f[i]);
   for (int i = 0; i < 3; ++i) std::cout << "," << g17(m[i]);
-}
-
-void read_state(const std::vector<std::string>& header, const std::vector<std::string>& f, std::map<std::string, double>& q,
-                std::map<std::string, double>& qd) {
-  for (std::size_t c = 1; c < header.size() && c < f.size(); ++c) {
-    const std::string& h = header[c];  // state.JOINT.q or state.JOINT.q_dot
-    const bool rate = h.size() > 6 && h.compare(h.size() - 6, 6, ".q_dot") == 0;
-    (rate ? qd : q)[h.substr(6, h.size() - 6 - (rate ? 6 : 2))] = std::stod(f[c]);
-  }
 }
 
 }  // namespace
@@ -288,7 +264,7 @@ int main(int argc, char** argv) try {
   btMultiBodyConstraintSolver solver;
   btMultiBodyDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
   if (mode == "world-values" || mode == "world-check") {
-    world.setGravity(bt(s.gravity));
+    world.setGravity(bt(gravity_of(s)));
     world.getSolverInfo().m_jointFeedbackInWorldSpace = false;
     world.getSolverInfo().m_jointFeedbackInJointFrame = true;
     if (mode == "world-values") world.addMultiBody(r.body.get());

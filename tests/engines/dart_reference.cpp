@@ -35,26 +35,8 @@ using engine::appell_name;
 using engine::g17;
 
 
-struct scene {
-  std::string urdf;
-  Eigen::Vector3d gravity;
-  std::map<std::string, double> torques;
-  std::vector<std::string> joints;  ///< the moving joints, in the scene's state order
-};
-
-scene read_scene(const std::string& path) {
-  std::ifstream in(path);
-  const nlohmann::json j = nlohmann::json::parse(in);
-  scene s;
-  std::filesystem::path file = j.at("file").get<std::string>();
-  if (file.is_relative()) file = std::filesystem::path(path).parent_path() / file;
-  s.urdf = file.string();
-  for (int i = 0; i < 3; ++i) s.gravity[i] = std::stod(j.at("gravity")[i].get<std::string>());
-  if (j.contains("torques"))
-    for (auto it = j["torques"].begin(); it != j["torques"].end(); ++it) s.torques[it.key()] = std::stod(it.value().get<std::string>());
-  for (auto it = j.at("state").begin(); it != j.at("state").end(); ++it) s.joints.push_back(it.key());
-  return s;
-}
+using engine::read_scene;
+using engine::scene;
 
 dart::dynamics::SkeletonPtr load(const scene& s) {
   dart::utils::DartLoader::Options options;
@@ -64,7 +46,7 @@ dart::dynamics::SkeletonPtr load(const scene& s) {
   auto skel = loader.parseSkeleton(dart::common::Uri::createFromPath(bare));
   std::filesystem::remove(bare);
   if (!skel) throw std::runtime_error("DART could not read " + s.urdf);
-  skel->setGravity(s.gravity);
+  skel->setGravity(Eigen::Vector3d(s.gravity[0], s.gravity[1], s.gravity[2]));
   return skel;
 }
 
@@ -120,14 +102,13 @@ int main(int argc, char** argv) try {
   while (std::getline(in, line)) {
     if (line.empty()) continue;
     const std::vector<std::string> f = engine::fields(line);
-    for (std::size_t c = 1; c < header.size() && c < f.size(); ++c) {
-      const std::string& h = header[c];  // state.JOINT.q or state.JOINT.q_dot
-      const bool rate = h.size() > 6 && h.compare(h.size() - 6, 6, ".q_dot") == 0;
-      const std::string joint = h.substr(6, h.size() - 6 - (rate ? 6 : 2));
+    std::map<std::string, double> q, qd;
+    engine::read_state(header, f, q, qd);
+    for (const auto& [joint, x] : q) {
       auto* jt = skel->getJoint(joint);
       if (!jt) throw std::runtime_error("no joint " + joint + " in DART's skeleton");
-      if (rate) jt->setVelocity(0, std::stod(f[c]));
-      else jt->setPosition(0, std::stod(f[c]));
+      jt->setPosition(0, x);
+      jt->setVelocity(0, qd.at(joint));
     }
     for (const auto& [j, tau] : s.torques) skel->getJoint(j)->setForce(0, tau);
     skel->computeForwardDynamics();

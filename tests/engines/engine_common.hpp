@@ -5,11 +5,14 @@
 
 #include <unistd.h>
 
+#include <array>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -41,6 +44,40 @@ inline std::vector<std::string> fields(const std::string& line) {
   std::stringstream ss(line);
   for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
   return f;
+}
+
+/// What an engine program reads of a `urdf` scene: the URDF (its path made absolute from the
+/// scene's folder), gravity, the torques, and the moving joints in the scene's state order.
+struct scene {
+  std::string urdf;
+  std::array<double, 3> gravity{};
+  std::map<std::string, double> torques;
+  std::vector<std::string> joints;
+};
+
+inline scene read_scene(const std::string& path) {
+  std::ifstream in(path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  scene s;
+  std::filesystem::path file = j.at("file").get<std::string>();
+  if (file.is_relative()) file = std::filesystem::path(path).parent_path() / file;
+  s.urdf = file.string();
+  for (int i = 0; i < 3; ++i) s.gravity[static_cast<std::size_t>(i)] = std::stod(j.at("gravity")[i].get<std::string>());
+  if (j.contains("torques"))
+    for (auto it = j["torques"].begin(); it != j["torques"].end(); ++it) s.torques[it.key()] = std::stod(it.value().get<std::string>());
+  for (auto it = j.at("state").begin(); it != j.at("state").end(); ++it) s.joints.push_back(it.key());
+  return s;
+}
+
+/// One line of a states file (columns state.JOINT.q and state.JOINT.q_dot after the label): q
+/// and q' by joint name.
+inline void read_state(const std::vector<std::string>& header, const std::vector<std::string>& f,
+                       std::map<std::string, double>& q, std::map<std::string, double>& qd) {
+  for (std::size_t c = 1; c < header.size() && c < f.size(); ++c) {
+    const std::string& h = header[c];
+    const bool rate = h.size() > 6 && h.compare(h.size() - 6, 6, ".q_dot") == 0;
+    (rate ? qd : q)[h.substr(6, h.size() - 6 - (rate ? 6 : 2))] = std::stod(f[c]);
+  }
 }
 
 /// A copy of the URDF at `path` without <visual> and <collision> (engines fail on meshes they

@@ -106,13 +106,10 @@ int main(int argc, char** argv) try {
     if (line.empty()) continue;
     const std::vector<std::string> f = engine::fields(line);
     mj_resetData(m, d);
-    for (std::size_t c = 1; c < header.size() && c < f.size(); ++c) {
-      const std::string& h = header[c];
-      const bool rate = h.size() > 6 && h.compare(h.size() - 6, 6, ".q_dot") == 0;
-      const int id = joint_id(h.substr(6, h.size() - 6 - (rate ? 6 : 2)));
-      if (rate) d->qvel[m->jnt_dofadr[id]] = std::stod(f[c]);
-      else d->qpos[m->jnt_qposadr[id]] = std::stod(f[c]);
-    }
+    std::map<std::string, double> q, qd;
+    engine::read_state(header, f, q, qd);
+    for (const auto& [j, x] : q) d->qpos[m->jnt_qposadr[joint_id(j)]] = x;
+    for (const auto& [j, x] : qd) d->qvel[m->jnt_dofadr[joint_id(j)]] = x;
     if (scene.contains("torques"))
       for (auto it = scene["torques"].begin(); it != scene["torques"].end(); ++it)
         d->qfrc_applied[m->jnt_dofadr[joint_id(it.key())]] = std::stod(it.value().get<std::string>());
