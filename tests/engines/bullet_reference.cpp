@@ -317,11 +317,7 @@ int main(int argc, char** argv) try {
   std::cout << "state";
   if (mode == "values")
     for (const auto& j : s.joints) std::cout << "," << appell_name(j) << "_ddot";
-  for (const mb_link& L : r.links) {
-    const std::string n = appell_name(L.joint);
-    for (int i = 0; i < 3; ++i) std::cout << "," << n << "_force[" << i << "]";
-    for (int i = 0; i < 3; ++i) std::cout << "," << n << "_moment[" << i << "]";
-  }
+  for (const mb_link& L : r.links) engine::print_wrench_columns(L.joint);
   std::cout << "\n";
   while (std::getline(in, line)) {
     if (line.empty()) continue;

@@ -94,9 +94,7 @@ int main(int argc, char** argv) try {
   for (std::size_t k = 0; k < skel->getNumJoints(); ++k) {
     const auto* joint = skel->getJoint(k);
     if (joint->getParentBodyNode() == nullptr) continue;  // the root's weld to the world: not a URDF joint
-    const std::string n = appell_name(joint->getName());
-    for (int i = 0; i < 3; ++i) std::cout << "," << n << "_force[" << i << "]";
-    for (int i = 0; i < 3; ++i) std::cout << "," << n << "_moment[" << i << "]";
+    engine::print_wrench_columns(joint->getName());
   }
   std::cout << "\n";
   while (std::getline(in, line)) {

@@ -80,6 +80,13 @@ inline void read_state(const std::vector<std::string>& header, const std::vector
   }
 }
 
+/// The CSV columns of one joint's wrench, in appell's names: force then moment, 3 components each.
+inline void print_wrench_columns(const std::string& urdf_joint) {
+  const std::string n = appell_name(urdf_joint);
+  for (int i = 0; i < 3; ++i) std::cout << "," << n << "_force[" << i << "]";
+  for (int i = 0; i < 3; ++i) std::cout << "," << n << "_moment[" << i << "]";
+}
+
 /// A copy of the URDF at `path` without <visual> and <collision> (engines fail on meshes they
 /// cannot find, and the dynamics need none), `extra` inserted after <robot ...>, in the temporary
 /// directory under `name`; the caller removes it.

@@ -97,9 +97,7 @@ int main(int argc, char** argv) try {
     if (m->body_jntnum[b] != 1) continue;  // a fixed joint's body has no MuJoCo joint: left out
     const std::string name = mj_id2name(m, mjOBJ_JOINT, m->body_jntadr[b]);
     wrenches.emplace_back(b, name);
-    const std::string n = appell_name(name);
-    for (int i = 0; i < 3; ++i) std::cout << "," << n << "_force[" << i << "]";
-    for (int i = 0; i < 3; ++i) std::cout << "," << n << "_moment[" << i << "]";
+    engine::print_wrench_columns(name);
   }
   std::cout << "\n";
   while (std::getline(in, line)) {

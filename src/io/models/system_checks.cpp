@@ -73,7 +73,8 @@ void settle_link_axes(system_definition& def) {
 }
 
 /// The state at 256 bits, as the checks read it: the compiled system, q, u (the dependent
-/// speeds solved), t, and the tapes of the bodies and the constraints evaluated there.
+/// speeds solved), t, the tapes of the bodies and the constraints evaluated there, and (with
+/// constraints) their rows A u = a and the constraint tape at u = 0.
 struct state_at_256_bits {
   const system_definition& d;
   const compiled_system<mpfi>& sys;
@@ -82,13 +83,16 @@ struct state_at_256_bits {
   const mpfi& t;
   const std::vector<mpfi>& bv;
   const std::vector<mpfi>& cv;
+  const matrix_t<mpfi>& A;
+  const vector_t<mpfi>& a;
+  const std::vector<mpfi>& w0;
 };
 
 /// Every body's expressions defined at the state; an orientation matrix a rotation (orthogonal,
 /// determinant 1, R^T dR skew in every coordinate and t); masses positive; inertia tensors
 /// positive semidefinite, principal moments within the triangle inequalities.
-void check_bodies(const state_at_256_bits& s) {
-  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv] = s;
+void check_bodies(const state_at_256_bits& at) {
+  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv, A, a, w0] = at;
   for (std::size_t i = 0; i < d.bodies.size(); ++i) {
     const auto& bd = d.bodies[i];
     const auto& bc = sys.bodies[i];
@@ -156,8 +160,8 @@ void check_bodies(const state_at_256_bits& s) {
 }
 
 /// A tree's mass matrix positive definite (Cholesky with every pivot certainly positive).
-void check_tree_mass_matrix(const state_at_256_bits& s) {
-  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv] = s;
+void check_tree_mass_matrix(const state_at_256_bits& at) {
+  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv, A, a, w0] = at;
   // A tree's mass matrix positive definite: each joint moves some mass or inertia that the
   // joints before it do not (a link without inertial data at the end of a chain makes it singular).
   if (!d.link_order.empty()) {
@@ -185,14 +189,11 @@ void check_tree_mass_matrix(const state_at_256_bits& s) {
 }
 
 /// The state on every constraint, and the constraints independent.
-void check_constraints_at_state(const state_at_256_bits& s) {
-  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv] = s;
-  // The state on the constraints; the constraints independent.
+void check_constraints_at_state(const state_at_256_bits& at) {
+  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv, A_at, a, w0] = at;
   if (!d.constraints.empty()) {
     const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
-    matrix_t<mpfi> A(s, n);
-    vector_t<mpfi> a(s);
-    expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
+    matrix_t<mpfi> A = A_at;  // eliminated below
     for (int r = 0; r < s; ++r) {
       const auto& k = d.constraints[static_cast<std::size_t>(r)];
       const std::string where = "state: constraint " + k.name;
@@ -234,17 +235,12 @@ void check_constraints_at_state(const state_at_256_bits& s) {
 }
 
 /// Each wrench fixed by the constraints' virtual work.
-void check_wrenches_fixed(const state_at_256_bits& s) {
-  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv] = s;
+void check_wrenches_fixed(const state_at_256_bits& at) {
+  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv, A, a, w0] = at;
   // Each wrench fixed by its virtual work: the body moves in 6 independent ways
   // (J J^T nonsingular), and each of its constraints' rows is a virtual power of
   // that body alone (A_c^T in the range of J^T).
   if (!d.wrenches.empty()) {
-    const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
-    const std::vector<mpfi> w0 = sys.evaluate(sys.constraint_tape, sys.variables(q, vector_t<mpfi>(vector_t<mpfi>::Zero(n)), t));
-    matrix_t<mpfi> A(s, n);
-    vector_t<mpfi> a(s);
-    expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
     for (std::size_t k = 0; k < d.wrenches.size(); ++k) {
       const system_wrench_definition& wd = d.wrenches[k];
       const std::string where = "wrenches." + wd.name;
@@ -255,17 +251,12 @@ void check_wrenches_fixed(const state_at_256_bits& s) {
 }
 
 /// Each contact: its force fixed by the virtual work, a force at its point, its normal.
-void check_contacts_at_state(const state_at_256_bits& s) {
-  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv] = s;
+void check_contacts_at_state(const state_at_256_bits& at) {
+  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv, A, a, w0] = at;
   // Each contact: a body that moves in 6 independent ways (its force from the virtual work),
   // each constraint's force at the point a force alone, a normal that is not 0, and the
   // other constraints' forces orthogonal to a normal constraint's.
   if (!d.contacts.empty()) {
-    const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
-    const std::vector<mpfi> w0 = sys.evaluate(sys.constraint_tape, sys.variables(q, vector_t<mpfi>(vector_t<mpfi>::Zero(n)), t));
-    matrix_t<mpfi> A(s, n);
-    vector_t<mpfi> a(s);
-    expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
     for (std::size_t k = 0; k < d.contacts.size(); ++k) {
       const system_contact_definition& kd = d.contacts[k];
       const std::string where = "contacts." + kd.name;
@@ -279,7 +270,7 @@ void check_contacts_at_state(const state_at_256_bits& s) {
         if (!certainly_positive(nn)) throw input_error(where + ".normal: 0 at the state");
       }
       for (std::size_t i = 0; i < kd.constraints.size(); ++i) {  // unit reactions, one at a time
-        vector_t<mpfi> unit = vector_t<mpfi>::Zero(s);
+        vector_t<mpfi> unit = vector_t<mpfi>::Zero(static_cast<Eigen::Index>(d.constraints.size()));
         unit(kd.constraints[i]) = 1;
         const contact_force_result<mpfi> f = contact_forces<mpfi, mpfi>(sys, q, t, unit)[k];
         const std::string cname = d.constraints[static_cast<std::size_t>(kd.constraints[i])].name;
@@ -303,8 +294,8 @@ void check_contacts_at_state(const state_at_256_bits& s) {
 
 /// The linearization's reference motion on the holonomic constraints, its speed not 0, its
 /// range of speeds ordered, its gravity parameter not 0; a refusal kept for `linearize`.
-void check_linearization_reference(const state_at_256_bits& s, system_input& in) {
-  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv] = s;
+void check_linearization_reference(const state_at_256_bits& at, system_input& in) {
+  [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv, A, a, w0] = at;
   if (in.linearize) try {  // the reference motion on the holonomic constraints; a nonzero speed; a range
     const linearize_input& li = *in.linearize;
     vector_t<mpfi> ql(d.vars.coordinates);
@@ -368,13 +359,21 @@ void check_at_state(system_input& in) {
     const std::vector<mpfi> bv = sys.evaluate(sys.body_tape, x), cv = sys.evaluate(sys.constraint_tape, x);
     std::vector<body_state<mpfi>> states;
     expression_system<mpfi>{&sys}.bodies<mpfi>(q, u, t, states);
-    const state_at_256_bits s{d, sys, q, u, t, bv, cv};
-    check_bodies(s);
-    check_tree_mass_matrix(s);
-    check_constraints_at_state(s);
-    check_wrenches_fixed(s);
-    check_contacts_at_state(s);
-    check_linearization_reference(s, in);
+    const int n_constraints = static_cast<int>(d.constraints.size());
+    matrix_t<mpfi> A(n_constraints, d.vars.speeds);
+    vector_t<mpfi> a(n_constraints);
+    std::vector<mpfi> w0;
+    if (n_constraints > 0) {
+      expression_constraints<mpfi>{&sys}.eval<mpfi>(q, t, A, a);
+      w0 = sys.evaluate(sys.constraint_tape, sys.variables(q, vector_t<mpfi>(vector_t<mpfi>::Zero(d.vars.speeds)), t));
+    }
+    const state_at_256_bits at{d, sys, q, u, t, bv, cv, A, a, w0};
+    check_bodies(at);
+    check_tree_mass_matrix(at);
+    check_constraints_at_state(at);
+    check_wrenches_fixed(at);
+    check_contacts_at_state(at);
+    check_linearization_reference(at, in);
   } catch (const certification_error& e) {
     throw input_error(std::string(e.what()) + " (within 2^-256 of it: taken as exact)");
   }
