@@ -196,10 +196,16 @@ int horizon(const horizon_options& given) {
 
   // The plot: each scalar's error (solid) and its Brouwer line (dashed, the same colour), with a
   // key entry saying what the dashed lines are.
-  std::string script = "set datafile separator ','\nset logscale xy\nset autoscale xfix\nset format y '%.0e'\nset xlabel '" +
-                       (period > 0 ? std::string("periods") : std::string("t")) +
+  // Time on a log axis only where the samples span two decades (a log axis over one decade has a
+  // single tic); the key outside on the right, clear of the axis label.
+  const bool log_time = t_end / every >= 100;
+  std::string script = std::string("set datafile separator ','\nset logscale y\n") +
+                       (log_time ? "set logscale x\nset mxtics 10\n" : "") +
+                       "set autoscale xfix\nset format y '%.0e'\nset xlabel '" +
+                       (period > 0 ? std::string("time (periods)") : std::string("time")) +
                        "'\nset ylabel 'error against the 256-bit reference'\nset title " +
-                       gnuplot_quoted(scene.model + ": error against time") + "\nset grid\nset key below\nplot ";
+                       gnuplot_quoted(scene.model + ": error against time (solid); Brouwer's law, eps sqrt(steps), dashed") +
+                       "\nset grid\nset key outside right top vertical Left reverse\nplot ";
   const std::string x = period > 0 ? "2" : "1";
   const int first_col = period > 0 ? 3 : 2;
   const std::string file = gnuplot_quoted((dir / "horizon.csv").string());
@@ -210,7 +216,7 @@ int horizon(const horizon_options& given) {
               gnuplot_quoted(tracks[k].scalar) + ", '' every ::1 using " + x + ":" + std::to_string(col + 1) +
               " with lines dt 2 lw 1.5 lc " + std::to_string(k + 1) + " notitle";
   }
-  script += ", NaN with lines dt 2 lw 1.5 lc rgb 'black' title \"dashed: Brouwer's law, eps sqrt(steps)\"\n";
+  script += ", NaN with lines dt 2 lw 1.5 lc rgb 'black' title \"dashed: Brouwer's law\"\n";
   const plot_outcome plot = render_png(dir / "horizon.png", script, 1000, 560);
   const std::string plotted = plot_note(plot, dir / "horizon.png");
   std::cout << "horizon " << scene.model << " to t = " << o.t_end;

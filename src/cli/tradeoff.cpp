@@ -160,7 +160,8 @@ int tradeoff(const tradeoff_options& o) {
   // The plot: correct digits against cost, both on log scales (the fixed-precision types from 13
   // to 34 digits apart, mpfr and mpfi up to 300), one key entry per row (no label over a point:
   // mpfr and mpfi at one precision lie side by side), circles for point types, squares for the
-  // interval types (their digits certified).
+  // interval types (their digits certified), one colour per precision (a point type and the
+  // interval type of about its width side by side: double and interval, mpfr 257 and mpfi 256).
   std::string rows_data, series;
   int k = 0;
   for (const auto& r : rows) {
@@ -168,9 +169,10 @@ int tradeoff(const tradeoff_options& o) {
     const bool rigorous = r.scalar == "interval" || r.scalar == "mpfi";
     const std::string name = r.scalar + (r.scalar.rfind("mp", 0) == 0 ? " " + std::to_string(r.bits) + " bits" : "") +
                              (rigorous ? " (rigorous)" : "");
+    const int colour = r.scalar == "dd" ? 3 : r.bits <= 53 ? 1 : r.bits <= 65 ? 2 : r.bits <= 114 ? 4 : r.bits <= 257 ? 5 : 6;
     rows_data += figure(r.ratio, 6) + " " + figure(r.digits, 6) + "\n";
     series += std::string(k ? ", " : "") + "$rows every ::" + std::to_string(k) + "::" + std::to_string(k) +
-              " using 1:2 with points pt " + (rigorous ? "5" : "7") + " ps 1.6 lc " + std::to_string(k + 1) + " title " +
+              " using 1:2 with points pt " + (rigorous ? "5" : "7") + " ps 1.6 lc " + std::to_string(colour) + " title " +
               gnuplot_quoted(name);
     ++k;
   }
@@ -179,7 +181,7 @@ int tradeoff(const tradeoff_options& o) {
       render_png(png, datablock("rows", rows_data) + "set logscale xy\nset xlabel 'cost: time per evaluation / double'\n"
                         "set ylabel 'correct decimal digits (intervals: certified)'\nset ytics (10, 15, 20, 30, 50, 100, 200, 300)\n"
                         "set yrange [8:500]\nset title " + gnuplot_quoted("appell tradeoff: " + scene.model) +
-                        "\nset grid\nset key outside right top\nplot " + series + "\n",
+                        "\nset grid\nset offsets graph 0.03, graph 0.1, 0, 0\nset key outside right top\nplot " + series + "\n",
                  1000, 600);
   std::cout << "\nwrote " << csv.string() << plot_note(plotted, png) << "\n";
   return 0;
