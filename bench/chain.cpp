@@ -1,5 +1,5 @@
 // Cost against size: a planar N-link pendulum (N = 1 to 64) written on the
-// public API (dynamics/system.hpp), its accelerations by the generic
+// public API (dynamics/gibbs_appell.hpp), its accelerations by the generic
 // Gibbs-Appell path in double and in interval, beside Simbody's forward
 // dynamics (O(N) articulated-body recursion) on the same chain, in one run.
 //
@@ -18,18 +18,18 @@
 #include <iostream>
 #include <map>
 
-#include "appell/dynamics/system.hpp"
+#include "appell/dynamics/gibbs_appell.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/policy.hpp"
 #include "median_reporter.hpp"
-#include "planar_chain.hpp"
+#include "../examples/planar_chain.hpp"
 
 #ifdef APPELL_HAVE_SIMBODY
 #include "simbody_chain.hpp"
 #endif
 
 using namespace appell;
-using appell::bench::planar_chain;
+using appell::examples::planar_chain;
 
 namespace {
 

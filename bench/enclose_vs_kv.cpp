@@ -22,6 +22,7 @@
 #include <string>
 
 #include "appell/ode/enclose.hpp"
+#include "appell/ode/problems.hpp"
 
 using namespace appell;
 

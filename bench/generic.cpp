@@ -2,7 +2,7 @@
 //
 // For Euler's body, the rolling sphere on a plane and in a bowl, and Example I,
 // in double and in interval, one run times side by side:
-//   closed   the closed form (bench/closed_forms.hpp) with its power balance;
+//   closed   the closed form (tests/independent/hand_derived.hpp) with its power balance;
 //   generic  the model's result function: the library differentiates the
 //            kinematics, forms Appell's equations, solves, and computes the
 //            checks `appell eval` prints (eq. (4), Cotton = Lagrange);
@@ -25,7 +25,7 @@
 #include "appell/io/models/rolling_sphere.hpp"
 #include "appell/io/models/top_on_cone.hpp"
 #include "appell/io/scene.hpp"
-#include "closed_forms.hpp"
+#include "../tests/independent/hand_derived.hpp"
 #include "median_reporter.hpp"
 
 using namespace appell;
@@ -50,18 +50,18 @@ void with_model(const scene_input& scene, F&& f) {
 }
 
 template <Scalar T>
-auto closed(const euler_body_model::prepared<T>& m) { return closed_form::euler(m.body, m.omega); }
+auto closed(const euler_body_model::prepared<T>& m) { return independent::euler(m.body, m.omega); }
 template <Scalar T>
 auto closed(const rolling_sphere_model::prepared<T>& m) {
-  return closed_form::rolling_sphere(m.M, m.A, m.a, m.surface, m.c, m.omega, m.F, m.tau);
+  return independent::rolling_sphere(m.M, m.A, m.a, m.surface, m.c, m.omega, m.F, m.tau);
 }
 template <Scalar T>
 auto closed(const top_on_cone_model::prepared<T>& m) {
-  static const closed_form::example_one_cone<T> cone;
+  static const independent::example_one_cone<T> cone;
   T f, fp, fpp;
   cone.all(m.theta, f, fp, fpp);
   const heavy_top<T>& t = m.top;
-  return closed_form::top_on_cone(t.A, t.C, t.mass, t.l, t.g, m.theta, m.theta_dot, m.phi_dot, f, fp, fpp);
+  return independent::top_on_cone(t.A, t.C, t.mass, t.l, t.g, m.theta, m.theta_dot, m.phi_dot, f, fp, fpp);
 }
 
 template <Scalar T>
@@ -84,10 +84,10 @@ void expect_close(const char* what, double closed_value, double generic_value, d
     std::exit(4);
   }
 }
-void agree(const closed_form::euler_result<double>& c, const euler_body_result<double>& g) {
+void agree(const independent::euler_result<double>& c, const euler_body_result<double>& g) {
   for (int i = 0; i < 3; ++i) expect_close("omega_dot", c.omega_dot(i), g.omega_dot(i), g.omega_dot.norm());
 }
-void agree(const closed_form::sphere_result<double>& c, const rolling_sphere_result<double>& g) {
+void agree(const independent::sphere_result<double>& c, const rolling_sphere_result<double>& g) {
   const double s = g.contact_force.norm() + std::abs(g.pivot_couple) + 1;
   for (int i = 0; i < 3; ++i) {
     expect_close("center_ddot", c.center_ddot(i), g.center_ddot(i), g.center_ddot.norm() + 1);
@@ -98,7 +98,7 @@ void agree(const closed_form::sphere_result<double>& c, const rolling_sphere_res
   expect_close("pivot_couple", c.pivot_couple, g.pivot_couple, s);
   expect_close("tangential_force", c.tangential_force, g.tangential_force(), s);
 }
-void agree(const closed_form::top_result<double>& c, const top_on_cone_result<double>& g) {
+void agree(const independent::top_result<double>& c, const top_on_cone_result<double>& g) {
   const double s = std::abs(g.theta_ddot) + std::abs(g.phi_ddot) + std::abs(g.psi_ddot) + std::abs(g.H) + 1;
   expect_close("theta_ddot", c.theta_ddot, g.theta_ddot, s);
   expect_close("phi_ddot", c.phi_ddot, g.phi_ddot, s);

@@ -1,4 +1,4 @@
-// The Taylor coefficients of the scenes' motions with and without the memo (ode/jet.hpp,
+// The Taylor coefficients of the scenes' motions with and without the memo (derivatives/jet.hpp,
 // detail::jet_memo), side by side in one run: each pass of taylor_series computes only its new
 // coefficient of every product, quotient, elementary function and solve, instead of all of them.
 // For each scene and scalar at the order `simulate` uses (interval: `enclose`'s 24), prints the
@@ -14,6 +14,7 @@
 #include "appell/io/models/rolling_sphere.hpp"
 #include "appell/io/models/top_on_cone.hpp"
 #include "appell/io/scene.hpp"
+#include "appell/ode/problems.hpp"
 #include "appell/ode/taylor.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 

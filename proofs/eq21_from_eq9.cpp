@@ -13,7 +13,7 @@
 // coefficient by coefficient.
 #include <random>
 
-#include "appell/dynamics/system.hpp"
+#include "appell/dynamics/gibbs_appell.hpp"
 #include "appell/scalar/rational.hpp"
 #include "appell/scenes/free_body.hpp"
 #include "eq9.hpp"

@@ -39,7 +39,7 @@ Q random_q(int lo, int hi, int den = 7) {
 
 // Axes of sec. 4: rate Omega0 + t Omega1; inertia varying as for a body turning
 // at k = omega - Omega relative to the axes: I(t) = I_B + t ([k]x I_B - I_B [k]x).
-// The rate must be this one: the library's S (system.hpp) never reads I'(t) --
+// The rate must be this one: the library's S (gibbs_appell.hpp) never reads I'(t) --
 // it holds the rigid-body relation I' = [k]x I - I [k]x implicitly -- while (8)
 // and (9) take A'..F' as given (with k off by (1, 0, 0) all 200 states fail).
 struct linear_axes {

@@ -2,7 +2,7 @@
 // method -- the contact force at the contact point and the pivoting couple,
 // eq. (14) in the speeds (p, q, u_1, v_1, w, r) of eq. (23) -- equal the contact
 // force and couple of the Newton-Euler equations with contact multipliers in a
-// fixed frame (sphere_newton_euler.hpp), and so do the accelerations; for each
+// fixed frame (tests/independent/sphere_newton_euler.hpp), and so do the accelerations; for each
 // surface type (plane; sphere outside, inside; cylinder outside, inside).
 // Part 1 (exact): at 200 random rational consistent states per surface (centres
 // on the surface of centres at rational points, omega . n = 0), both run in
@@ -14,7 +14,7 @@
 
 #include "appell/scalar/rational.hpp"
 #include "proof.hpp"
-#include "sphere_newton_euler.hpp"
+#include "../tests/independent/sphere_newton_euler.hpp"
 
 using namespace appell;
 using Q = rational_q;
@@ -78,7 +78,7 @@ int main() {
       const vec3<Q> F(rq(-50, 50, 10), rq(-50, 50, 10), rq(-150, 50, 10)), tau(rq(-10, 10, 100), 0, rq(-10, 10, 100));
       const rolling_surface<Q> surface{sc.type, sc.inside, b, Q(0)};
       const auto lib = rolling_sphere_motion(M, A, a, surface, c, w, F, tau);
-      const auto ne = proof::sphere_newton_euler<Q>(M, A, a, sc.type, sc.inside, b, c, w, F, tau, solver<Q>());
+      const auto ne = independent::sphere_newton_euler<Q>(M, A, a, sc.type, sc.inside, b, c, w, F, tau, solver<Q>());
       const bool ok = lib.contact_force == ne.Fc && lib.pivot_couple == ne.Gn && lib.center_ddot == ne.aG &&
                       lib.omega_dot == ne.alpha;
       v.require(ok, std::string(sc.name) + " state " + std::to_string(k) + ": contact force or couple differ");
@@ -101,7 +101,7 @@ int main() {
         const vec3<T> w0(T(1, 2), T(1, 2), T(1, 2));
         const vec3<T> w = w0 - m * dot(w0, m);
         const auto lib = rolling_sphere_motion(M, A, a, surface, c, w, F, tau);
-        const auto ne = proof::sphere_newton_euler<T>(M, A, a, sc.type, sc.inside, b, c, w, F, tau, solver<T>());
+        const auto ne = independent::sphere_newton_euler<T>(M, A, a, sc.type, sc.inside, b, c, w, F, tau, solver<T>());
         auto meet = [](const T& x, const T& y) { return x.lower() <= y.upper() && y.lower() <= x.upper(); };
         bool ok = meet(lib.pivot_couple, ne.Gn);
         for (int d = 0; d < 3; ++d) ok = ok && meet(lib.contact_force(d), ne.Fc(d)) && meet(lib.center_ddot(d), ne.aG(d));

@@ -107,6 +107,23 @@ BOOST_AUTO_TEST_CASE(bits_set_the_precision_of_mpfr_and_mpfi) {
   const outcome t = run("eval " + good_scene + " --scalar interval --format text");
   BOOST_TEST(t.status == 0);
   BOOST_TEST(t.out.find("omega_dot[0] = [") != std::string::npos, t.out);
+  // the motion commands' summary.json names the bits as eval does ("bits" used, "bits_requested"
+  // where they differ), for mpfr (113 asked, 114 used) and mpfi (exactly 113)
+  for (const char* scalar : {"mpfr", "mpfi"}) {
+    const std::string dir = (work / ("bits_summary_" + std::string(scalar))).string();
+    const std::string command = std::string(scalar) == "mpfr" ? "simulate" : "enclose";
+    const outcome m = run(command + " " + good_scene + " --scalar " + scalar + " --bits 113 --t-end 0.1 --quiet --out " + dir);
+    BOOST_TEST_REQUIRE(m.status == 0, m.err);
+    const appell::json_value summary = appell::parse_json(slurp(dir + "/summary.json"));
+    const outcome e = run("eval " + good_scene + " --scalar " + scalar + " --bits 113");
+    const appell::json_value eval = appell::parse_json(e.out);
+    BOOST_TEST_REQUIRE((summary.find("bits") && eval.find("bits")), scalar);
+    BOOST_TEST(summary.find("bits")->text == eval.find("bits")->text, scalar);
+    const bool requested = summary.find("bits_requested") != nullptr;
+    BOOST_TEST(requested == (eval.find("bits_requested") != nullptr), scalar);
+    BOOST_TEST(requested == (std::string(scalar) == "mpfr"), scalar);
+    BOOST_TEST(summary.find("working_bits") == nullptr, scalar);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(bad_input_exits_2_with_one_line_naming_the_field) {
@@ -243,8 +260,26 @@ BOOST_AUTO_TEST_CASE(bad_command_lines_exit_2_with_one_line) {
   expect_bad_input("eval /dev/null", "/dev/null: empty");
   // reference reads its scene under eval's size guard: /dev/zero is refused, not read forever
   expect_bad_input("reference /dev/zero --states /dev/zero --out " + (work / "zero").string(), "larger than the limit");
-  expect_bad_input("extremes --frobnicate", "unknown argument");
-  expect_bad_input("tradeoff", "no scene given");
+  expect_bad_input("extremes --frobnicate", "extremes: unknown option '--frobnicate'");
+  expect_bad_input("tradeoff", "tradeoff: no scene given");
+  // one command-line reader (flags.hpp): the same refusals in every command
+  const std::string out = " --out " + (work / "flags").string();
+  for (const std::string command : {"eval " + good_scene, "linearize " + good_scene, "tradeoff " + good_scene + out,
+                                    "extremes" + out, "simulate " + good_scene + " --t-end 1" + out,
+                                    "enclose " + good_scene + " --t-end 1" + out, "horizon " + good_scene + " --t-end 1" + out,
+                                    "reference " + good_scene + " --n 1 --box 'omega[0]=0:1'" + out}) {
+    const std::string name = command.substr(0, command.find(' '));
+    expect_bad_input(command + " --frobnicate", name + ": unknown option '--frobnicate'");
+    const std::string twice = name == "eval" || name == "linearize" ? "--format" : "--quiet";
+    expect_bad_input(command + " " + twice + (twice == "--format" ? " json --format text" : " --quiet"),
+                     twice + ": given twice");
+  }
+  // --out is required wherever a command writes files (tradeoff and extremes had defaults)
+  for (const std::string command : {"tradeoff " + good_scene, std::string("extremes"), "simulate " + good_scene + " --t-end 1",
+                                    "enclose " + good_scene + " --t-end 1", "horizon " + good_scene + " --t-end 1",
+                                    "reference " + good_scene + " --n 1 --box 'omega[0]=0:1'"})
+    expect_bad_input(command, "--out DIR is required");
+  expect_bad_input("simulate " + good_scene + " --t-end 1 --order 20 --order 30" + out, "--order: given twice");
 }
 
 // appell linearize: every scalar, JSON that parses, the weave speed inside the interval

@@ -193,7 +193,7 @@ BOOST_AUTO_TEST_CASE(shipped_scene_widths) {
 // interval<double> on the same inputs, over random states with near-equal moments among them
 // (B = C (1 + 2^-k), k up to 40: the extreme of the stability study).  The generic path forms
 // omega x I omega; for a principal-axes inertia it does so as ((C - B) q r, ...)
-// (`gyroscopic`, dynamics/system.hpp).  As the difference of two products
+// (`gyroscopic`, dynamics/gibbs_appell.hpp).  As the difference of two products
 // q (C r) - r (B q) it was up to 4e12 times wider here (this test, built before the change), since the
 // two products nearly cancel; now the measured worst is 4 times.
 BOOST_AUTO_TEST_CASE(generic_interval_widths_stay_within_a_few_times_the_closed_form_s) {

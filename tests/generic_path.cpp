@@ -4,7 +4,7 @@
 //     states, bit for bit, as k + 1 single-dual passes, in double, interval and
 //     mpfi, on random states of every scene's system, of the Cotton speeds built
 //     on them, and of a 12-link chain (two evaluations);
-//  2. the generic path against the closed forms of bench/closed_forms.hpp
+//  2. the generic path against the closed forms of tests/independent/hand_derived.hpp
 //     (Euler's equations; the rolling sphere by Newton-Euler eliminated by hand;
 //     Example I by Lagrange's equations), an independent formulation: on random
 //     states the closed form at 320 bits lies inside every interval result of
@@ -21,8 +21,8 @@
 #include "appell/scenes/euler_body.hpp"
 #include "appell/scenes/rolling_sphere.hpp"
 #include "appell/scenes/top_on_cone.hpp"
-#include "closed_forms.hpp"
-#include "planar_chain.hpp"
+#include "independent/hand_derived.hpp"
+#include "../examples/planar_chain.hpp"
 
 using namespace appell;
 
@@ -94,7 +94,7 @@ std::mt19937_64 rng(20261123);
 double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
 
 template <Scalar T>
-using hand_cone = closed_form::example_one_cone<T>;  // Example I's cone, written by hand
+using hand_cone = independent::example_one_cone<T>;  // Example I's cone, written by hand
 
 template <Scalar T>
 vector_t<T> random_vector(int n, double lo, double hi) {
@@ -138,7 +138,7 @@ void differentiation_on_random_states(int states) {
     const rolling_constraint<T> con{a};
     const auto change = adapt_speeds_keeping(con, 6, {3, 4});
     expect_same_differentiation<T>(change_speeds(sphere, change, 6), q6, u6, t);
-    expect_same_differentiation<T>(appell::bench::planar_chain<T>{12}, random_vector<T>(12, -1, 1), random_vector<T>(12, -3, 3), t);
+    expect_same_differentiation<T>(appell::examples::planar_chain<T>{12}, random_vector<T>(12, -1, 1), random_vector<T>(12, -3, 3), t);
   }
   scope.verify();
 }
@@ -199,7 +199,7 @@ BOOST_AUTO_TEST_CASE(generic_path_encloses_and_agrees_with_the_closed_forms) {
         return euler_body<T>{vec3<T>(T(A), T(B), T(C)), vec3<T>(T(L[0]), T(L[1]), T(L[2]))};
       };
       const vec3<ref_t> wr{ref_t{w[0]}, ref_t{w[1]}, ref_t{w[2]}};
-      const auto ref = closed_form::euler(body(std::type_identity<ref_t>{}), wr);
+      const auto ref = independent::euler(body(std::type_identity<ref_t>{}), wr);
       const euler_body_result<double> d =
           euler_body_motion(body(std::type_identity<double>{}), vec3<double>(w[0], w[1], w[2]));
       const evaluation_scope<interval> scope;
@@ -248,7 +248,7 @@ BOOST_AUTO_TEST_CASE(generic_path_encloses_and_agrees_with_the_closed_forms) {
       // The generic path keeps omega's tangential part (the state's omega . n = 0): so does the reference.
       const vec3<ref_t> nr = r.surface.normal(r.c);
       r.omega = r.omega - nr * dot(r.omega, nr);
-      const auto ref = closed_form::rolling_sphere(r.M, r.A, r.a, r.surface, r.c, r.omega, r.F, r.tau);
+      const auto ref = independent::rolling_sphere(r.M, r.A, r.a, r.surface, r.c, r.omega, r.F, r.tau);
       const rolling_sphere_result<double> d = run(make(std::type_identity<double>{}));
       const evaluation_scope<interval> scope;
       const rolling_sphere_result<interval> x = run(make(std::type_identity<interval>{}));
@@ -274,7 +274,7 @@ BOOST_AUTO_TEST_CASE(generic_path_encloses_and_agrees_with_the_closed_forms) {
       };
       const hand_cone<ref_t> cone;
       const ref_t thr(th);
-      const auto ref = closed_form::top_on_cone(ref_t(A), ref_t(C), ref_t(m), ref_t(l), ref_t(9.81), thr, ref_t(thd),
+      const auto ref = independent::top_on_cone(ref_t(A), ref_t(C), ref_t(m), ref_t(l), ref_t(9.81), thr, ref_t(thd),
                                                 ref_t(phd), cone.f(thr), cone.fprime(thr), cone.fsecond(thr));
       const top_on_cone_result<double> d = run(std::type_identity<double>{});
       const evaluation_scope<interval> scope;

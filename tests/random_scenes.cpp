@@ -2,10 +2,10 @@
 // readers, the models, the evaluation policy) in interval<double> and in mpfi
 // (128 bits), against independent references at 400 bits (120 digits):
 //   euler_body     Euler's equations written out, A w1' = (B - C) w2 w3 + L, ...;
-//   top_on_cone    Lagrange's equations with a multiplier (reference_top.hpp),
+//   top_on_cone    Lagrange's equations with a multiplier (tests/independent/top_lagrange.hpp),
 //                  random cones with hand-written f' and f'';
 //   rolling_sphere Newton-Euler with contact multipliers in a fixed frame
-//                  (proofs/sphere_newton_euler.hpp), on the five surfaces.
+//                  (tests/independent/sphere_newton_euler.hpp), on the five surfaces.
 // Every input is an exact decimal and every state satisfies its constraints
 // exactly (Pythagorean triples and quadruples put decimal centres on the
 // surfaces of centres; omega = r x v is exactly normal to r).  A miss is an
@@ -26,8 +26,8 @@
 #include <random>
 
 #include "appell/io/scene.hpp"
-#include "../proofs/sphere_newton_euler.hpp"
-#include "reference_top.hpp"
+#include "independent/sphere_newton_euler.hpp"
+#include "independent/top_lagrange.hpp"
 #include "bounds_400.hpp"
 
 using namespace appell;
@@ -164,7 +164,7 @@ random_scene top_scene() {
   const ref_t f = R(c[0]) + R(c[1]) * t + R(c[2]) * sin(K * t) + R(c[3]) * t * t / (one + t) - R(c[4]) * e;
   const ref_t fp = R(c[1]) + R(c[2]) * K * cos(K * t) + R(c[3]) * (t * t + 2 * t) / ((one + t) * (one + t)) + R(c[4]) * e;
   const ref_t fpp = -R(c[2]) * K * K * sin(K * t) + R(c[3]) * 2 / ((one + t) * (one + t) * (one + t)) - R(c[4]) * e;
-  const auto r = testing::top_lagrange<ref_t>(R(A), R(C), R(m), R(l), R("9.81"), t, R(thd), R(phd), f, fp, fpp);
+  const auto r = independent::top_lagrange<ref_t>(R(A), R(C), R(m), R(l), R("9.81"), t, R(thd), R(phd), f, fp, fpp);
   s.expected = {{"theta_ddot", {r.theta_ddot}}, {"phi_ddot", {r.phi_ddot}}, {"psi_ddot", {r.psi_ddot}},
                 {"H", {r.H}}, {"couple", {r.couple[0], r.couple[1], r.couple[2]}}};
   // As a system: the top's centre and orientation in Euler angles, the cone a holonomic constraint.
@@ -250,7 +250,7 @@ random_scene sphere_scene(int surface) {
   const V force = V(R(g[0]), R(g[1]), R(g[2])) * Mr + V(R(F[0]), R(F[1]), R(F[2]));
   const V torque(R(tau[0]), R(tau[1]), R(tau[2]));
   const surface_type type = surface == 0 ? surface_type::plane : surface <= 2 ? surface_type::sphere : surface_type::cylinder;
-  const auto ne = proof::sphere_newton_euler<ref_t>(
+  const auto ne = independent::sphere_newton_euler<ref_t>(
       Mr, Ar, ar, type, inside, surface == 0 ? ref_t(0) : R(b), c, om, force, torque,
       [](const auto& K, const auto& rhs) { return K.partialPivLu().solve(rhs).eval(); });
   V n(0, 0, 1);

@@ -1,5 +1,5 @@
 // Example II (paper sec. 7): the rolling sphere against Newton-Euler with
-// contact multipliers in a fixed frame (proofs/sphere_newton_euler.hpp),
+// contact multipliers in a fixed frame (tests/independent/sphere_newton_euler.hpp),
 // solved at 532 bits (160 digits) -- an independent
 // formulation (no trihedron, no quasi-velocities, no Appell):
 //   M a_G = F + F_c,                      A alpha = tau + (-a n) x F_c + G_n n,
@@ -13,7 +13,7 @@
 
 #include "appell/io/models/rolling_sphere.hpp"
 #include "appell/scalar/rational.hpp"
-#include "../proofs/sphere_newton_euler.hpp"
+#include "independent/sphere_newton_euler.hpp"
 
 using namespace appell;
 // References at fixed precisions of their own (not appell::mpfr, whose precision the tests set).
@@ -33,7 +33,7 @@ struct state_q {
 };
 
 template <class R>
-using reference = proof::sphere_contact<R>;
+using reference = independent::sphere_contact<R>;
 
 template <class R>
 R ref(const Q& x) {
@@ -46,7 +46,7 @@ template <class R>
 reference<R> newton_euler(const state_q& s) {
   using V = Eigen::Matrix<R, 3, 1>;
   auto v3 = [](const vec3<Q>& x) { return V(ref<R>(x(0)), ref<R>(x(1)), ref<R>(x(2))); };
-  return proof::sphere_newton_euler<R>(ref<R>(s.M), ref<R>(s.A), ref<R>(s.a), s.type, s.inside, ref<R>(s.b), v3(s.c),
+  return independent::sphere_newton_euler<R>(ref<R>(s.M), ref<R>(s.A), ref<R>(s.a), s.type, s.inside, ref<R>(s.b), v3(s.c),
                                        v3(s.omega), v3(s.F), v3(s.tau),
                                        [](const auto& K, const auto& rhs) { return K.partialPivLu().solve(rhs).eval(); });
 }

@@ -1,4 +1,4 @@
-// Slopes of the Taylor coefficients (dynamics/slope.hpp, ode::taylor_series_slopes), the matrix
+// Slopes of the Taylor coefficients (derivatives/slope.hpp, ode::taylor_series_slopes), the matrix
 // appell enclose steps with, against true differences computed in MPFR at 332 bits:
 //   - on random boxes X and centres xh in X, at random points x of X (corners included), every
 //     coefficient's difference x_k(x) - x_k(xh) lies in S_k (x - xh), on five problems through

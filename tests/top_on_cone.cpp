@@ -10,7 +10,7 @@
 #include <random>
 
 #include "appell/io/models/top_on_cone.hpp"
-#include "reference_top.hpp"
+#include "independent/top_lagrange.hpp"
 
 using namespace appell;
 // The reference has a fixed precision of its own (160 digits, 532 bits), independent of appell::mpfr's.
@@ -44,13 +44,13 @@ const std::vector<cone_case> cones = {
      }},
 };
 
-using reference = testing::top_reference<ref_t>;
+using reference = independent::top_reference<ref_t>;
 
 reference closed_form(const top_on_cone_input& in, const cone_case& cone) {
   auto d = [](const decimal_field& x) { return ref_t(x.text); };
   ref_t f, fp, fpp;
   cone.f(d(in.theta), f, fp, fpp);
-  return testing::top_lagrange<ref_t>(d(in.A), d(in.C), d(in.mass), d(in.l), d(in.gravity), d(in.theta),
+  return independent::top_lagrange<ref_t>(d(in.A), d(in.C), d(in.mass), d(in.l), d(in.gravity), d(in.theta),
                                       d(in.theta_dot), d(in.phi_dot), f, fp, fpp);
 }
 

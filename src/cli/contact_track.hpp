@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "appell/ode/enclose.hpp"
+#include "appell/ode/problems.hpp"
 #include "appell/reactions/contact.hpp"
 #include "appell/scalar/format.hpp"
 

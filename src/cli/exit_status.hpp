@@ -1,6 +1,6 @@
 // appell/src/cli/exit_status.hpp -- one mapping from exceptions to exit statuses for
-// every command and front end (SCENES.md): 2 bad input (one line naming the field),
-// 3 no certificate, 4 internal error.
+// every command and front end (SCENES.md; the errors and their statuses: appell/errors.hpp):
+// 2 bad input (one line naming the field), 3 no certificate, 4 internal error.
 #pragma once
 
 #include <exception>
@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "appell/errors.hpp"
 #include "appell/io/scene.hpp"
 
 namespace appell::cli {
@@ -27,19 +28,19 @@ inline int exit_status_of_current_exception(bool report = true) {
     throw;
   } catch (const appell::input_error& e) {
     say(one_line(e.what()));
-    return 2;
+    return static_cast<int>(exit_status::bad_input);
   } catch (const appell::parse_error& e) {
     say(one_line(e.what()));
-    return 2;
+    return static_cast<int>(exit_status::bad_input);
   } catch (const appell::certification_error& e) {
     say("cannot certify: " + one_line(e.what()));
-    return 3;
+    return static_cast<int>(exit_status::no_certificate);
   } catch (const appell::domain_error& e) {
     say("cannot certify: " + one_line(e.what()));
-    return 3;
+    return static_cast<int>(exit_status::no_certificate);
   } catch (const std::exception& e) {
     say("internal error: " + one_line(e.what()));
-    return 4;
+    return static_cast<int>(exit_status::internal);
   }
 }
 

@@ -1,5 +1,5 @@
 // appell extremes [--out DIR]: the stability study.  For every point of every
-// sweep (extremes_sweeps.cpp) and every scalar: the correct digits against
+// sweep (src/studies/extreme_sweeps.cpp) and every scalar: the correct digits against
 // mpfr at 2048 bits, the relative width of interval results, the
 // error_amplification check of point results, or the refusal (exit 3 of
 // `appell eval`) where no certificate exists.  Writes DIR/SWEEP.csv and
@@ -16,8 +16,11 @@
 
 #include <unistd.h>
 
-#include "accuracy.hpp"
-#include "files.hpp"
+#include "appell/studies/accuracy.hpp"
+#include "appell/studies/extreme_sweeps.hpp"
+#include "figure.hpp"
+#include "progress.hpp"
+#include "write_whole.hpp"
 #include "plot.hpp"
 #include "extremes.hpp"
 
@@ -36,7 +39,7 @@ outcome run(const scene_input& scene, const std::vector<mpfr_value>* ref) {
   try {
     const evaluation<T> e = evaluate<T>(scene);
     if (ref) {
-      const accuracy a = measure_accuracy(e, *ref, 616.0);  // 2048 bits ~ 616 digits
+      const studies::accuracy a = studies::measure_accuracy(e, *ref, 616.0);  // 2048 bits ~ 616 digits
       o.digits = a.digits;
       o.rel_width = a.rel_width;
     }
@@ -56,13 +59,14 @@ outcome run(const scene_input& scene, const std::vector<mpfr_value>* ref) {
 
 int extremes(const extremes_options& o) {
   std::filesystem::create_directories(o.out_dir);
-  const auto sweeps = extreme_sweeps();
+  const auto sweeps = studies::extreme_sweeps();
   // Every standard scalar; those of run-time precision at 113 bits (float128's).
   std::vector<std::string> scalars;
   for (const scalar_info& s : standard_scalar_infos()) scalars.push_back(s.runtime_precision ? s.name + "113" : s.name);
   std::cout << "appell extremes: correct digits (vs mpfr 2048 bits); 'R' = refused with a reason (exit 3)\n";
   std::size_t done = 0, total = 0;
   for (const auto& w : sweeps) total += w.points.size();
+  progress line("appell extremes", o.quiet);
   for (const auto& w : sweeps) {
     std::ostringstream csv;  // written whole after the sweep (a temporary file, then rename)
     csv << "sweep,param,x,scalar,bits,status,correct_digits,rel_width,error_amplification,reason\n";
@@ -71,11 +75,13 @@ int extremes(const extremes_options& o) {
     std::cout << "\n";
     std::map<std::string, std::vector<std::pair<double, double>>> series;
     for (const auto& p : w.points) {
-      std::cerr << "\r[" << ++done << "/" << total << "] " << w.name << " " << p.param << "        " << std::flush;
+      line.show(static_cast<double>(done) / static_cast<double>(total),
+                std::to_string(done + 1) + "/" + std::to_string(total) + " points, " + w.name + " at " + p.param);
+      ++done;
       const scene_input scene = read_scene(parse_json(p.json));
       std::optional<std::vector<mpfr_value>> ref;
       try {
-        ref = reference_values(scene, 2048);
+        ref = studies::reference_values(scene, 2048);
       } catch (const std::exception&) {
         ref.reset();  // no reference: the point is singular even at 2048 bits
       }
@@ -119,7 +125,7 @@ int extremes(const extremes_options& o) {
                                                               "set key outside right\nplot " + plot + "\n");
     if (!p.written) std::cout << w.name << ": no plot: " << p.why << "\n";
   }
-  std::cerr << "\r" << std::string(60, ' ') << "\r";
+  line.done();
   std::cout << "\nwrote " << o.out_dir << "/<sweep>.csv and .png\n";
   return 0;
 }

@@ -23,9 +23,10 @@
 
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/standard_scalars.hpp"
-#include "files.hpp"
+#include "flags.hpp"
+#include "write_whole.hpp"
 #include "plot.hpp"
-#include "motion.hpp"
+#include "motion_commands.hpp"
 
 namespace appell::cli {
 
@@ -43,33 +44,31 @@ std::string digits_text(double err) {
 }  // namespace
 
 std::string parse_horizon_arguments(int argc, char** argv, int first, horizon_options& o) {
-  for (int i = first; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--t-end" || a == "--every" || a == "--out" || a == "--scalars") {
-      if (i + 1 >= argc) return a + ": missing value";
-      const std::string v = argv[++i];
-      if (a == "--t-end") o.t_end = v;
-      else if (a == "--every") o.every = v;
-      else if (a == "--out") o.out = v;
-      else {
-        o.scalars.clear();
-        std::stringstream ss(v);
-        for (std::string s; std::getline(ss, s, ',');)
-          if (!s.empty()) o.scalars.push_back(s);
-        if (o.scalars.empty()) return "--scalars: expected a comma-separated list of point scalars";
-      }
-    } else if (const std::string e = parse_common_argument(a, o.scene, o.quiet); !e.empty()) {
-      return e;
-    }
+  command_line c;
+  if (std::string why = read_command_line("horizon", argc, argv, first, {"--t-end", "--every", "--out", "--scalars"},
+                                          {"--quiet"}, 1, c);
+      !why.empty())
+    return why;
+  if (std::string why = read_scene_argument(c, o.scene); !why.empty()) return why;
+  if (std::string why = read_out(c, o.out); !why.empty()) return why;
+  o.quiet = c.has("--quiet");
+  o.t_end = c.value_or("--t-end", "");
+  o.every = c.value_or("--every", "");
+  if (c.has("--scalars")) {
+    o.scalars.clear();
+    std::stringstream ss(c.value_or("--scalars", ""));
+    for (std::string s; std::getline(ss, s, ',');)
+      if (!s.empty()) o.scalars.push_back(s);
+    if (o.scalars.empty()) return "--scalars: expected a comma-separated list of point scalars";
   }
   return "";
 }
 
 int horizon(const horizon_options& given) {
   horizon_options o = given;
-  if (o.scene.empty()) throw input_error("horizon: SCENE is required");
+  if (o.scene.empty()) throw input_error("horizon: no scene given");
   if (o.t_end.empty()) throw input_error("--t-end: required (the horizon, a positive decimal)");
-  if (o.out.empty()) throw input_error("--out: required (the directory to write)");
+  if (o.out.empty()) throw input_error("horizon: --out DIR is required");
   const double t_end = positive_decimal("--t-end", o.t_end);
   for (const auto& s : o.scalars) {
     const auto infos = standard_scalar_infos();

@@ -1,4 +1,4 @@
-#include "linearize.hpp"
+#include "linearize_command.hpp"
 
 #include "linearize_report.hpp"
 

@@ -1,10 +1,10 @@
-// linearize_report<T> (src/cli/linearize.hpp): the report of linearize_scene<T>
+// linearize_report<T> (src/cli/linearize_command.hpp): the report of linearize_scene<T>
 // (computed in the library, one unit per scalar) as JSON or text.
 #pragma once
 
 #include <sstream>
 
-#include "linearize.hpp"
+#include "linearize_command.hpp"
 
 namespace appell::cli {
 

@@ -15,8 +15,8 @@
 #include "exit_status.hpp"
 #include "flags.hpp"
 #include "extremes.hpp"
-#include "linearize.hpp"
-#include "motion.hpp"
+#include "linearize_command.hpp"
+#include "motion_commands.hpp"
 #include "appell/io/urdf.hpp"
 #include "reference.hpp"
 #include "tradeoff.hpp"
@@ -28,12 +28,12 @@ using appell::cli::one_line;
 
 constexpr const char* usage_text =
     "usage: appell eval SCENE [--scalar NAME] [--bits N] [--format json|text]\n"
-    "       appell tradeoff SCENE [--out DIR] [--reps N]\n"
-    "       appell extremes [--out DIR]\n"
+    "       appell tradeoff SCENE [--reps N] [--quiet] --out DIR\n"
+    "       appell extremes [--quiet] --out DIR\n"
     "       appell linearize SCENE [--scalar NAME] [--bits N] [--format json|text]\n"
     "       appell reference SCENE (--states FILE | --box SPEC --n N [--seed S] [--digits D] | --trajectory T --every DT)\n"
     "                        [--scalar interval|mpfi]\n"
-    "                        [--bits N] [--inputs decimal|binary64] [--project TOL] --out DIR\n"
+    "                        [--bits N] [--inputs decimal|binary64] [--project TOL] [--quiet] --out DIR\n"
     "       appell score REFERENCE_DIR OTHER.csv [--min-digits D] [--plot FILE.png]\n"
     "       appell simulate SCENE --t-end T [--scalar NAME] [--bits N] [--order N] [--tol E] [--every DT]\n"
     "                       [--max-seconds S] [--quiet] --out DIR\n"
@@ -48,9 +48,9 @@ constexpr const char* usage_text =
     "  --bits N: precision of mpfr and mpfi (default 256): mpfi gets exactly N bits; mpfr the\n"
     "            smallest count >= N that Boost's decimal-digit precision can set (reported)\n"
     "  tradeoff: speed and accuracy of every scalar (median of N batches, default 200); writes\n"
-    "            DIR/tradeoff.csv and DIR/tradeoff.png (DIR default .)\n"
+    "            DIR/tradeoff.csv and DIR/tradeoff.png\n"
     "  extremes: the stability sweeps (singular angles, near-equal inertias, huge spins, tiny radii)\n"
-    "            in every scalar; writes DIR/<sweep>.csv and .png (DIR default data/extremes)\n"
+    "            in every scalar; writes DIR/<sweep>.csv and .png (the shipped study: --out data/extremes)\n"
     "  linearize: the linearized equations of a system file about its \"linearize\" section's motion,\n"
     "             their eigenvalues and the speeds where a real part crosses 0 (enclosed in interval, mpfi)\n"
     "  reference: certified values of a scene's results at many states (FILE: CSV, a header naming the\n"
@@ -73,7 +73,9 @@ constexpr const char* usage_text =
     "            and across processes with mpirun -np P appell-mpi validity ...\n"
     "  --max-seconds S: simulate and enclose stop after S seconds, their files written and marked\n"
     "                   incomplete (exit 3); the progress line estimates the time left\n"
-    "  --quiet: simulate, enclose and horizon print no progress line on stderr\n"
+    "  --quiet: no progress line on stderr (every command that shows one: tradeoff, extremes, reference,\n"
+    "           simulate, enclose, validity, horizon)\n"
+    "  a flag given twice, an unknown option or a missing value: exit 2, naming the flag\n"
     "  horizon: the long-horizon study: each point scalar in LIST (default double,long-double,dd,float128)\n"
     "           against a 256-bit reference (closed form where known); the error against time, Brouwer's\n"
     "           law as the goal line, digits kept per decade of periods; DIR/horizon.csv, summary.json,\n"
@@ -139,11 +141,12 @@ int main(int argc, char** argv) {
   }
   if (command == "extremes") {
     appell::cli::extremes_options x;
-    for (int i = 2; i < argc; ++i) {
-      const std::string a = argv[i];
-      if (a == "--out" && i + 1 < argc) x.out_dir = argv[++i];
-      else return usage("extremes: unknown argument '" + a + "'");
-    }
+    appell::cli::command_line c;
+    if (std::string why = appell::cli::read_command_line("extremes", argc, argv, 2, {"--out"}, {"--quiet"}, 0, c);
+        !why.empty())
+      return usage(why);
+    if (std::string why = appell::cli::read_out(c, x.out_dir); !why.empty()) return usage(why);
+    x.quiet = c.has("--quiet");
     try {
       return appell::cli::extremes(x);
     } catch (...) {
@@ -152,22 +155,19 @@ int main(int argc, char** argv) {
   }
   if (command == "tradeoff") {
     appell::cli::tradeoff_options t;
-    for (int i = 2; i < argc; ++i) {
-      const std::string a = argv[i];
-      if ((a == "--out" || a == "--reps") && i + 1 >= argc) return usage(a + ": missing value");
-      if (a == "--out") t.out_dir = argv[++i];
-      else if (a == "--reps") {
-        unsigned reps = 0;
-        if (const std::string why = appell::cli::parse_integer("--reps", argv[++i], 1, 9999999, reps); !why.empty()) {
-          std::cerr << "appell: " << why << "\n";
-          return 2;
-        }
-        t.reps = static_cast<int>(reps);
-      } else if (!a.empty() && a[0] == '-') return usage("unknown option '" + a + "'");
-      else if (t.scene.empty()) t.scene = a;
-      else return usage("more than one scene given");
+    appell::cli::command_line c;
+    if (std::string why = appell::cli::read_command_line("tradeoff", argc, argv, 2, {"--out", "--reps"}, {"--quiet"}, 1, c);
+        !why.empty())
+      return usage(why);
+    if (std::string why = appell::cli::read_scene_argument(c, t.scene); !why.empty()) return usage(why);
+    if (c.has("--reps")) {
+      unsigned reps = 0;
+      if (std::string why = appell::cli::parse_integer("--reps", c.value_or("--reps", ""), 1, 9999999, reps); !why.empty())
+        return usage(why);
+      t.reps = static_cast<int>(reps);
     }
-    if (t.scene.empty()) return usage("no scene given");
+    if (std::string why = appell::cli::read_out(c, t.out_dir); !why.empty()) return usage(why);
+    t.quiet = c.has("--quiet");
     try {
       return appell::cli::tradeoff(t);
     } catch (...) {
@@ -207,26 +207,24 @@ int main(int argc, char** argv) {
   }
   if (command == "score") {
     appell::cli::score_options sc;
-    std::vector<std::string> positional;
-    for (int i = 2; i < argc; ++i) {
-      const std::string a = argv[i];
-      if ((a == "--plot" || a == "--min-digits") && i + 1 >= argc) return usage(a + ": missing value");
-      if (a == "--plot") sc.plot = argv[++i];
-      else if (a == "--min-digits") {
-        const std::string d = argv[++i];
-        const auto dot = d.find('.');
-        const bool shaped = !d.empty() && d.size() <= 5 && d.find_first_not_of("0123456789.") == std::string::npos &&
-                            d.find_first_of("0123456789") != std::string::npos &&
-                            (dot == std::string::npos || d.find('.', dot + 1) == std::string::npos);
-        if (!shaped || std::stod(d) > 100)
-          return usage("--min-digits: expected a number of digits from 0 to 100, got '" + d + "'");
-        sc.min_digits = std::stod(d);
-      } else if (!a.empty() && a[0] == '-') return usage("score: unknown option '" + a + "'");
-      else positional.push_back(a);
+    appell::cli::command_line c;
+    if (std::string why = appell::cli::read_command_line("score", argc, argv, 2, {"--plot", "--min-digits"}, {}, 2, c);
+        !why.empty())
+      return usage(why);
+    if (c.has("--min-digits")) {
+      const std::string d = c.value_or("--min-digits", "");
+      const auto dot = d.find('.');
+      const bool shaped = !d.empty() && d.size() <= 5 && d.find_first_not_of("0123456789.") == std::string::npos &&
+                          d.find_first_of("0123456789") != std::string::npos &&
+                          (dot == std::string::npos || d.find('.', dot + 1) == std::string::npos);
+      if (!shaped || std::stod(d) > 100)
+        return usage("--min-digits: expected a number of digits from 0 to 100, got '" + d + "'");
+      sc.min_digits = std::stod(d);
     }
-    if (positional.size() != 2) return usage("score: expected REFERENCE_DIR and OTHER.csv");
-    sc.reference_dir = positional[0];
-    sc.other = positional[1];
+    sc.plot = c.value_or("--plot", "");
+    if (c.positional.size() != 2) return usage("score: expected REFERENCE_DIR and OTHER.csv");
+    sc.reference_dir = c.positional[0];
+    sc.other = c.positional[1];
     try {
       return appell::cli::score(sc);
     } catch (...) {
@@ -243,29 +241,16 @@ int main(int argc, char** argv) {
   }
   if (command != "eval" && command != "linearize") return usage("unknown command '" + command + "'");
   options o;
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&](const char* name) -> std::string {
-      if (i + 1 >= argc) throw appell::input_error(std::string(name) + ": missing value");
-      return argv[++i];
-    };
-    try {
-      if (a == "--scalar") o.scalar = value("--scalar");
-      else if (a == "--format") o.format = value("--format");
-      else if (a == "--bits") {
-        const std::string why = appell::cli::parse_bits(value("--bits"), o.bits);
-        if (!why.empty()) throw appell::input_error(why);
-      } else if (!a.empty() && a[0] == '-') return usage("unknown option '" + a + "'");
-      else if (o.scene.empty()) o.scene = a;
-      else return usage("more than one scene given");
-    } catch (...) {
-      return exit_status_of_current_exception();
-    }
+  {
+    appell::cli::command_line c;
+    if (std::string why = appell::cli::read_command_line(command, argc, argv, 2, {"--scalar", "--bits", "--format"}, {}, 1, c);
+        !why.empty())
+      return usage(why);
+    if (std::string why = appell::cli::read_scene_argument(c, o.scene); !why.empty()) return usage(why);
+    if (std::string why = appell::cli::read_scalar(c, o.scalar, o.bits); !why.empty()) return usage(why);
+    if (std::string why = appell::cli::read_format(c, o.format); !why.empty()) return usage(why);
   }
-  if (o.scene.empty()) return usage("no scene given");
   try {
-    if (o.format != "json" && o.format != "text")
-      throw appell::input_error("--format: expected json or text, got '" + o.format + "'");
     std::string out;
     {
       // QD writes its own complaints (npwr(0, 0), sin of a huge argument) to

@@ -1,4 +1,4 @@
-#include "motion.hpp"
+#include "motion_commands.hpp"
 
 #include "flags.hpp"
 
@@ -23,23 +23,22 @@ double positive_decimal(const std::string& flag, const std::string& text) {
   return v;
 }
 
-std::string parse_common_argument(const std::string& a, std::string& scene, bool& quiet) {
-  if (a == "--quiet") quiet = true;
-  else if (!a.empty() && a[0] == '-') return "unknown option " + a;
-  else if (scene.empty()) scene = a;
-  else return "unexpected argument '" + a + "'";
-  return "";
-}
-
 std::string parse_motion_arguments(int argc, char** argv, int first, motion_options& o) {
-  for (int i = first; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&](std::string& into) {
-      if (i + 1 >= argc) return false;
-      into = argv[++i];
-      return true;
-    };
-    std::string v;
+  command_line c;
+  if (std::string why = read_command_line(o.command, argc, argv, first,
+                                          {"--t-end", "--every", "--out", "--scalar", "--bits", "--order", "--tol",
+                                           "--max-width", "--max-seconds", "--locate", "--vary", "--resolution", "--jobs",
+                                           "--mu"},
+                                          {"--quiet", "--until-contact-fails"}, 1, c);
+      !why.empty())
+    return why;
+  if (std::string why = read_scene_argument(c, o.scene); !why.empty()) return why;
+  if (std::string why = read_scalar(c, o.scalar, o.bits); !why.empty()) return why;
+  o.quiet = c.has("--quiet");
+  o.until_contact_fails = c.has("--until-contact-fails");
+  o.t_end = c.value_or("--t-end", "");
+  o.every = c.value_or("--every", "");
+  for (const auto& [a, v] : c.values) {
     // The flag's value as a positive decimal, or why not.
     auto positive = [&](std::optional<double>& into) -> std::string {
       try {
@@ -49,77 +48,63 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
       }
       return "";
     };
-    if (a == "--t-end" || a == "--every" || a == "--out" || a == "--scalar" || a == "--bits" || a == "--order" ||
-        a == "--tol" || a == "--max-width" || a == "--max-seconds" || a == "--locate" || a == "--vary" ||
-        a == "--resolution" || a == "--jobs" || a == "--mu") {
-      if (!value(v)) return a + ": missing value";
-      if (a == "--t-end") o.t_end = v;
-      else if (a == "--every") o.every = v;
-      else if (a == "--out") o.out = v;
-      else if (a == "--scalar") o.scalar = v;
-      else if (a == "--bits") {
-        if (std::string why = parse_bits(v, o.bits); !why.empty()) return why;
-      } else if (a == "--order") {
-        unsigned n = 0;
-        if (std::string why = parse_integer("--order", v, 2, 60, n); !why.empty()) return why;
-        o.order = static_cast<int>(n);
-      } else if (a == "--jobs") {
-        unsigned n = 0;
-        if (std::string why = parse_integer("--jobs", v, 1, 1024, n); !why.empty()) return why;
-        o.jobs = static_cast<int>(n);
-      } else if (a == "--tol") {
-        if (std::string why = positive(o.tol); !why.empty()) return why;
-        // A relative tolerance of 1 or more lets a step's error be as large as the state itself.
-        if (*o.tol >= 1) return "--tol: expected a positive decimal below 1 (a relative error per step), got '" + v + "'";
-      } else if (a == "--vary") {
-        const auto eq = v.find('='), colon = v.find(':', eq == std::string::npos ? 0 : eq);
-        if (eq == std::string::npos || eq == 0 || colon == std::string::npos)
-          return "--vary: expected FIELD=lo:hi, got '" + v + "'";
-        o.vary_field = v.substr(0, eq);
-        o.vary_lo = v.substr(eq + 1, colon - eq - 1);
-        o.vary_hi = v.substr(colon + 1);
-        for (const std::string* d : {&o.vary_lo, &o.vary_hi}) {
-          try {
-            (void)decimal_sign_of_sum({{1, *d}});
-          } catch (const std::exception&) {
-            return "--vary: expected FIELD=lo:hi with decimal bounds, got '" + v + "'";
-          }
-        }
-        if (decimal_sign_of_sum({{1, o.vary_hi}, {-1, o.vary_lo}}) <= 0)
-          return "--vary: the range's lower bound must be below its upper bound, got '" + v + "'";
-      } else if (a == "--mu") {
-        bool nonnegative = false;
+    if (a == "--order") {
+      unsigned n = 0;
+      if (std::string why = parse_integer("--order", v, 2, 60, n); !why.empty()) return why;
+      o.order = static_cast<int>(n);
+    } else if (a == "--jobs") {
+      unsigned n = 0;
+      if (std::string why = parse_integer("--jobs", v, 1, 1024, n); !why.empty()) return why;
+      o.jobs = static_cast<int>(n);
+    } else if (a == "--tol") {
+      if (std::string why = positive(o.tol); !why.empty()) return why;
+      // A relative tolerance of 1 or more lets a step's error be as large as the state itself.
+      if (*o.tol >= 1) return "--tol: expected a positive decimal below 1 (a relative error per step), got '" + v + "'";
+    } else if (a == "--vary") {
+      const auto eq = v.find('='), colon = v.find(':', eq == std::string::npos ? 0 : eq);
+      if (eq == std::string::npos || eq == 0 || colon == std::string::npos)
+        return "--vary: expected FIELD=lo:hi, got '" + v + "'";
+      o.vary_field = v.substr(0, eq);
+      o.vary_lo = v.substr(eq + 1, colon - eq - 1);
+      o.vary_hi = v.substr(colon + 1);
+      for (const std::string* d : {&o.vary_lo, &o.vary_hi}) {
         try {
-          nonnegative = decimal_sign_of_sum({{1, v}}) >= 0;
+          (void)decimal_sign_of_sum({{1, *d}});
         } catch (const std::exception&) {
+          return "--vary: expected FIELD=lo:hi with decimal bounds, got '" + v + "'";
         }
-        if (!nonnegative) return "--mu: expected a decimal >= 0 (every contact's friction coefficient), got '" + printable(v) + "'";
-        o.mu = v;
-      } else if (a == "--resolution") {
-        if (std::string why = positive(o.resolution); !why.empty()) return why;
-      } else if (a == "--locate") {
-        if (std::string why = positive(o.locate); !why.empty()) return why;
-      } else if (a == "--max-seconds") {
-        if (std::string why = positive(o.max_seconds); !why.empty()) return why;
-      } else {
-        std::optional<double> width;
-        if (std::string why = positive(width); !why.empty()) return why;
-        o.max_width = *width;
       }
-    } else if (a == "--until-contact-fails") {
-      o.until_contact_fails = true;
-    } else if (const std::string e = parse_common_argument(a, o.scene, o.quiet); !e.empty()) {
-      return e;
+      if (decimal_sign_of_sum({{1, o.vary_hi}, {-1, o.vary_lo}}) <= 0)
+        return "--vary: the range's lower bound must be below its upper bound, got '" + v + "'";
+    } else if (a == "--mu") {
+      bool nonnegative = false;
+      try {
+        nonnegative = decimal_sign_of_sum({{1, v}}) >= 0;
+      } catch (const std::exception&) {
+      }
+      if (!nonnegative) return "--mu: expected a decimal >= 0 (every contact's friction coefficient), got '" + printable(v) + "'";
+      o.mu = v;
+    } else if (a == "--resolution") {
+      if (std::string why = positive(o.resolution); !why.empty()) return why;
+    } else if (a == "--locate") {
+      if (std::string why = positive(o.locate); !why.empty()) return why;
+    } else if (a == "--max-seconds") {
+      if (std::string why = positive(o.max_seconds); !why.empty()) return why;
+    } else if (a == "--max-width") {
+      std::optional<double> width;
+      if (std::string why = positive(width); !why.empty()) return why;
+      o.max_width = *width;
     }
   }
-  return "";
+  // a required flag last: a wrong value is named before a missing flag
+  return read_out(c, o.out);
 }
 
 int motion(const motion_options& given) {
   motion_options o = given;
-  if (o.scene.empty()) throw input_error(o.command + ": SCENE is required");
+  if (o.scene.empty()) throw input_error(o.command + ": no scene given");
   if (o.t_end.empty()) throw input_error("--t-end: required (the horizon, a positive decimal)");
-  if (o.out.empty()) throw input_error("--out: required (the directory to write)");
+  if (o.out.empty()) throw input_error(o.command + ": --out DIR is required");
   const double horizon = positive_decimal("--t-end", o.t_end);
   if (o.command == "simulate") {
     if (o.every.empty()) {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "appell_models.hpp"
-#include "motion.hpp"
+#include "motion_commands.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 
 namespace appell::cli {

@@ -9,72 +9,46 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "files.hpp"
-#include "motion.hpp"
-#include "plot.hpp"
+#include "motion_commands.hpp"
 
 #include "appell/io/model_motion.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/taylor.hpp"
 #include "contact_track.hpp"
+#include "motion_output.hpp"
 #include "pieces.hpp"
+#include "progress.hpp"
 
 namespace appell::cli {
 
 namespace motion_detail {
 
-/// "\rsimulate: t = 3.1 of 10 (31%), about 2 min 5 s left" on stderr, from one second on,
-/// twice a second at most (the time left: the elapsed time scaled by the fraction of the
-/// horizon still to go).  With max_seconds, the call past that much time throws
-/// ode::run_stopped, which the motion commands turn into an incomplete run with its files.
+/// The motion commands' progress (progress.hpp): "simulate: t = 3.1 of 10 (31%), about 2 min
+/// 5 s left".  With max_seconds, the call past that much time throws ode::run_stopped, which the
+/// motion commands turn into an incomplete run with its files.
 class progress_meter {
  public:
   progress_meter(std::string what, double horizon, bool quiet, std::optional<double> max_seconds = {})
-      : what_(std::move(what)), horizon_(horizon), quiet_(quiet), max_seconds_(max_seconds),
-        start_(std::chrono::steady_clock::now()), last_(start_) {}
-  ~progress_meter() {
-    if (shown_) std::cerr << "\n";
-  }
+      : line_(std::move(what), quiet), horizon_(horizon), max_seconds_(max_seconds) {}
   void operator()(double fraction) {
-    const auto now = std::chrono::steady_clock::now();
-    const double elapsed = std::chrono::duration<double>(now - start_).count();
-    if (max_seconds_ && elapsed >= *max_seconds_) {
+    if (max_seconds_ && line_.elapsed() >= *max_seconds_) {
       char why[160];
       std::snprintf(why, sizeof why, "--max-seconds %.6g reached at t = %.6g", *max_seconds_, fraction * horizon_);
       throw ode::run_stopped(why);
     }
-    if (quiet_) return;
-    if (elapsed < 1 || now - last_ < std::chrono::milliseconds(500)) return;
-    last_ = now;
-    shown_ = true;
-    std::string left;
-    if (fraction > 0 && fraction < 1) {
-      const double s = elapsed * (1 - fraction) / fraction;
-      char text[64];
-      if (s < 60) std::snprintf(text, sizeof text, ", about %.0f s left", s);
-      else if (s < 3600) std::snprintf(text, sizeof text, ", about %.0f min %.0f s left", std::floor(s / 60), std::fmod(s, 60.0));
-      else std::snprintf(text, sizeof text, ", about %.0f h %.0f min left", std::floor(s / 3600), std::floor(std::fmod(s, 3600.0) / 60));
-      left = text;
-    }
-    char line[240];
-    std::snprintf(line, sizeof line, "\r%s: t = %.6g of %.6g (%.0f%%)%s   ", what_.c_str(), fraction * horizon_, horizon_,
-                  100 * fraction, left.c_str());
-    std::cerr << line << std::flush;
+    if (!line_.due()) return;
+    char detail[96];
+    std::snprintf(detail, sizeof detail, "t = %.6g of %.6g", fraction * horizon_, horizon_);
+    line_.show(fraction, detail);
   }
 
  private:
-  std::string what_;
+  progress line_;
   double horizon_;
-  bool quiet_;
   std::optional<double> max_seconds_;
-  std::chrono::steady_clock::time_point start_, last_;
-  bool shown_ = false;
 };
 
 /// The state as the scene gives it.  A problem that integrates other variables (the heavy top
@@ -101,16 +75,26 @@ void column_names(const std::vector<ode::named_values<S>>& group, const std::str
   }
 }
 
-/// The precision asked for (--bits), recorded before the evaluation scope raises mpfi's working
-/// precision by its guard bits.
-inline thread_local unsigned requested_bits = 0;
 
-/// "113 bits" or "113 bits, working precision 128".
+/// The scalar's bits before the evaluation scope raises mpfi's working precision by its guard
+/// bits (set by run_model_motion): what the run reports as its bits, as `appell eval` does.
+inline thread_local unsigned requested_bits = 0;
+/// mp_precision_bits() at the same moment: the --bits asked for (runtime-precision scalars).
+inline thread_local unsigned asked_bits = 0;
+
+/// The run's scalar and settings, for its report (motion_output.hpp): "bits" the bits used and
+/// "bits_requested" where --bits asked for another count, as `appell eval` reports them.
 template <Scalar T>
-std::string bits_text() {
-  const unsigned working = scalar_traits<T>::precision_bits();
-  const unsigned asked = requested_bits ? requested_bits : working;
-  return std::to_string(asked) + " bits" + (asked != working ? ", working precision " + std::to_string(working) : "");
+run_identity identity_of(const scene_input& scene, int order, double tol) {
+  run_identity id;
+  id.model = scene.model;
+  id.scalar = scalar_traits<T>::name;
+  id.bits = requested_bits ? requested_bits : scalar_traits<T>::precision_bits();
+  if constexpr (scalar_traits<T>::runtime_precision)
+    if (asked_bits && id.bits != asked_bits) id.bits_requested = asked_bits;
+  id.order = order;
+  id.tol = tol;
+  return id;
 }
 
 template <Scalar T>
@@ -169,97 +153,50 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
   }
   column_names(rows.front().results, "", header);
   column_names(rows.front().invariants, "", header);
+  // The report (motion_output.hpp): every number as text, or a double for the plot.
+  simulate_report r;
+  r.id = identity_of<T>(scene, order, tol);
+  r.failure = failure;
+  r.header = header;
   std::ostringstream csv;
-  for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << header[i];
-  csv << "\n";
   // drift data: t and |I(t) - I(0)| / max(|I(0)|, 1e-300) per invariant (|I(t)| for one that is 0 in truth)
   std::ostringstream dat;
-  nlohmann::json inv = nlohmann::json::array();
   std::vector<double> worst(rows.front().invariants.size(), 0.0);
-  for (const auto& r : rows) {
-    csv << to_string(r.t);
-    for (std::size_t i = 0; i < names.size(); ++i) csv << "," << to_string(r.x(static_cast<Eigen::Index>(i)));
-    for (const auto& g : r.results)
+  for (const auto& row : rows) {
+    csv << to_string(row.t);
+    for (std::size_t i = 0; i < names.size(); ++i) csv << "," << to_string(row.x(static_cast<Eigen::Index>(i)));
+    for (const auto& g : row.results)
       for (const T& v : g.values) csv << "," << to_string(v);
-    for (const auto& g : r.invariants)
+    for (const auto& g : row.invariants)
       for (const T& v : g.values) csv << "," << to_string(v);
     csv << "\n";
-    dat << approx_double(r.t);
-    for (std::size_t q = 0; q < r.invariants.size(); ++q) {
+    dat << approx_double(row.t);
+    for (std::size_t q = 0; q < row.invariants.size(); ++q) {
       using std::abs;
       const T i0 = rows.front().invariants[q].values[0];
-      const double d = approx_double(T(abs(T(r.invariants[q].values[0] - i0))));
+      const double d = approx_double(T(abs(T(row.invariants[q].values[0] - i0))));
       const bool absolute = rows.front().invariants[q].zero_in_truth;
-      const double rel = absolute ? std::fabs(approx_double(r.invariants[q].values[0]))
+      const double rel = absolute ? std::fabs(approx_double(row.invariants[q].values[0]))
                                   : d / std::max(std::fabs(approx_double(i0)), 1e-300);
       worst[q] = std::max(worst[q], rel);
       dat << " " << std::max(rel, 1e-40);
     }
     dat << "\n";
   }
+  r.rows = csv.str();
+  r.drift = dat.str();
   for (std::size_t q = 0; q < worst.size(); ++q)
-    inv.push_back({{"name", rows.front().invariants[q].name},
-                   {"initial", to_string(rows.front().invariants[q].values[0])},
-                   {"final", to_string(rows.back().invariants[q].values[0])},
-                   {rows.front().invariants[q].zero_in_truth ? "max_abs_value" : "max_relative_drift", worst[q]}});
-  nlohmann::json final_state = nlohmann::json::object();
-  for (std::size_t i = 0; i < names.size(); ++i) final_state[names[i]] = to_string(rows.back().x(static_cast<Eigen::Index>(i)));
-  nlohmann::json summary = {{"command", "simulate"},
-                            {"scene", o.scene},
-                            {"model", scene.model},
-                            {"scalar", scalar_traits<T>::name},
-                            {"bits", requested_bits ? requested_bits : scalar_traits<T>::precision_bits()},
-                            {"working_bits", scalar_traits<T>::precision_bits()},
-                            {"order", order},
-                            {"tol", tol},
-                            {"t_end", o.t_end},
-                            {"every", o.every},
-                            {"complete", failure.empty()},
-                            {"reason", failure},
-                            {"t_reached", approx_double(rows.back().t)},
-                            {"steps", failure.empty() ? nlohmann::json(st.steps) : nlohmann::json()},
-                            {"seconds", st.seconds},
-                            {"min_step", failure.empty() ? nlohmann::json(st.min_step) : nlohmann::json()},
-                            {"max_step", failure.empty() ? nlohmann::json(st.max_step) : nlohmann::json()},
-                            {"final_state", final_state},
-                            {"invariants", inv}};
-  const std::filesystem::path dir(o.out);
-  std::filesystem::create_directories(dir);
-  write_whole(dir, "trajectory.csv", csv.str());
-  write_whole(dir, "summary.json", summary.dump(2) + "\n");
-  std::string plotted;
-  if (!worst.empty()) {
-    const std::filesystem::path png = dir / "drift.png";
-    std::string script = datablock("drift", dat.str()) + "set logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'relative drift |I(t) - I(0)| / |I(0)|, or |I(t)| where I = 0'\n"
-                         "set title '" + scene.model + ", " + scalar_traits<T>::name + ", order " + std::to_string(order) +
-                         "'\nset grid\nset key below\nplot ";
-    for (std::size_t q = 0; q < worst.size(); ++q)
-      script += std::string(q ? ", " : "") + "$drift using 1:" + std::to_string(q + 2) + " with lines title " +
-                gnuplot_quoted(rows.front().invariants[q].name +
-                               (rows.front().invariants[q].zero_in_truth ? " (|I|, 0 in truth)" : ""));
-    plotted = plot_note(render_png(png, script + "\n", 900, 500), png);
-  }
-  std::ostringstream out;
-  out << "simulate " << scene.model << " in " << scalar_traits<T>::name << " (" << bits_text<T>() << "), order " << order
-      << ", tol " << tol << ": ";
-  if (failure.empty()) out << st.steps << " steps to t = " << o.t_end;
-  else out << "stopped before t = " << o.t_end;
-  out << " in " << st.seconds << " s\n";
-  if (!failure.empty())
-    out << "  INCOMPLETE: " << failure << "; written up to t = " << approx_double(rows.back().t) << "\n";
-  for (const auto& j : inv) {
-    if (j.contains("max_abs_value"))
-      out << "  " << j["name"].get<std::string>() << ": 0 in truth; largest |value| " << j["max_abs_value"].get<double>() << "\n";
-    else
-      out << "  " << j["name"].get<std::string>() << ": largest relative drift " << j["max_relative_drift"].get<double>() << "\n";
-  }
-  out << "wrote " << (dir / "trajectory.csv").string() << ", summary.json" << plotted << "\n";
-  return {failure.empty() ? 0 : 3, out.str()};
+    r.invariants.push_back({rows.front().invariants[q].name, to_string(rows.front().invariants[q].values[0]),
+                            to_string(rows.back().invariants[q].values[0]), rows.front().invariants[q].zero_in_truth, worst[q]});
+  for (std::size_t i = 0; i < names.size(); ++i) r.final_state.emplace_back(names[i], to_string(rows.back().x(static_cast<Eigen::Index>(i))));
+  r.t_reached = approx_double(rows.back().t);
+  r.steps = st.steps;
+  r.seconds = st.seconds;
+  r.min_step = st.min_step;
+  r.max_step = st.max_step;
+  return write_simulate(r, o);
 }
 
-/// DIR/contacts.png from contacts.csv's rows: per contact, the normal force over each step
-/// (its bounds) and, with mu, the margin mu - required mu (or the required mu without it);
-/// a margin below 0, or a normal force below 0, is a contact that fails.
 /// The contacts a motion judges: each one's name and mu, --mu in place of the scene's (empty:
 /// the model has none).
 template <class P>
@@ -269,61 +206,6 @@ std::vector<std::pair<std::string, std::string>> contacts_to_judge(const P& prob
   if (o.mu)
     for (auto& c : contacts) c.second = *o.mu;
   return contacts;
-}
-
-template <Scalar I>
-plot_outcome plot_contacts(const std::filesystem::path& dir, const std::string& csv, const std::vector<contact_track<I>>& tracks,
-                   const std::string& title) {
-  std::ostringstream dat;
-  std::string force_plot, margin_plot;
-  bool any_mu = false;
-  for (std::size_t k = 0; k < tracks.size(); ++k) {
-    const auto& c = tracks[k];
-    const double mu = c.mu_text.empty() ? 0.0 : from_decimal<double>(c.mu_text);
-    any_mu = any_mu || !c.mu_text.empty();
-    std::istringstream in(csv);
-    std::string line;
-    while (std::getline(in, line)) {
-      std::vector<std::string> f;
-      std::stringstream ls(line);
-      for (std::string x; std::getline(ls, x, ',');) f.push_back(x);
-      if (f.size() < 10 || f[0] != c.name) continue;
-      const double t = (std::stod(f[1]) + std::stod(f[2])) / 2;
-      dat << t << " " << f[3] << " " << f[4];
-      if (!f[7].empty() && !f[8].empty()) {
-        const double lo = std::stod(f[7]), hi = std::stod(f[8]);
-        if (c.mu_text.empty()) dat << " " << lo << " " << hi << "\n";
-        else dat << " " << mu - hi << " " << mu - lo << "\n";
-      } else {
-        dat << " NaN NaN\n";
-      }
-    }
-    dat << "\n\n";
-    const std::string idx = std::to_string(k);
-    force_plot += std::string(k ? ", " : "") + "$contacts index " + idx + " using 1:2:3 with filledcurves title " +
-                  gnuplot_quoted(c.name + ": normal force (enclosure over each step)");
-    margin_plot += std::string(k ? ", " : "") + "$contacts index " + idx + " using 1:4:5 with filledcurves title " +
-                   gnuplot_quoted(c.name + (c.mu_text.empty() ? ": required mu" : ": mu - required mu (mu = " + c.mu_text + ")"));
-  }
-  // each failing contact's first failure: a line at its time, labelled at the top of the force
-  // panel and at the foot of the margin panel (where the margin, still positive, leaves room)
-  std::string marks, marks_low;
-  for (const auto& c : tracks)
-    if (c.verdict() == contact_verdict::fails && c.hi) {
-      const double t = approx_double(*c.hi);
-      const std::string line = "set arrow from " + std::to_string(t) + ", graph 0 to " + std::to_string(t) +
-                               ", graph 1 nohead lc rgb 'red' dt 2\n";
-      const std::string text = "set label '" + c.name + " fails by t = " + upper_string(*c.hi) + "' at " + std::to_string(t);
-      marks += line + text + ", graph 0.92 right offset -0.5,0 tc rgb 'red'\n";
-      marks_low += line + text + ", graph 0.08 right offset -0.5,0 tc rgb 'red'\n";
-    }
-  return render_png(dir / "contacts.png",
-                    datablock("contacts", dat.str()) + "set multiplot layout 2,1 title " +
-                        gnuplot_quoted(title + ": can the contacts hold?") +
-                        "\nset grid\nset key below\nset xlabel 't'\nset ylabel 'N'\nset xzeroaxis lw 2\n" + marks + "plot " +
-                        force_plot + "\nunset arrow\nunset label\n" + marks_low + "set ylabel '" +
-                        (any_mu ? "mu - required mu" : "required mu") + "'\nplot " + margin_plot + "\nunset multiplot\n",
-                    900, 700);
 }
 
 template <Scalar I>
@@ -444,94 +326,44 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
     c.finish(x0);
     if (o.locate) c.locate(*o.locate, run, at);
   }
-  nlohmann::json contacts_json = nlohmann::json::object();
-  std::ostringstream contact_lines;
+  // The report (motion_output.hpp): every number as text, or a double for the plots.
+  enclose_report r;
+  r.id = identity_of<I>(scene, order, tol);
   for (const auto& c : tracks) {
-    nlohmann::json j = {{"verdict", verdict_name(c.verdict())}, {"refined_steps", c.refined}};
-    if (!c.mu_text.empty()) j["mu"] = c.mu_text;
-    if (c.least_normal) j["least_normal_force"] = lower_string(*c.least_normal);
-    j["largest_required_mu"] = c.largest_mu && !c.mu_unbounded ? nlohmann::json(upper_string(*c.largest_mu)) : nlohmann::json();
-    contact_lines << "  contact " << c.name << ": ";
-    if (c.verdict() == contact_verdict::fails) {
-      j["first_failure"] = {{"from", lower_string(c.lo)}, {"to", upper_string(*c.hi)}};
-      if (!c.located.empty()) j["located"] = c.located;
-      contact_lines << "FAILS: the first failure lies in [" << lower_string(c.lo) << ", " << upper_string(*c.hi) << "]"
-                    << (c.located.empty() ? "" : " (" + c.located + ")");
-    } else if (c.verdict() == contact_verdict::undecided) {
-      j["undecided_from"] = lower_string(c.lo);
-      contact_lines << "holds up to t = " << lower_string(c.lo) << ", undecided from there";
-    } else {
-      j["holds_until"] = upper_string(c.lo);
-      contact_lines << "holds up to t = " << upper_string(c.lo);
+    contact_report k;
+    k.name = c.name;
+    k.mu_text = c.mu_text;
+    k.verdict = verdict_name(c.verdict());
+    k.refined = c.refined;
+    if (c.least_normal) k.least_normal = lower_string(*c.least_normal);
+    if (c.largest_mu && !c.mu_unbounded) k.largest_mu = upper_string(*c.largest_mu);
+    k.holding_lo = lower_string(c.lo);
+    k.holding_hi = upper_string(c.lo);
+    if (c.hi) {
+      k.fails_by = upper_string(*c.hi);
+      k.fails_by_t = approx_double(*c.hi);
     }
-    if (c.least_normal) contact_lines << "; least normal force >= " << lower_string(*c.least_normal);
-    if (c.largest_mu && !c.mu_unbounded) contact_lines << "; required mu <= " << upper_string(*c.largest_mu);
-    if (!c.mu_text.empty()) contact_lines << " (mu = " << c.mu_text << ")";
-    contact_lines << "\n";
-    contacts_json[c.name] = j;
+    k.located = c.located;
+    r.contacts.push_back(std::move(k));
   }
-  std::ostringstream csv;
-  for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << header[i];
-  for (const auto& h : group_header) csv << "," << h;
-  csv << "\n" << body.str();
-  nlohmann::json final_state = nlohmann::json::object();
-  for (std::size_t i = 0; i < names.size(); ++i) final_state[names[i]] = to_string(last_end(static_cast<Eigen::Index>(i)));
-  nlohmann::json widths = nlohmann::json::object();
-  for (std::size_t i = 0; i < value_names.size(); ++i) widths[value_names[i]] = worst_over[i];
-  const double final_width = ode::detail::max_width(last_end);
-  nlohmann::json summary = {{"command", "enclose"},
-                            {"scene", o.scene},
-                            {"model", scene.model},
-                            {"scalar", scalar_traits<I>::name},
-                            {"bits", requested_bits ? requested_bits : scalar_traits<I>::precision_bits()},
-                            {"working_bits", scalar_traits<I>::precision_bits()},
-                            {"order", order},
-                            {"tol", tol},
-                            {"t_end", o.t_end},
-                            {"complete", st.complete},
-                            {"reason", st.reason},
-                            {"t_reached", st.t_reached},
-                            {"steps", st.steps},
-                            {"rejected_steps", st.rejected},
-                            {"seconds", st.seconds},
-                            {"final_state", final_state},
-                            {"final_largest_width", final_width},
-                            {"largest_width_over_a_step", widths}};
-  if (!tracks.empty()) summary["contacts"] = contacts_json;
-  if (!contact_stop.empty()) summary["stopped_at_contact_failure"] = true;
-  const std::filesystem::path dir(o.out);
-  std::filesystem::create_directories(dir);
-  write_whole(dir, "steps.csv", csv.str());
-  if (!tracks.empty())
-    write_whole(dir, "contacts.csv",
-                "contact,t0,t1,normal_force_lo,normal_force_hi,tangential_force_lo,tangential_force_hi,required_mu_lo,"
-                "required_mu_hi,verdict\n" + contact_csv.str());
-  write_whole(dir, "summary.json", summary.dump(2) + "\n");
-  std::string plotted =
-      plot_note(render_png(dir / "widths.png",
-                           datablock("widths", dat.str()) + "set logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'width'\nset title " +
-                               gnuplot_quoted(scene.model + ", " + scalar_traits<I>::name + " (" + bits_text<I>() + "), order " +
-                                              std::to_string(order)) +
-                               "\nset grid\nset key below\nplot $widths using 1:2 with lines title 'state at each step end (largest "
-                               "width)', '' using 1:3 with lines title 'invariants over each whole step (largest width; "
-                               "constant in truth)'\n",
-                           900, 500),
-                dir / "widths.png");
-  if (!tracks.empty())
-    plotted += plot_note(plot_contacts(dir, contact_csv.str(), tracks, scene.model + ", " + scalar_traits<I>::name),
-                         dir / "contacts.png");
-  std::ostringstream out;
-  out << "enclose " << scene.model << " in " << scalar_traits<I>::name << " (" << bits_text<I>() << "), order " << order << ": " << st.steps << " steps (" << st.rejected << " rejected) in " << st.seconds
-      << " s\n";
-  if (st.complete) out << "  certified up to t = " << o.t_end << "; the state's largest width there " << final_width << "\n";
-  else if (!contact_stop.empty()) out << "  stopped: " << contact_stop << "\n";
-  else out << "  INCOMPLETE: " << st.reason << "; enclosed up to t = " << st.t_reached << "\n";
-  out << contact_lines.str();
-  for (std::size_t i = 0; i < value_names.size(); ++i)
-    out << "  " << value_names[i] << ": enclosed over every whole step; widest " << worst_over[i]
-        << (i < result_values ? " (its variation over the step included)\n" : " (constant in truth)\n");
-  out << "wrote " << (dir / "steps.csv").string() << (tracks.empty() ? "" : ", contacts.csv") << ", summary.json" << plotted << "\n";
-  return {st.complete || !contact_stop.empty() ? 0 : 3, out.str()};
+  r.header = header;
+  r.header.insert(r.header.end(), group_header.begin(), group_header.end());
+  r.rows = body.str();
+  r.widths = dat.str();
+  r.value_names = value_names;
+  r.result_values = result_values;
+  r.widest_over = worst_over;
+  for (std::size_t i = 0; i < names.size(); ++i) r.final_state.emplace_back(names[i], to_string(last_end(static_cast<Eigen::Index>(i))));
+  r.final_width = ode::detail::max_width(last_end);
+  r.contact_rows = contact_csv.str();
+  r.contact_stop = contact_stop;
+  r.complete = st.complete;
+  r.reason = st.reason;
+  r.t_reached = st.t_reached;
+  r.steps = st.steps;
+  r.rejected = st.rejected;
+  r.seconds = st.seconds;
+  return write_enclose(r, o);
 }
 
 /// `appell validity`: over which range of one field do the scene's contacts hold on [0, T]?
@@ -704,75 +536,16 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
       return {0, ""};
     }
     progress_meter meter("validity", 1.0, o.quiet);
-    const pieces_outcome run = run_pieces(run_piece, net, [&](double f) { meter(f); });
-    const std::vector<piece_report>& done = run.done;
-    // The pieces, and the ranges of each verdict (adjacent pieces merged).
-    std::ostringstream csv, dat[3];
-    csv << "lo,hi,verdict,holds_until,first_failure_from,first_failure_to,steps,seconds\n";
-    nlohmann::json ranges = {{"holds", nlohmann::json::array()}, {"fails", nlohmann::json::array()}, {"undecided", nlohmann::json::array()}};
-    std::string last;
-    double piece_seconds = 0;
-    for (const piece_report& p : done) {
-      const std::string& v = p.verdict;
-      csv << p.lo << "," << p.hi << "," << v << "," << p.holds_until << "," << p.fail_from << "," << p.fail_to << "," << p.steps
-          << "," << p.seconds << "\n";
-      nlohmann::json& list = ranges[v];
-      if (v == last && !list.empty()) list.back()[1] = p.hi;
-      else list.push_back({p.lo, p.hi});
-      last = v;
-      piece_seconds += p.seconds;
-      const int k = v == "holds" ? 0 : v == "fails" ? 1 : 2;
-      const double x = (p.x_lo + p.x_hi) / 2, dx = (p.x_hi - p.x_lo) / 2;
-      dat[k] << x << " " << (p.y0 + p.y1) / 2 << " " << x - dx << " " << x + dx << " " << p.y0 << " " << p.y1 << "\n";
-    }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    const int workers = std::max(1, net.threads) + (net.remote ? net.remote->workers() : 0);
-    nlohmann::json summary = {{"command", "validity"},
-                              {"scene", o.scene},
-                              {"model", scene.model},
-                              {"scalar", scalar_traits<I>::name},
-                              {"bits", requested_bits ? requested_bits : scalar_traits<I>::precision_bits()},
-                              {"field", o.vary_field},
-                              {"range", {o.vary_lo, o.vary_hi}},
-                              {"t_end", o.t_end},
-                              {"resolution", resolution},
-                              {"pieces", done.size()},
-                              {"complete", run.stopped.empty()},
-                              {"reason", run.stopped},
-                              {"pieces_not_run", run.not_run},
-                              {"ranges", ranges},
-                              {"threads", std::max(1, net.threads)},
-                              {"processes", net.remote ? net.remote->workers() + 1 : 1},
-                              {"seconds", seconds},
-                              {"seconds_per_piece", done.empty() ? 0.0 : piece_seconds / static_cast<double>(done.size())}};
-    const std::filesystem::path dir(o.out);
-    std::filesystem::create_directories(dir);
-    write_whole(dir, "validity.csv", csv.str());
-    write_whole(dir, "summary.json", summary.dump(2) + "\n");
-    std::string plotted;
-    {
-      const std::string f = "$pieces";
-      const std::string data = datablock("pieces", dat[0].str() + "\n\n" + dat[1].str() + "\n\n" + dat[2].str());
-      const plot_outcome p = render_png(dir / "validity.png", data + "set title " +
-           gnuplot_quoted(o.scene + ": can the contacts hold on [0, " + o.t_end + "]? (" + scalar_traits<I>::name + ")") +
-           "\nset xlabel " + gnuplot_quoted(o.vary_field) + "\nset ylabel 't'\nset yrange [0:" + std::to_string(T * 1.1) +
-           "]\nset grid\nset key below\nset style fill solid 0.5\nplot " + f +
-           " index 0 using 1:2:3:4:5:6 with boxxyerror lc rgb 'forest-green' title 'holds over [0, T] (proved)', " + f +
-           " index 1 using 1:2:3:4:5:6 with boxxyerror lc rgb 'red' title 'fails (proved): the first failure lies within the box', " + f +
-           " index 2 using 1:2:3:4:5:6 with boxxyerror lc rgb 'gray' title 'undecided at the resolution (holds below the box)'\n",
-           900, 500);
-      plotted = plot_note(p, dir / "validity.png");
-    }
-    std::ostringstream out;
-    out << "validity of " << o.scene << "'s contacts on [0, " << o.t_end << "] for " << o.vary_field << " in [" << o.vary_lo
-        << ", " << o.vary_hi << "] (" << scalar_traits<I>::name << ", " << bits_text<I>() << "): " << done.size()
-        << " pieces in " << seconds << " s on " << workers << (workers == 1 ? " worker" : " workers") << "\n";
-    if (!run.stopped.empty()) out << "  INCOMPLETE: " << run.stopped << "; " << run.not_run << " piece(s) not run\n";
-    for (const char* v : {"holds", "fails", "undecided"})
-      for (const auto& r : ranges[v])
-        out << "  " << v << " for " << o.vary_field << " in [" << r[0].get<std::string>() << ", " << r[1].get<std::string>() << "]\n";
-    out << "wrote " << (dir / "validity.csv").string() << ", summary.json" << plotted << "\n";
-    return {run.stopped.empty() ? 0 : 3, out.str()};
+    validity_report r;
+    r.run = run_pieces(run_piece, net, [&](double f) { meter(f); });
+    r.id = identity_of<I>(scene, order, tol);
+    r.resolution = resolution;
+    r.t_end = T;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    r.threads = std::max(1, net.threads);
+    r.processes = net.remote ? net.remote->workers() + 1 : 1;
+    r.workers = std::max(1, net.threads) + (net.remote ? net.remote->workers() : 0);
+    return write_validity(r, o);
   }
 }
 
@@ -817,6 +590,7 @@ motion_outcome run_model_motion(const scene_input& scene, const motion_options& 
     throw std::logic_error("run_model_motion: model " + scene.model + " does not move");
   } else {
     motion_detail::requested_bits = scalar_traits<T>::precision_bits();
+    motion_detail::asked_bits = mp_precision_bits();
     const evaluation_scope<T> scope;
     const auto m = Model::template prepare<T>(scene.as<typename Model::input>());
     const auto [prob, x0] = model_motion<Model>::template start<T>(m);

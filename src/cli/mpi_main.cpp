@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "exit_status.hpp"
-#include "motion.hpp"
+#include "motion_commands.hpp"
 #include "pieces.hpp"
 #include "reference.hpp"
 
@@ -130,9 +130,9 @@ int main(int argc, char** argv) {
     std::vector<std::string> mine;
     std::string failure;
     {
-      appell::cli::progress_line progress("appell-mpi reference (rank 0's share, " + std::to_string(processes) +
-                                              " processes)",
-                                          (n + p - 1) / p);
+      appell::cli::progress line("appell-mpi reference (rank 0's share, " + std::to_string(processes) + " processes)",
+                                 !root || options.quiet);
+      const std::size_t share = (n + p - 1) / p;
       std::size_t done = 0;
       for (std::size_t i = static_cast<std::size_t>(world.rank()); i < n; i += p) {
         try {
@@ -144,7 +144,7 @@ int main(int argc, char** argv) {
           if (failure.empty()) failure = e.what();
           mine.insert(mine.end(), {"", "", "0"});
         }
-        if (root) progress.update(++done);
+        if (root) appell::cli::show_states_done(line, ++done, share);
       }
     }
     const bool any_failure = boost::mpi::all_reduce(world, !failure.empty(), std::logical_or<bool>());

@@ -26,6 +26,8 @@
 #include <string>
 #include <vector>
 
+#include "progress.hpp"
+
 namespace appell::cli {
 
 struct reference_options {
@@ -45,6 +47,7 @@ struct reference_options {
   std::size_t n = 0;
   std::uint64_t seed = 1;
   int digits = 6;
+  bool quiet = false;  ///< --quiet: no progress line
 };
 
 /// Returns the process exit status (0: every state certified; 3: some refused, counted on stderr).
@@ -73,21 +76,8 @@ class reference_run {
   std::shared_ptr<const impl> p_;
 };
 
-/// "WHAT: k/N states, R per second" on stderr, at most once a second, erased at the end.
-class progress_line {
- public:
-  progress_line(std::string what, std::size_t total);
-  ~progress_line();
-  progress_line(const progress_line&) = delete;
-  progress_line& operator=(const progress_line&) = delete;
-  void update(std::size_t done);
-
- private:
-  std::string what_;
-  std::size_t total_;
-  std::chrono::steady_clock::time_point start_, last_;
-  bool shown_ = false;
-};
+/// "WHAT: k/N states, R per second (P%), about ... left" (progress.hpp).
+void show_states_done(progress& line, std::size_t done, std::size_t total);
 
 /// Parses the arguments of `reference` (argv[first..]); returns "" or the usage error.
 std::string parse_reference_arguments(int argc, char** argv, int first, reference_options& o);

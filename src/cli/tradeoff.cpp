@@ -28,8 +28,10 @@
 #include <sstream>
 #include <vector>
 
-#include "accuracy.hpp"
-#include "files.hpp"
+#include "appell/studies/accuracy.hpp"
+#include "figure.hpp"
+#include "progress.hpp"
+#include "write_whole.hpp"
 #include "plot.hpp"
 
 namespace appell::cli {
@@ -58,7 +60,7 @@ contestant enter(const scene_input& scene, const std::vector<mpfr_value>& ref) {
   const unsigned bits = scalar_traits<T>::runtime_precision ? mp_precision_bits() : 0;
   try {
     auto prepared = std::make_shared<prepared_scene<T>>(prepare<T>(scene));
-    const accuracy a = measure_accuracy(compute<T>(*prepared), ref, 1233.0);  // 4096 bits ~ 1233 digits
+    const studies::accuracy a = studies::measure_accuracy(compute<T>(*prepared), ref, 1233.0);  // 4096 bits ~ 1233 digits
     c.r.digits = a.digits;
     c.r.rel_width = a.rel_width;
     auto run = [prepared, bits](long n) {
@@ -91,7 +93,7 @@ contestant enter(const scene_input& scene, const std::vector<mpfr_value>& ref) {
 
 int tradeoff(const tradeoff_options& o) {
   const scene_input scene = read_scene_file(o.scene);
-  const std::vector<mpfr_value> ref = reference_values(scene, 4096);
+  const std::vector<mpfr_value> ref = studies::reference_values(scene, 4096);
   struct job {
     std::string name;
     unsigned bits;
@@ -104,9 +106,11 @@ int tradeoff(const tradeoff_options& o) {
     else
       jobs.push_back({s.name, 0});
   std::vector<contestant> field;
+  progress line("appell tradeoff", o.quiet);
   for (std::size_t j = 0; j < jobs.size(); ++j) {
-    std::cerr << "\rpreparing [" << j + 1 << "/" << jobs.size() << "] " << jobs[j].name
-              << (jobs[j].bits ? " " + std::to_string(jobs[j].bits) : std::string()) << "          " << std::flush;
+    line.show(static_cast<double>(j) / (static_cast<double>(jobs.size()) + o.reps),
+              "preparing " + std::to_string(j + 1) + "/" + std::to_string(jobs.size()) + ", " + jobs[j].name +
+                  (jobs[j].bits ? " " + std::to_string(jobs[j].bits) : std::string()));
     const std::optional<unsigned> bits = jobs[j].bits ? std::optional<unsigned>(jobs[j].bits) : std::nullopt;
     field.push_back(with_scalar(jobs[j].name, bits,
                                 [&]<class T>(std::type_identity<T>) { return enter<T>(scene, ref); }));
@@ -116,7 +120,8 @@ int tradeoff(const tradeoff_options& o) {
   using clock = std::chrono::steady_clock;
   std::vector<std::vector<double>> samples(field.size());
   for (int k = 0; k < o.reps; ++k) {
-    if (k % 10 == 0) std::cerr << "\rtiming: repetition " << k + 1 << "/" << o.reps << "          " << std::flush;
+    line.show(static_cast<double>(jobs.size() + static_cast<std::size_t>(k)) / (static_cast<double>(jobs.size()) + o.reps),
+              "timing, repetition " + std::to_string(k + 1) + "/" + std::to_string(o.reps));
     for (std::size_t j = 0; j < field.size(); ++j) {
       if (!field[j].batch) continue;
       const auto t0 = clock::now();
@@ -124,6 +129,7 @@ int tradeoff(const tradeoff_options& o) {
       samples[j].push_back(std::chrono::duration<double, std::nano>(clock::now() - t0).count() / field[j].r.batch);
     }
   }
+  line.done();
   std::vector<row> rows;
   for (std::size_t j = 0; j < field.size(); ++j) {
     row r = field[j].r;
@@ -133,7 +139,6 @@ int tradeoff(const tradeoff_options& o) {
     }
     rows.push_back(r);
   }
-  std::cerr << "\r" << std::string(40, ' ') << "\r";
   const double base = rows.front().ns;
   for (auto& r : rows) r.ratio = r.ns / base;
 

@@ -7,8 +7,9 @@ namespace appell::cli {
 
 struct tradeoff_options {
   std::string scene;
-  std::string out_dir = ".";
+  std::string out_dir;
   int reps = 200;
+  bool quiet = false;  ///< --quiet: no progress line
 };
 
 /// Runs the measurement, writes DIR/tradeoff.csv and DIR/tradeoff.png, prints the table.

@@ -119,11 +119,15 @@ std::string read_text_file(const std::string& path, std::size_t limit, const std
   if (std::filesystem::is_directory(path, ec)) throw input_error(path + ": is a directory, not " + what);
   std::ifstream file(path, std::ios::binary);
   if (!file) throw input_error(path + ": cannot read " + what);
-  std::string text(limit + 1, '\0');
-  file.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<std::size_t>(file.gcount()));
+  // In blocks, up to one byte past the limit: a large limit (the states file's 1 GiB) costs
+  // nothing for a small file, and /dev/zero or a pipe cannot hang the command.
+  std::string text;
+  char buffer[1 << 16];
+  while (text.size() <= limit && file.read(buffer, sizeof buffer).gcount() > 0)
+    text.append(buffer, static_cast<std::size_t>(file.gcount()));
   if (file.bad()) throw input_error(path + ": cannot read " + what);
-  if (text.size() > limit) throw input_error(path + ": larger than the limit of " + std::to_string(limit) + " bytes");
+  if (text.size() > limit)
+    throw input_error(path + ": larger than the limit of " + std::to_string(limit) + " bytes for " + what);
   return text;
 }
 

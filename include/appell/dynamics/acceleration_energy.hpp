@@ -6,7 +6,7 @@
 // never need and gibbs_appell() never forms (Cotton sec. 2).
 #pragma once
 
-#include "appell/dynamics/system.hpp"
+#include "appell/dynamics/gibbs_appell.hpp"
 
 namespace appell {
 

@@ -10,7 +10,7 @@
 
 #include <functional>
 
-#include "appell/dynamics/system.hpp"
+#include "appell/dynamics/gibbs_appell.hpp"
 
 namespace appell {
 

@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "appell/dynamics/system.hpp"
+#include "appell/dynamics/gibbs_appell.hpp"
 
 namespace appell {
 

@@ -10,7 +10,7 @@
 // every `appell eval` result carries.
 #pragma once
 
-#include "appell/dynamics/system.hpp"
+#include "appell/dynamics/gibbs_appell.hpp"
 
 namespace appell {
 

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "appell/dynamics/dual.hpp"
-#include "appell/io/json.hpp"
+#include "appell/derivatives/dual.hpp"
+#include "appell/errors.hpp"
 #include "appell/linalg/solve.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/format.hpp"

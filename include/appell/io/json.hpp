@@ -11,12 +11,9 @@
 #include <utility>
 #include <vector>
 
-namespace appell {
+#include "appell/errors.hpp"
 
-/// Bad input, naming the field (exit status 2 of the `appell` tool).
-struct input_error : std::invalid_argument {
-  using std::invalid_argument::invalid_argument;
-};
+namespace appell {
 
 /// A number from a scene: its exact decimal text and where it was found.
 struct decimal_field {

@@ -19,7 +19,7 @@
 #include <tuple>
 #include <vector>
 
-#include "appell/dynamics/system.hpp"  // vec3
+#include "appell/dynamics/gibbs_appell.hpp"  // vec3
 #include "appell/io/json.hpp"
 #include "appell/reactions/contact.hpp"
 #include "appell/scalar/decimal.hpp"

@@ -11,7 +11,7 @@
 //  2. Step end: the flow is T(x) + (remainder), T(x) = sum_{k<p} x_k(x) h^k;
 //     the remainder lies in R = x_p(B) h^p (Lagrange's form, coefficient p of
 //     the solution at some state of B).  By the slopes of T about xh_j over X_j
-//     (dynamics/slope.hpp; they lie inside the Jacobian over X_j, the mean-value
+//     (derivatives/slope.hpp; they lie inside the Jacobian over X_j, the mean-value
 //     form, and have half its spread on a quadratic right-hand side)
 //        x_{j+1} in T(xh_j) + J (x_j - xh_j) + R,  J = sum_{k<p} slope of x_k about xh_j over X_j h^k,
 //     and with S = J A_j:  X_{j+1} = T(xh_j) + R + S r_j  (the box), and the
@@ -654,8 +654,8 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
 }
 
 // ---------------------------------------------------------------------------
-// Compiled once (see the end of taylor.hpp): the slopes and enclose of the built-in models'
-// problems, defined by the library in the interval scalars.
+// The slopes and enclose of a problem P in interval scalar I, declared (EXTERN extern) or
+// defined: the built-in models' problems are compiled once (the end of problems.hpp).
 #define APPELL_ODE_ENCLOSE_INSTANCE(EXTERN, P, I)                                                        \
   EXTERN template void taylor_series_slopes<P, I>(                                        \
       const P&, const vector_t<I>&, const vector_t<I>&, int,                         \
@@ -665,7 +665,4 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
       const std::function<void(const enclosed_step<I>&)>&, const std::function<void(double)>&);
 #define APPELL_ODE_EXTERN_ENCLOSE(P, I) APPELL_ODE_ENCLOSE_INSTANCE(extern, P, I)
 #define APPELL_ODE_DEFINE_ENCLOSE(P, I) APPELL_ODE_ENCLOSE_INSTANCE(, P, I)
-#define APPELL_ODE_DETAIL_EXTERN_ENCLOSE(ctx, I, name) APPELL_ODE_BUILTIN_PROBLEMS(APPELL_ODE_EXTERN_ENCLOSE, I)
-APPELL_STANDARD_SCALARS(APPELL_ODE_DETAIL_EXTERN_ENCLOSE, )
-#undef APPELL_ODE_DETAIL_EXTERN_ENCLOSE
 }  // namespace appell::ode

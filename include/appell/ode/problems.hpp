@@ -21,21 +21,15 @@
 #include <utility>
 #include <vector>
 
-#include "appell/ode/jet.hpp"
+#include "appell/derivatives/jet.hpp"
+#include "appell/ode/enclose.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "appell/scenes/euler_body.hpp"
 #include "appell/scenes/rolling_sphere.hpp"
 #include "appell/scenes/top_on_cone.hpp"
-#include "appell/scenes/top_on_pivot.hpp"
+#include "appell/scenes/heavy_top.hpp"
 
 namespace appell::ode {
-
-template <class S>
-struct named_values {
-  std::string name;
-  std::vector<S> values;
-  bool zero_in_truth = false;  ///< an invariant that is 0 along the motion (a constraint's residual): drift absolute
-};
 
 /// Euler's body (paper sec. 3): x = omega = (p, q, r) on the principal axes.
 template <Scalar T>
@@ -461,5 +455,22 @@ void top_on_cone_problem<T>::invariants(const vector_t<S>& x, std::vector<named_
   free_top.invariants(y, all);
   out.push_back(all.front());  // the energy (the momenta are not conserved: the cone's couple)
 }
+
+// The integrators of the problems above, compiled once by the library (generated units:
+// cmake/instantiate.cmake) and declared here, so that every unit that can name one of these
+// problems links them instead of compiling them again (docs/architecture.md, "Build time"):
+// taylor_series in every scalar, simulate in the point scalars (taylor.hpp's macros), the
+// slopes and enclose in the interval scalars (enclose.hpp's); a use of the other kind's would
+// not link (it does not compile either).
+
+/// The problems of the built-in models that move, in scalar T: X(problem, T) for each.
+#define APPELL_ODE_BUILTIN_PROBLEMS(X, T)                                                     \
+  X(::appell::ode::euler_body_problem<T>, T) X(::appell::ode::heavy_top_resal_problem<T>, T) \
+  X(::appell::ode::rolling_sphere_problem<T>, T) X(::appell::ode::top_on_cone_problem<T>, T)
+#define APPELL_ODE_DETAIL_EXTERN_BUILTIN(ctx, T, name)                                                   \
+  APPELL_ODE_BUILTIN_PROBLEMS(APPELL_ODE_EXTERN_SERIES, T) APPELL_ODE_BUILTIN_PROBLEMS(APPELL_ODE_EXTERN_SIMULATE, T) \
+  APPELL_ODE_BUILTIN_PROBLEMS(APPELL_ODE_EXTERN_ENCLOSE, T)
+APPELL_STANDARD_SCALARS(APPELL_ODE_DETAIL_EXTERN_BUILTIN, )
+#undef APPELL_ODE_DETAIL_EXTERN_BUILTIN
 
 }  // namespace appell::ode

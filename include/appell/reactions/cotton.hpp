@@ -16,7 +16,7 @@
 #pragma once
 
 #include "appell/dynamics/speeds.hpp"
-#include "appell/dynamics/system.hpp"
+#include "appell/dynamics/gibbs_appell.hpp"
 
 namespace appell {
 

@@ -10,7 +10,7 @@
 //   J_w^T Gamma = Q'  (fixed point),    [J_P^T  J_w^T] [F; Gamma] = Q'  (free body).
 #pragma once
 
-#include "appell/dynamics/system.hpp"
+#include "appell/dynamics/gibbs_appell.hpp"
 
 namespace appell {
 

@@ -15,14 +15,10 @@
 #include <string_view>
 #include <vector>
 
+#include "appell/errors.hpp"
 #include "appell/scalar/traits.hpp"
 
 namespace appell {
-
-/// Bad numeric input: not a decimal, or out of the scalar's range.
-struct parse_error : std::invalid_argument {
-  using std::invalid_argument::invalid_argument;
-};
 
 /// Strict decimal syntax: [+-]? (digits [. digits?] | . digits) ([eE] [+-]? digits)?
 bool is_decimal_literal(std::string_view s);

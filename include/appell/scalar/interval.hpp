@@ -37,12 +37,9 @@
 #endif
 #include <string>
 
-namespace appell {
+#include "appell/errors.hpp"
 
-/// Thrown when a function is applied wholly outside its domain (log of [-2,-1]).
-struct domain_error : std::domain_error {
-  using std::domain_error::domain_error;
-};
+namespace appell {
 
 // Rounding for interval<double>.  Every operation needs the SSE unit in
 // upward mode; lower bounds are computed by negation, -((-x) - y), so only

@@ -50,14 +50,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "appell/errors.hpp"
 #include "appell/scalar/mpfi_ops.hpp"
 
 namespace appell::mp {
-
-/// Thrown by undecided comparisons and signs of intervals (as Boost's backend does).
-struct interval_error : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 class mpfi_backend {
  public:

@@ -31,16 +31,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "appell/errors.hpp"
 #include "appell/scalar/format.hpp"
 #include "appell/scalar/functions.hpp"
 #include "appell/scalar/traits.hpp"
 
 namespace appell {
-
-/// A result that could not be certified (exit status 3 of the `appell` tool).
-struct certification_error : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 template <Scalar T>
 class evaluation_scope {

@@ -21,7 +21,7 @@
 #include <utility>
 #include <vector>
 
-#include "appell/io/json.hpp"  // input_error
+#include "appell/errors.hpp"
 #include "appell/scalar/traits.hpp"
 
 #define APPELL_STANDARD_SCALARS(X, ctx)  \

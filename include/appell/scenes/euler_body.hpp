@@ -14,7 +14,7 @@
 // path, and the checks eq. (4) and the power balance.
 #pragma once
 
-#include "appell/dynamics/system.hpp"
+#include "appell/dynamics/gibbs_appell.hpp"
 #include "appell/dynamics/virtual_work.hpp"
 
 namespace appell {
@@ -50,7 +50,7 @@ T euler_power_residual(const euler_body<T>& body, const vec3<T>& omega, const ve
 template <Scalar T>
 struct euler_system {
   euler_body<T> body;
-  static constexpr int max_speeds = 3;  ///< differentiated in one pass (system.hpp)
+  static constexpr int max_speeds = 3;  ///< differentiated in one pass (gibbs_appell.hpp)
   int speeds() const { return 3; }
   template <class S>
   vector_t<S> qdot(const vector_t<S>&, const vector_t<S>& u, const S&) const {

@@ -10,7 +10,7 @@
 // newton_euler() for comparison (tests, proofs).
 #pragma once
 
-#include "appell/dynamics/system.hpp"
+#include "appell/dynamics/gibbs_appell.hpp"
 
 namespace appell {
 

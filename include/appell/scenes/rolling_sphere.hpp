@@ -92,7 +92,7 @@ struct free_sphere {
   rolling_surface<T> surface;
   vec3<T> force, couple;  ///< total applied force through G (weight included) and couple, on the axes
 
-  static constexpr int max_speeds = 6;  ///< differentiated in one pass (system.hpp)
+  static constexpr int max_speeds = 6;  ///< differentiated in one pass (gibbs_appell.hpp)
   int speeds() const { return 6; }
   template <class S>
   vector_t<S> qdot(const vector_t<S>&, const vector_t<S>& u, const S&) const {

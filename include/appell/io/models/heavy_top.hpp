@@ -6,7 +6,7 @@
 #pragma once
 
 #include "appell/io/model.hpp"
-#include "appell/scenes/top_on_pivot.hpp"
+#include "appell/scenes/heavy_top.hpp"
 
 namespace appell {
 

@@ -3,7 +3,7 @@
 // parameters, coordinates, speeds (the coordinates' rates, or quasi-velocities
 // with their kinematics), bodies, gravity, applied forces and couples, and
 // named holonomic and nonholonomic constraints.  The mechanics are in
-// scenes/expression_system.hpp; the reader (src/io/models/system.cpp) parses,
+// system/motion.hpp; the reader (src/io/models/system.cpp) parses,
 // differentiates and checks everything once, at 256 bits, on exact decimals.
 #pragma once
 
@@ -15,9 +15,9 @@
 
 #include "appell/io/model.hpp"
 #include "appell/reactions/contact.hpp"
-#include "appell/reactions/joint_wrench.hpp"
-#include "appell/scenes/expression_system.hpp"
-#include "appell/scenes/linearize.hpp"
+#include "appell/system/joint_wrenches.hpp"
+#include "appell/system/motion.hpp"
+#include "appell/system/linearize.hpp"
 
 namespace appell {
 
@@ -177,7 +177,7 @@ APPELL_EXTERN_MODEL(system_model)
 
 /// `appell linearize`: a system file's linearized equations about the motion
 /// its "linearize" section names, their eigenvalues at the speeds it lists, and
-/// the speeds where a real part crosses 0 (scenes/linearize.hpp), in T.
+/// the speeds where a real part crosses 0 (system/linearize.hpp), in T.
 template <Scalar T>
 struct linearization_report {
   linearized_equations<T> equations;

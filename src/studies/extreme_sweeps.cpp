@@ -1,13 +1,13 @@
-// The sweeps of the stability study (see extremes.hpp).
+// The sweeps of the stability study (appell/studies/extreme_sweeps.hpp).
 #include <mpfr.h>
 
 #include <cmath>
 
 #include "appell/scalar/format.hpp"
 #include "appell/scalar/traits.hpp"
-#include "extremes.hpp"
+#include "appell/studies/extreme_sweeps.hpp"
 
-namespace appell::cli {
+namespace appell::studies {
 namespace {
 
 std::string pow10(int k) { return "1e" + std::to_string(k); }
@@ -94,4 +94,4 @@ std::vector<sweep> extreme_sweeps() {
   return s;
 }
 
-}  // namespace appell::cli
+}  // namespace appell::studies

@@ -1,10 +1,11 @@
-// bench/closed_forms.hpp -- the paper's scenes written out by hand: the
-// yardstick of the generic Gibbs-Appell path (issue "generic path within 10x").
+// tests/independent/hand_derived.hpp -- the paper's scenes written out by hand: the
+// accelerations and reactions in closed form, the yardstick of the generic Gibbs-Appell path
+// (bench/generic.cpp times them against it).
 //
 // Each function takes the same inputs as the model's result function and
 // returns the same results, plus one cheap check of the kind the generic path
 // carries (a power balance).  Nothing here uses the library's dynamics: no
-// dual numbers, no M, b, Q, no constraint elimination.  tests/closed_forms.cpp
+// dual numbers, no M, b, Q, no constraint elimination.  tests/generic_path.cpp
 // compares every closed form with `appell eval`'s results at 256 bits (mpfi
 // enclosures) and on random states, so the ratios compare equal work.
 #pragma once
@@ -14,7 +15,7 @@
 #include "appell/scenes/euler_body.hpp"
 #include "appell/scenes/rolling_sphere.hpp"
 
-namespace appell::closed_form {
+namespace appell::independent {
 
 // ---------------------------------------------------------------------------
 // Euler's body (paper sec. 3): Euler's equations and the power balance.
@@ -135,4 +136,4 @@ struct example_one_cone {
   }
 };
 
-}  // namespace appell::closed_form
+}  // namespace appell::independent

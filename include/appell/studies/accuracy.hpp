@@ -1,17 +1,16 @@
-// Accuracy of an evaluation against a high-precision reference, shared by
-// `appell tradeoff` and `appell extremes`.
+// appell/studies/accuracy.hpp -- the accuracy of an evaluation against a high-precision
+// reference (every result component in MPFR at many bits): the measure of `appell tradeoff`
+// and `appell extremes`, and of the guarantees tests/extremes.cpp holds them to.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "appell/io/scene.hpp"
 
-namespace appell::cli {
+namespace appell::studies {
 
 /// Every result component of the scene, evaluated in mpfr at `bits` bits.
 inline std::vector<mpfr_value> reference_values(const scene_input& scene, unsigned bits) {
@@ -63,12 +62,4 @@ accuracy measure_accuracy(const evaluation<T>& e, const std::vector<mpfr_value>&
   return a;
 }
 
-/// A measured figure for tables and CSV files: `precision` significant digits, "" for NaN.
-inline std::string figure(double x, int precision = 3) {
-  if (std::isnan(x)) return "";
-  std::ostringstream s;
-  s << std::setprecision(precision) << x;
-  return s.str();
-}
-
-}  // namespace appell::cli
+}  // namespace appell::studies

@@ -1,4 +1,4 @@
-// appell/ode/jet.hpp -- truncated Taylor series over any scalar.
+// appell/derivatives/jet.hpp -- truncated Taylor series over any scalar.
 //
 // A jet x(t) = x_0 + x_1 t + ... + x_n t^n carries the Taylor coefficients of a
 // quantity along a motion.  The existing templated dynamics (the generic
@@ -33,7 +33,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "appell/dynamics/dual.hpp"
+#include "appell/derivatives/dual.hpp"
 #include "appell/linalg/solve.hpp"
 #include "appell/scalar/eigen.hpp"
 #include "appell/scalar/functions.hpp"

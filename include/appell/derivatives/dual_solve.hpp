@@ -1,4 +1,4 @@
-// appell/linalg/dual_solve.hpp -- linear solves on multi_dual numbers.
+// appell/derivatives/dual_solve.hpp -- linear solves on multi_dual numbers.
 //
 // For A(x) y = b(x) with A, b carrying N derivatives (multi_dual<T, N>):
 //   y   = A^-1 b                    (the value: solve or solve_spd in T),
@@ -12,15 +12,15 @@
 // The overloads below are more specialized than solve.hpp's templates and are
 // found by argument-dependent lookup wherever the generic path calls solve.
 //
-// For slopes (dynamics/slope.hpp), with A and b given over a box (v), at its centre (c) and by
+// For slopes (derivatives/slope.hpp), with A and b given over a box (v), at its centre (c) and by
 // their slopes (d_k):
 //   y_c = A_c^-1 b_c,  y_v = A_v^-1 b_v,  y_k = A_v^-1 (b_k - A_k y_c),
 // from y(x) - y(xh) = A(x)^-1 ((b(x) - b(xh)) - (A(x) - A(xh)) y(xh)): the slope's solve has the
 // box's matrix and the centre's solution where the derivative's has the value's twice.
 #pragma once
 
-#include "appell/dynamics/dual.hpp"
-#include "appell/dynamics/slope.hpp"
+#include "appell/derivatives/dual.hpp"
+#include "appell/derivatives/slope.hpp"
 #include "appell/linalg/solve.hpp"
 
 namespace appell {

@@ -1,4 +1,4 @@
-// proofs/sphere_newton_euler.hpp -- the rolling sphere by Newton-Euler with
+// tests/independent/sphere_newton_euler.hpp -- the rolling sphere by Newton-Euler with
 // contact multipliers in a fixed frame: an independent formulation (no
 // trihedron, no quasi-velocities, no Appell), used by proofs/ and tests/.
 //
@@ -14,7 +14,7 @@
 
 #include "appell/scenes/rolling_sphere.hpp"
 
-namespace appell::proof {
+namespace appell::independent {
 
 template <class S>
 struct sphere_contact {
@@ -82,4 +82,4 @@ sphere_contact<S> sphere_newton_euler(const S& M, const S& A, const S& a, surfac
   return r;
 }
 
-}  // namespace appell::proof
+}  // namespace appell::independent

@@ -1,4 +1,4 @@
-// appell/scenes/linearize.hpp -- the linearized equations of a system file
+// appell/system/linearize.hpp -- the linearized equations of a system file
 // about a steady motion (`appell linearize`; the "linearize" section of a
 // system file, SCENES.md).
 //
@@ -30,11 +30,11 @@
 #include <string>
 #include <vector>
 
-#include "appell/linalg/dual_solve.hpp"
-#include "appell/linalg/polynomial.hpp"
+#include "appell/derivatives/dual_solve.hpp"
+#include "appell/system/polynomial.hpp"
 #include "appell/reactions/cotton.hpp"
 #include "appell/reactions/lagrange.hpp"
-#include "appell/scenes/expression_system.hpp"
+#include "appell/system/motion.hpp"
 
 namespace appell {
 

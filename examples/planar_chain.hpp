@@ -1,15 +1,15 @@
-// bench/planar_chain.hpp -- a planar N-link pendulum written on the public API
-// (dynamics/system.hpp), for bench/chain.cpp and tests/generic_path.cpp: N
+// examples/planar_chain.hpp -- a planar N-link pendulum written on the public API
+// (dynamics/gibbs_appell.hpp), for bench/chain.cpp and tests/generic_path.cpp: N
 // uniform links of mass 1 and length 1 pinned end to end, the first to the
 // ground at the origin; central inertia 1/12 about every axis; gravity 9.81
 // along -y; coordinates the relative joint angles, speeds their rates.  It
 // declares no max_speeds (a user's system need not).
 #pragma once
 
-#include "appell/dynamics/system.hpp"
+#include "appell/dynamics/gibbs_appell.hpp"
 #include "appell/scalar/decimal.hpp"
 
-namespace appell::bench {
+namespace appell::examples {
 
 /// The chain as a user writes it: speeds(), qdot(), bodies().
 template <Scalar T>
@@ -45,4 +45,4 @@ struct planar_chain {
   }
 };
 
-}  // namespace appell::bench
+}  // namespace appell::examples

@@ -1,4 +1,4 @@
-// appell/dynamics/slope.hpp -- first-order slopes (Krawczyk & Neumaier 1985) over any scalar.
+// appell/derivatives/slope.hpp -- first-order slopes (Krawczyk & Neumaier 1985) over any scalar.
 //
 // A slope of f over a box X with centre xh (xh in X) is a matrix S (an enclosure of one) with
 //     f(x) - f(xh) = S* (x - xh)   for some S* in S, for every x in X.
@@ -22,7 +22,7 @@
 //          the argument of f' between a(xh) and a(x), both in v_a: d = f'(v_a) d_a;
 //          exactly, sqrt(a) - sqrt(b) = (a - b) / (sqrt a + sqrt b) and
 //          a^2 - b^2 = (a + b)(a - b): d = d_a / (sqrt(v_a) + sqrt(c_a)), d = (v_a + c_a) d_a;
-//   A y = b (linalg/dual_solve.hpp): y(x) - y(xh) = A(x)^-1 ((b(x) - b(xh)) - (A(x) - A(xh)) y(xh)):
+//   A y = b (derivatives/dual_solve.hpp): y(x) - y(xh) = A(x)^-1 ((b(x) - b(xh)) - (A(x) - A(xh)) y(xh)):
 //          d = A_v^-1 (d_b - d_A c_y).
 // The variable x_i is slope(X_i, xh_i, e_i).  Every slope enclosure is contained in the
 // corresponding derivative enclosure over X (c in v), so the slope is never the wider of the two
@@ -32,7 +32,7 @@
 
 #include <array>
 
-#include "appell/dynamics/dual.hpp"
+#include "appell/derivatives/dual.hpp"
 
 namespace appell {
 
@@ -170,7 +170,7 @@ template <class T, int N> slope<T, N> pown(const slope<T, N>& x, int n) {  // n 
 }
 
 /// slope<T, N> is a scalar of the generic path, as multi_dual is: its bounds and predicates are
-/// those of its box value, and the linear solves go to linalg/dual_solve.hpp.
+/// those of its box value, and the linear solves go to derivatives/dual_solve.hpp.
 template <class T, int N>
   requires Scalar<T>
 struct scalar_traits<slope<T, N>> : derivative_carrier_traits<slope<T, N>, T> {

@@ -1,4 +1,4 @@
-// appell/reactions/joint_wrench.hpp -- the wrench each joint of a tree transmits (paper sec. 5).
+// appell/system/joint_wrenches.hpp -- the wrench each joint of a tree transmits (paper sec. 5).
 //
 // A link hangs from its parent by a joint: the joint's constraints remove the relative motions
 // it does not allow (five for a revolute or prismatic joint, six for a fixed one).  Cotton's
@@ -23,7 +23,7 @@
 
 #include <vector>
 
-#include "appell/scenes/expression_system.hpp"
+#include "appell/system/motion.hpp"
 
 namespace appell {
 

@@ -105,9 +105,6 @@ std::string moving_model_names();
 /// A positive finite decimal, or input_error naming the flag.
 double positive_decimal(const std::string& flag, const std::string& text);
 
-/// --quiet, an unknown option, or the scene (the one positional argument): "" or the usage error.
-std::string parse_common_argument(const std::string& a, std::string& scene, bool& quiet);
-
 /// Parses argv[first..] into o; returns "" or the usage error (naming the flag).
 std::string parse_motion_arguments(int argc, char** argv, int first, motion_options& o);
 

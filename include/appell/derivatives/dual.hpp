@@ -1,4 +1,4 @@
-// appell/dynamics/dual.hpp -- forward-mode differentiation over any scalar.
+// appell/derivatives/dual.hpp -- forward-mode differentiation over any scalar.
 //
 // A dual number x + x' eps (eps^2 = 0) carries one directional derivative.
 // appell uses it to differentiate the user's kinematics without hand-written
@@ -25,8 +25,8 @@ template <class S> bool structurally_zero(const S& x);
 // of a multi_dual (a multi_dual's derivative pass inside a linearization) finds them.
 template <class T, int N> struct multi_dual;
 template <class T, int N> multi_dual<T, N> pown(const multi_dual<T, N>& x, int n);
-template <class T> struct jet;  // truncated Taylor series (ode/jet.hpp): a dual of jets finds its pown
-template <class T, int N> struct slope;  // slopes (dynamics/slope.hpp): a multi_dual of slopes finds their pown
+template <class T> struct jet;  // truncated Taylor series (derivatives/jet.hpp): a dual of jets finds its pown
+template <class T, int N> struct slope;  // slopes (derivatives/slope.hpp): a multi_dual of slopes finds their pown
 template <class T, int N> slope<T, N> pown(const slope<T, N>& x, int n);
 template <class T> jet<T> pown(const jet<T>& x, int n);
 
@@ -130,7 +130,7 @@ template <class T> dual<T> sqr(const dual<T>& x) { return {sqr(x.v), T(2) * x.v 
 
 /// N directional derivatives carried at once (N fixed at compile time): one
 /// evaluation of the user's kinematics gives every column of J and the
-/// velocity-product terms (system.hpp), where N single duals would evaluate
+/// velocity-product terms (gibbs_appell.hpp), where N single duals would evaluate
 /// it N times.  Each slot's arithmetic is exactly that of a single dual seeded
 /// with that slot's direction (the same operations in the same order, the same
 /// exact-zero skips), so the derivatives are the same numbers bit for bit;
@@ -269,7 +269,7 @@ struct derivative_carrier_traits {
 /// and carries N derivatives of every result along, each enclosed as rigorously
 /// as the value (linearize.hpp differentiates the motion so).  It is not itself a
 /// set: its bounds and predicates are those of its value, and the linear solves
-/// go to the overloads in linalg/dual_solve.hpp.
+/// go to the overloads in derivatives/dual_solve.hpp.
 template <class T, int N>
   requires Scalar<T>
 struct scalar_traits<multi_dual<T, N>> : derivative_carrier_traits<multi_dual<T, N>, T> {

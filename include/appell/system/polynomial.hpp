@@ -1,4 +1,4 @@
-// appell/linalg/polynomial.hpp -- characteristic polynomials and their roots,
+// appell/system/polynomial.hpp -- characteristic polynomials and their roots,
 // enclosed.
 //
 //   characteristic_polynomial(A)   det(s I - A) by Faddeev-LeVerrier (exact
@@ -27,7 +27,7 @@
 #include <complex>
 #include <vector>
 
-#include "appell/dynamics/dual.hpp"
+#include "appell/derivatives/dual.hpp"
 #include "appell/linalg/solve.hpp"
 
 namespace appell {

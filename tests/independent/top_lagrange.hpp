@@ -1,4 +1,4 @@
-// tests/reference_top.hpp -- the classical top forced onto a cone psi = f(theta),
+// tests/independent/top_lagrange.hpp -- the classical top forced onto a cone psi = f(theta),
 // by Lagrange's equations with a multiplier, derived by hand for the tests (the
 // library uses none of it: it differentiates the top's kinematics and applies
 // Cotton's method):
@@ -10,7 +10,7 @@
 
 #include <Eigen/Dense>
 
-namespace appell::testing {
+namespace appell::independent {
 
 template <class R>
 struct top_reference {
@@ -48,4 +48,4 @@ top_reference<R> top_lagrange(const R& A, const R& C, const R& m, const R& l, co
   return out;
 }
 
-}  // namespace appell::testing
+}  // namespace appell::independent

@@ -1,4 +1,4 @@
-// appell/dynamics/system.hpp -- Gibbs-Appell equations of a user's system.
+// appell/dynamics/gibbs_appell.hpp -- Gibbs-Appell equations of a user's system.
 //
 // A system is described once, as templated C++ (see examples/ and scenes/):
 //
@@ -32,8 +32,8 @@
 #include <string>
 #include <vector>
 
-#include "appell/dynamics/dual.hpp"
-#include "appell/linalg/dual_solve.hpp"
+#include "appell/derivatives/dual.hpp"
+#include "appell/derivatives/dual_solve.hpp"
 #include "appell/linalg/solve.hpp"
 
 namespace appell {

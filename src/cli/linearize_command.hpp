@@ -1,7 +1,7 @@
 // appell linearize SCENE [--scalar NAME] [--bits N] [--format json|text]:
 // the linearized equations of a system file about the steady motion its
 // "linearize" section names (SCENES.md), with the eigenvalues and the speeds
-// where an eigenvalue's real part crosses 0 (scenes/linearize.hpp).
+// where an eigenvalue's real part crosses 0 (system/linearize.hpp).
 #pragma once
 
 #include <optional>

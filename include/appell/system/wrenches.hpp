@@ -1,0 +1,105 @@
+// appell/system/wrenches.hpp -- the wrenches of a system file (system_wrench_definition):
+// the constraints' reactions gathered into a force at a point of one body and a couple, from
+// their virtual work (Cotton sec. 5, end).
+#pragma once
+
+#include "appell/system/mechanics.hpp"
+
+namespace appell {
+
+/// The twist of a body at its material point P, per unit of each speed, on the
+/// fixed axes (6 x n): rows 0-2 the point's velocity, rows 3-5 the angular
+/// velocity, both linear in q' = W u + w (the w part, and d/dt, left out):
+///   dv_P/dq'_i = dG/dq_i + sum_m da_m/dq_i e'_m x (P - G),   domega/dq'_i = sum_m da_m/dq_i e'_m.
+template <Scalar T, class S>
+matrix_t<S> point_twist_jacobian(const compiled_system<T>& c, const typename compiled_system<T>::wrench& w,
+                                 const S* v) {
+  const int nq = c.def->vars.coordinates, n = c.def->vars.speeds;
+  vec3<S> rel;
+  for (int i = 0; i < 3; ++i) rel(i) = w.rel[static_cast<std::size_t>(i)].at(v);
+  const std::vector<vec3<S>> axes = detail::rotation_axes<T, S>(w.rotations, v);
+  matrix_t<S> C = matrix_t<S>::Zero(6, nq);  // per coordinate rate
+  for (int x = 0; x < 3; ++x)
+    for (const auto& [i, d] : w.center[static_cast<std::size_t>(x)].dq) C(x, i) += d.at(v);
+  for (std::size_t m = 0; m < w.rotations.size(); ++m) {
+    const vec3<S> moved = cross(axes[m], rel);
+    for (const auto& [i, d] : w.rotations[m].second.dq) {
+      const S rate = d.at(v);
+      for (int r = 0; r < 3; ++r) {
+        C(r, i) += rate * moved(r);
+        C(3 + r, i) += rate * axes[m](r);
+      }
+    }
+  }
+  if (c.def->rates_as_speeds) return C;
+  matrix_t<S> J = matrix_t<S>::Zero(6, n);
+  for (int i = 0; i < nq; ++i)
+    for (const auto& [j, wij] : c.kinematics_du[static_cast<std::size_t>(i)]) {
+      const S f = wij.at(v);
+      for (int r = 0; r < 6; ++r) J(r, j) += C(r, i) * f;
+    }
+  return J;
+}
+
+/// The normal equations of a wrench's virtual work: N = J J^T (6 x 6) and J g.
+template <class S>
+std::pair<matrix_t<S>, vector_t<S>> wrench_normal_equations(const matrix_t<S>& J, const vector_t<S>& g) {
+  matrix_t<S> N(6, 6);
+  vector_t<S> rhs(6);
+  for (int r = 0; r < 6; ++r) {
+    for (int k = r; k < 6; ++k) {
+      S x = S(0);
+      for (Eigen::Index j = 0; j < J.cols(); ++j) x += J(r, j) * J(k, j);
+      N(r, k) = x;
+      N(k, r) = x;
+    }
+    S y = S(0);
+    for (Eigen::Index j = 0; j < J.cols(); ++j) y += J(r, j) * g(j);
+    rhs(r) = y;
+  }
+  return {N, rhs};
+}
+
+template <class T>
+struct constraint_wrench_result {
+  vec3<T> force;   ///< on the fixed axes, applied at the wrench's point
+  vec3<T> moment;  ///< about that point, on the fixed axes
+  T residual;      ///< |J^T (F; M) - sum_c A_c^T Q'_c|: 0 when the wrench does the constraints' virtual work
+};
+
+/// Each wrench of the system at (q, t), from the constraints' reactions
+/// (Cotton's Q'_c, one per constraint): the unique (F, M) whose virtual power
+/// J_P^T F + J_w^T M is the constraints' generalized force sum_c A_c^T Q'_c
+/// (the normal equations J J^T (F; M) = J g, verified for interval types).
+/// S: T, or jets of T (the motion's results over a whole step).
+template <Scalar T, class S = T>
+std::vector<constraint_wrench_result<S>> constraint_wrenches(const compiled_system<T>& c, const vector_t<S>& q,
+                                                             const S& t, const vector_t<S>& reactions) {
+  std::vector<constraint_wrench_result<S>> out;
+  if (c.wrenches.empty()) return out;
+  const int n = c.def->vars.speeds, s = static_cast<int>(c.constraints.size());
+  const vector_t<S> u0 = vector_t<S>::Zero(n);
+  const std::vector<S> values = c.evaluate(c.constraint_tape, c.template variables<S>(q, u0, t));
+  matrix_t<S> A(s, n);
+  vector_t<S> a(s);
+  expression_constraints<T>{&c}.template eval<S>(q, t, A, a);
+  for (std::size_t k = 0; k < c.wrenches.size(); ++k) {
+    const matrix_t<S> J = point_twist_jacobian<T, S>(c, c.wrenches[k], values.data());
+    vector_t<S> g = vector_t<S>::Zero(n);
+    for (int r : c.def->wrenches[k].constraints)
+      for (int j = 0; j < n; ++j) g(j) += A(r, j) * reactions(r);
+    const auto [N, rhs] = wrench_normal_equations(J, g);
+    const vector_t<S> w = solve_spd(N, rhs);
+    S sq = S(0);
+    for (int j = 0; j < n; ++j) {
+      S e = -g(j);
+      for (int r = 0; r < 6; ++r) e += J(r, j) * w(r);
+      sq += sqr(e);
+    }
+    using std::sqrt;
+    out.push_back({vec3<S>(w(0), w(1), w(2)), vec3<S>(w(3), w(4), w(5)), S(sqrt(sq))});
+  }
+  return out;
+}
+
+}  // namespace appell

@@ -1,0 +1,302 @@
+// The motion commands' output layer (motion_output.hpp): scalar-free, compiled once.
+#include "motion_output.hpp"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "appell/scalar/decimal.hpp"
+#include "plot.hpp"
+#include "write_whole.hpp"
+
+namespace appell::cli {
+
+namespace {
+
+/// summary.json's scalar fields, as `appell eval`'s: "bits" the bits used, "bits_requested"
+/// where they differ from --bits.
+void scalar_fields(nlohmann::json& j, const run_identity& id) {
+  j["scalar"] = id.scalar;
+  j["bits"] = id.bits;
+  if (id.bits_requested) j["bits_requested"] = id.bits_requested;
+}
+
+nlohmann::json state_object(const std::vector<std::pair<std::string, std::string>>& state) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, value] : state) j[name] = value;
+  return j;
+}
+
+std::string csv_header(const std::vector<std::string>& header) {
+  std::string line;
+  for (std::size_t i = 0; i < header.size(); ++i) line += (i ? "," : "") + header[i];
+  return line + "\n";
+}
+
+/// DIR/contacts.png from contacts.csv's rows: per contact, the normal force over each step
+/// (its bounds) and, with mu, the margin mu - required mu (or the required mu without it);
+/// a margin below 0, or a normal force below 0, is a contact that fails.
+plot_outcome plot_contacts(const std::filesystem::path& dir, const std::string& csv, const std::vector<contact_report>& contacts,
+                           const std::string& title) {
+  std::ostringstream dat;
+  std::string force_plot, margin_plot;
+  bool any_mu = false;
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const auto& c = contacts[k];
+    const double mu = c.mu_text.empty() ? 0.0 : from_decimal<double>(c.mu_text);
+    any_mu = any_mu || !c.mu_text.empty();
+    std::istringstream in(csv);
+    std::string line;
+    while (std::getline(in, line)) {
+      std::vector<std::string> f;
+      std::stringstream ls(line);
+      for (std::string x; std::getline(ls, x, ',');) f.push_back(x);
+      if (f.size() < 10 || f[0] != c.name) continue;
+      const double t = (std::stod(f[1]) + std::stod(f[2])) / 2;
+      dat << t << " " << f[3] << " " << f[4];
+      if (!f[7].empty() && !f[8].empty()) {
+        const double lo = std::stod(f[7]), hi = std::stod(f[8]);
+        if (c.mu_text.empty()) dat << " " << lo << " " << hi << "\n";
+        else dat << " " << mu - hi << " " << mu - lo << "\n";
+      } else {
+        dat << " NaN NaN\n";
+      }
+    }
+    dat << "\n\n";
+    const std::string idx = std::to_string(k);
+    force_plot += std::string(k ? ", " : "") + "$contacts index " + idx + " using 1:2:3 with filledcurves title " +
+                  gnuplot_quoted(c.name + ": normal force (enclosure over each step)");
+    margin_plot += std::string(k ? ", " : "") + "$contacts index " + idx + " using 1:4:5 with filledcurves title " +
+                   gnuplot_quoted(c.name + (c.mu_text.empty() ? ": required mu" : ": mu - required mu (mu = " + c.mu_text + ")"));
+  }
+  // each failing contact's first failure: a line at its time, labelled at the top of the force
+  // panel and at the foot of the margin panel (where the margin, still positive, leaves room)
+  std::string marks, marks_low;
+  for (const auto& c : contacts)
+    if (c.verdict == "fails" && c.fails_by) {
+      const double t = c.fails_by_t;
+      const std::string line = "set arrow from " + std::to_string(t) + ", graph 0 to " + std::to_string(t) +
+                               ", graph 1 nohead lc rgb 'red' dt 2\n";
+      const std::string text = "set label '" + c.name + " fails by t = " + *c.fails_by + "' at " + std::to_string(t);
+      marks += line + text + ", graph 0.92 right offset -0.5,0 tc rgb 'red'\n";
+      marks_low += line + text + ", graph 0.08 right offset -0.5,0 tc rgb 'red'\n";
+    }
+  return render_png(dir / "contacts.png",
+                    datablock("contacts", dat.str()) + "set multiplot layout 2,1 title " +
+                        gnuplot_quoted(title + ": can the contacts hold?") +
+                        "\nset grid\nset key below\nset xlabel 't'\nset ylabel 'N'\nset xzeroaxis lw 2\n" + marks + "plot " +
+                        force_plot + "\nunset arrow\nunset label\n" + marks_low + "set ylabel '" +
+                        (any_mu ? "mu - required mu" : "required mu") + "'\nplot " + margin_plot + "\nunset multiplot\n",
+                    900, 700);
+}
+
+}  // namespace
+
+std::string run_identity::bits_text() const {
+  return std::to_string(bits) + " bits" + (bits_requested ? " (" + std::to_string(bits_requested) + " requested)" : "");
+}
+
+motion_outcome write_simulate(const simulate_report& r, const motion_options& o) {
+  nlohmann::json inv = nlohmann::json::array();
+  for (const auto& q : r.invariants)
+    inv.push_back({{"name", q.name},
+                   {"initial", q.initial},
+                   {"final", q.final},
+                   {q.zero_in_truth ? "max_abs_value" : "max_relative_drift", q.worst}});
+  const bool complete = r.failure.empty();
+  nlohmann::json summary = {{"command", "simulate"}, {"scene", o.scene}, {"model", r.id.model}};
+  scalar_fields(summary, r.id);
+  summary.update({{"order", r.id.order},
+                  {"tol", r.id.tol},
+                  {"t_end", o.t_end},
+                  {"every", o.every},
+                  {"complete", complete},
+                  {"reason", r.failure},
+                  {"t_reached", r.t_reached},
+                  {"steps", complete ? nlohmann::json(r.steps) : nlohmann::json()},
+                  {"seconds", r.seconds},
+                  {"min_step", complete ? nlohmann::json(r.min_step) : nlohmann::json()},
+                  {"max_step", complete ? nlohmann::json(r.max_step) : nlohmann::json()},
+                  {"final_state", state_object(r.final_state)},
+                  {"invariants", inv}});
+  const std::filesystem::path dir(o.out);
+  std::filesystem::create_directories(dir);
+  write_whole(dir, "trajectory.csv", csv_header(r.header) + r.rows);
+  write_whole(dir, "summary.json", summary.dump(2) + "\n");
+  std::string plotted;
+  if (!r.invariants.empty()) {
+    const std::filesystem::path png = dir / "drift.png";
+    std::string script = datablock("drift", r.drift) +
+                         "set logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'relative drift |I(t) - I(0)| / "
+                         "|I(0)|, or |I(t)| where I = 0'\n"
+                         "set title '" + r.id.model + ", " + r.id.scalar + ", order " + std::to_string(r.id.order) +
+                         "'\nset grid\nset key below\nplot ";
+    for (std::size_t q = 0; q < r.invariants.size(); ++q)
+      script += std::string(q ? ", " : "") + "$drift using 1:" + std::to_string(q + 2) + " with lines title " +
+                gnuplot_quoted(r.invariants[q].name + (r.invariants[q].zero_in_truth ? " (|I|, 0 in truth)" : ""));
+    plotted = plot_note(render_png(png, script + "\n", 900, 500), png);
+  }
+  std::ostringstream out;
+  out << "simulate " << r.id.model << " in " << r.id.scalar << " (" << r.id.bits_text() << "), order " << r.id.order
+      << ", tol " << r.id.tol << ": ";
+  if (complete) out << r.steps << " steps to t = " << o.t_end;
+  else out << "stopped before t = " << o.t_end;
+  out << " in " << r.seconds << " s\n";
+  if (!complete) out << "  INCOMPLETE: " << r.failure << "; written up to t = " << r.t_reached << "\n";
+  for (const auto& q : r.invariants) {
+    if (q.zero_in_truth) out << "  " << q.name << ": 0 in truth; largest |value| " << q.worst << "\n";
+    else out << "  " << q.name << ": largest relative drift " << q.worst << "\n";
+  }
+  out << "wrote " << (dir / "trajectory.csv").string() << ", summary.json" << plotted << "\n";
+  return {complete ? 0 : 3, out.str()};
+}
+
+motion_outcome write_enclose(const enclose_report& r, const motion_options& o) {
+  nlohmann::json contacts_json = nlohmann::json::object();
+  std::ostringstream contact_lines;
+  for (const auto& c : r.contacts) {
+    nlohmann::json j = {{"verdict", c.verdict}, {"refined_steps", c.refined}};
+    if (!c.mu_text.empty()) j["mu"] = c.mu_text;
+    if (c.least_normal) j["least_normal_force"] = *c.least_normal;
+    j["largest_required_mu"] = c.largest_mu ? nlohmann::json(*c.largest_mu) : nlohmann::json();
+    contact_lines << "  contact " << c.name << ": ";
+    if (c.verdict == "fails") {
+      j["first_failure"] = {{"from", c.holding_lo}, {"to", *c.fails_by}};
+      if (!c.located.empty()) j["located"] = c.located;
+      contact_lines << "FAILS: the first failure lies in [" << c.holding_lo << ", " << *c.fails_by << "]"
+                    << (c.located.empty() ? "" : " (" + c.located + ")");
+    } else if (c.verdict == "undecided") {
+      j["undecided_from"] = c.holding_lo;
+      contact_lines << "holds up to t = " << c.holding_lo << ", undecided from there";
+    } else {
+      j["holds_until"] = c.holding_hi;
+      contact_lines << "holds up to t = " << c.holding_hi;
+    }
+    if (c.least_normal) contact_lines << "; least normal force >= " << *c.least_normal;
+    if (c.largest_mu) contact_lines << "; required mu <= " << *c.largest_mu;
+    if (!c.mu_text.empty()) contact_lines << " (mu = " << c.mu_text << ")";
+    contact_lines << "\n";
+    contacts_json[c.name] = j;
+  }
+  nlohmann::json widths = nlohmann::json::object();
+  for (std::size_t i = 0; i < r.value_names.size(); ++i) widths[r.value_names[i]] = r.widest_over[i];
+  nlohmann::json summary = {{"command", "enclose"}, {"scene", o.scene}, {"model", r.id.model}};
+  scalar_fields(summary, r.id);
+  summary.update({{"order", r.id.order},
+                  {"tol", r.id.tol},
+                  {"t_end", o.t_end},
+                  {"complete", r.complete},
+                  {"reason", r.reason},
+                  {"t_reached", r.t_reached},
+                  {"steps", r.steps},
+                  {"rejected_steps", r.rejected},
+                  {"seconds", r.seconds},
+                  {"final_state", state_object(r.final_state)},
+                  {"final_largest_width", r.final_width},
+                  {"largest_width_over_a_step", widths}});
+  if (!r.contacts.empty()) summary["contacts"] = contacts_json;
+  if (!r.contact_stop.empty()) summary["stopped_at_contact_failure"] = true;
+  const std::filesystem::path dir(o.out);
+  std::filesystem::create_directories(dir);
+  write_whole(dir, "steps.csv", csv_header(r.header) + r.rows);
+  if (!r.contacts.empty())
+    write_whole(dir, "contacts.csv",
+                "contact,t0,t1,normal_force_lo,normal_force_hi,tangential_force_lo,tangential_force_hi,required_mu_lo,"
+                "required_mu_hi,verdict\n" + r.contact_rows);
+  write_whole(dir, "summary.json", summary.dump(2) + "\n");
+  std::string plotted =
+      plot_note(render_png(dir / "widths.png",
+                           datablock("widths", r.widths) + "set logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'width'\nset title " +
+                               gnuplot_quoted(r.id.model + ", " + r.id.scalar + " (" + r.id.bits_text() + "), order " +
+                                              std::to_string(r.id.order)) +
+                               "\nset grid\nset key below\nplot $widths using 1:2 with lines title 'state at each step end (largest "
+                               "width)', '' using 1:3 with lines title 'invariants over each whole step (largest width; "
+                               "constant in truth)'\n",
+                           900, 500),
+                dir / "widths.png");
+  if (!r.contacts.empty())
+    plotted += plot_note(plot_contacts(dir, r.contact_rows, r.contacts, r.id.model + ", " + r.id.scalar), dir / "contacts.png");
+  std::ostringstream out;
+  out << "enclose " << r.id.model << " in " << r.id.scalar << " (" << r.id.bits_text() << "), order " << r.id.order << ": "
+      << r.steps << " steps (" << r.rejected << " rejected) in " << r.seconds << " s\n";
+  if (r.complete) out << "  certified up to t = " << o.t_end << "; the state's largest width there " << r.final_width << "\n";
+  else if (!r.contact_stop.empty()) out << "  stopped: " << r.contact_stop << "\n";
+  else out << "  INCOMPLETE: " << r.reason << "; enclosed up to t = " << r.t_reached << "\n";
+  out << contact_lines.str();
+  for (std::size_t i = 0; i < r.value_names.size(); ++i)
+    out << "  " << r.value_names[i] << ": enclosed over every whole step; widest " << r.widest_over[i]
+        << (i < r.result_values ? " (its variation over the step included)\n" : " (constant in truth)\n");
+  out << "wrote " << (dir / "steps.csv").string() << (r.contacts.empty() ? "" : ", contacts.csv") << ", summary.json" << plotted
+      << "\n";
+  return {r.complete || !r.contact_stop.empty() ? 0 : 3, out.str()};
+}
+
+motion_outcome write_validity(const validity_report& r, const motion_options& o) {
+  const std::vector<piece_report>& done = r.run.done;
+  // The pieces, and the ranges of each verdict (adjacent pieces merged).
+  std::ostringstream csv, dat[3];
+  csv << "lo,hi,verdict,holds_until,first_failure_from,first_failure_to,steps,seconds\n";
+  nlohmann::json ranges = {{"holds", nlohmann::json::array()}, {"fails", nlohmann::json::array()}, {"undecided", nlohmann::json::array()}};
+  std::string last;
+  double piece_seconds = 0;
+  for (const piece_report& p : done) {
+    const std::string& v = p.verdict;
+    csv << p.lo << "," << p.hi << "," << v << "," << p.holds_until << "," << p.fail_from << "," << p.fail_to << "," << p.steps
+        << "," << p.seconds << "\n";
+    nlohmann::json& list = ranges[v];
+    if (v == last && !list.empty()) list.back()[1] = p.hi;
+    else list.push_back({p.lo, p.hi});
+    last = v;
+    piece_seconds += p.seconds;
+    const int k = v == "holds" ? 0 : v == "fails" ? 1 : 2;
+    const double x = (p.x_lo + p.x_hi) / 2, dx = (p.x_hi - p.x_lo) / 2;
+    dat[k] << x << " " << (p.y0 + p.y1) / 2 << " " << x - dx << " " << x + dx << " " << p.y0 << " " << p.y1 << "\n";
+  }
+  nlohmann::json summary = {{"command", "validity"}, {"scene", o.scene}, {"model", r.id.model}};
+  scalar_fields(summary, r.id);
+  summary.update({{"field", o.vary_field},
+                  {"range", {o.vary_lo, o.vary_hi}},
+                  {"t_end", o.t_end},
+                  {"resolution", r.resolution},
+                  {"pieces", done.size()},
+                  {"complete", r.run.stopped.empty()},
+                  {"reason", r.run.stopped},
+                  {"pieces_not_run", r.run.not_run},
+                  {"ranges", ranges},
+                  {"threads", r.threads},
+                  {"processes", r.processes},
+                  {"seconds", r.seconds},
+                  {"seconds_per_piece", done.empty() ? 0.0 : piece_seconds / static_cast<double>(done.size())}});
+  const std::filesystem::path dir(o.out);
+  std::filesystem::create_directories(dir);
+  write_whole(dir, "validity.csv", csv.str());
+  write_whole(dir, "summary.json", summary.dump(2) + "\n");
+  std::string plotted;
+  {
+    const std::string f = "$pieces";
+    const std::string data = datablock("pieces", dat[0].str() + "\n\n" + dat[1].str() + "\n\n" + dat[2].str());
+    const plot_outcome p = render_png(dir / "validity.png", data + "set title " +
+         gnuplot_quoted(o.scene + ": can the contacts hold on [0, " + o.t_end + "]? (" + r.id.scalar + ")") +
+         "\nset xlabel " + gnuplot_quoted(o.vary_field) + "\nset ylabel 't'\nset yrange [0:" + std::to_string(r.t_end * 1.1) +
+         "]\nset grid\nset key below\nset style fill solid 0.5\nplot " + f +
+         " index 0 using 1:2:3:4:5:6 with boxxyerror lc rgb 'forest-green' title 'holds over [0, T] (proved)', " + f +
+         " index 1 using 1:2:3:4:5:6 with boxxyerror lc rgb 'red' title 'fails (proved): the first failure lies within the box', " + f +
+         " index 2 using 1:2:3:4:5:6 with boxxyerror lc rgb 'gray' title 'undecided at the resolution (holds below the box)'\n",
+         900, 500);
+    plotted = plot_note(p, dir / "validity.png");
+  }
+  std::ostringstream out;
+  out << "validity of " << o.scene << "'s contacts on [0, " << o.t_end << "] for " << o.vary_field << " in [" << o.vary_lo
+      << ", " << o.vary_hi << "] (" << r.id.scalar << ", " << r.id.bits_text() << "): " << done.size() << " pieces in "
+      << r.seconds << " s on " << r.workers << (r.workers == 1 ? " worker" : " workers") << "\n";
+  if (!r.run.stopped.empty()) out << "  INCOMPLETE: " << r.run.stopped << "; " << r.run.not_run << " piece(s) not run\n";
+  for (const char* v : {"holds", "fails", "undecided"})
+    for (const auto& range : ranges[v])
+      out << "  " << v << " for " << o.vary_field << " in [" << range[0].get<std::string>() << ", "
+          << range[1].get<std::string>() << "]\n";
+  out << "wrote " << (dir / "validity.csv").string() << ", summary.json" << plotted << "\n";
+  return {r.run.stopped.empty() ? 0 : 3, out.str()};
+}
+
+}  // namespace appell::cli
