@@ -1,4 +1,4 @@
-// appell extremes [--out DIR]: the stability study.  For every point of every
+// appell extremes [--quiet] --out DIR: the stability study.  For every point of every
 // sweep (src/studies/extreme_sweeps.cpp) and every scalar: the correct digits against
 // mpfr at 2048 bits, the relative width of interval results, the
 // error_amplification check of point results, or the refusal (exit 3 of

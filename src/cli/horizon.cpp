@@ -50,10 +50,11 @@ std::string parse_horizon_arguments(int argc, char** argv, int first, horizon_op
       !why.empty())
     return why;
   if (std::string why = read_scene_argument(c, o.scene); !why.empty()) return why;
-  if (std::string why = read_out(c, o.out); !why.empty()) return why;
   o.quiet = c.has("--quiet");
   o.t_end = c.value_or("--t-end", "");
   o.every = c.value_or("--every", "");
+  if (o.t_end.empty()) return "--t-end: required (the horizon, a positive decimal)";
+  if (std::string why = read_out(c, o.out); !why.empty()) return why;
   if (c.has("--scalars")) {
     o.scalars.clear();
     std::stringstream ss(c.value_or("--scalars", ""));

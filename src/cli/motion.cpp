@@ -96,7 +96,9 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
       o.max_width = *width;
     }
   }
-  // a required flag last: a wrong value is named before a missing flag
+  // the required flags last, in the usage's order: a wrong value is named before a missing flag
+  if (o.t_end.empty()) return "--t-end: required (the horizon, a positive decimal)";
+  if (o.command == "validity" && o.vary_field.empty()) return "--vary: required (FIELD=lo:hi, the range to split)";
   return read_out(c, o.out);
 }
 

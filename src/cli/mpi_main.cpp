@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
   if (argc < 2 || std::string(argv[1]) != "reference") {
     if (root)
       std::cerr << "appell-mpi: usage: mpirun -np P appell-mpi reference SCENE --states FILE --out DIR "
-                   "[--scalar interval|mpfi] [--bits N] [--inputs decimal|binary64]\n"
+                   "[options as appell reference: --box, --trajectory, --scalar, --bits, --inputs, --project, --quiet]\n"
                    "       mpirun -np P appell-mpi validity SCENE --vary FIELD=lo:hi --t-end T --out DIR "
                    "[options as appell validity]\n";
     return 2;

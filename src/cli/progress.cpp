@@ -1,6 +1,7 @@
 // The progress line of every command (progress.hpp).
 #include "progress.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>

@@ -1,4 +1,4 @@
-// appell tradeoff SCENE [--out DIR] [--reps N]
+// appell tradeoff SCENE [--reps N] [--quiet] --out DIR
 //
 // For each scalar (mpfr and mpfi at 64, 113, 256 and 1024 bits), in one run:
 //  * ns_per_eval: the median over N batches of the time of one evaluation of
