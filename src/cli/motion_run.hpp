@@ -1,5 +1,5 @@
 // The body of `appell simulate` / `appell enclose` / the horizon's tracks for one
-// model in one scalar: included by the generated units (CMakeLists.txt), each of
+// model in one scalar: included by the generated units (cmake/instantiate.cmake), each of
 // which includes the models' motion headers first (io/model_motion.hpp).
 #pragma once
 
