@@ -1,5 +1,5 @@
 // The heavy top on its pivot (model heavy_top) in all seven scalars against
-// independent references written by hand for this test, evaluated in MPFR at
+// independent references written by hand (tests/independent/top_on_pivot.hpp), in MPFR at
 // 532 bits:
 //   - the accelerations from Lagrange's equations of the symmetric top
 //     (T = A/2 (theta'^2 + psi'^2 sin^2) + C/2 r^2, r = phi' + psi' cos theta,
@@ -21,6 +21,7 @@
 #include <boost/multiprecision/mpfr.hpp>
 #include <random>
 
+#include "independent/top_on_pivot.hpp"
 #include "appell/io/models/heavy_top.hpp"
 #include "appell/io/models/system.hpp"
 
@@ -29,10 +30,7 @@ using ref_t = boost::multiprecision::number<boost::multiprecision::mpfr_float_ba
 
 namespace {
 
-struct reference {
-  ref_t theta_ddot, phi_ddot, psi_ddot, force[3];
-  ref_t scale;  ///< magnitude of the terms that cancel (for point-type tolerances)
-};
+using reference = independent::top_on_pivot_reference<ref_t>;
 
 ref_t d(const decimal_field& x) { return ref_t(x.text); }
 
@@ -53,28 +51,8 @@ bool meet(const T& x, const T& y) {
 }
 
 reference closed_form(const heavy_top_input& in) {
-  using std::abs, std::sin, std::cos;
-  const ref_t A = d(in.A), C = d(in.C), m = d(in.mass), l = d(in.l), g = d(in.gravity);
-  const ref_t ps = d(in.psi), th = d(in.theta), psd = d(in.psi_dot), thd = d(in.theta_dot), phd = d(in.phi_dot);
-  const ref_t s = sin(th), c = cos(th), sp = sin(ps), cp = cos(ps), r = phd + psd * c;
-  reference out;
-  const ref_t t1 = A * psd * psd * s * c, t2 = -C * r * psd * s, t3 = m * g * l * s;
-  out.theta_ddot = (t1 + t2 + t3) / A;
-  const ref_t u1 = C * r * thd, u2 = -2 * A * psd * thd * c;
-  out.psi_ddot = (u1 + u2) / (A * s);
-  out.phi_ddot = -out.psi_ddot * c + psd * thd * s;
-  using v3 = Eigen::Matrix<ref_t, 3, 1>;
-  const v3 e3(0, 0, 1), n(cp, sp, 0), ez(s * sp, -s * cp, c);
-  const v3 w = e3 * psd + n * thd + ez * phd;
-  const v3 wdot = e3 * out.psi_ddot + n * out.theta_ddot + e3.cross(n) * (thd * psd) + ez * out.phi_ddot +
-                  w.cross(ez) * phd;
-  const v3 aG = (wdot.cross(ez) + w.cross(w.cross(ez))) * l;
-  const v3 F = aG * m + e3 * (m * g);
-  for (int i = 0; i < 3; ++i) out.force[i] = F(i);
-  out.scale = (abs(t1) + abs(t2) + abs(t3)) / A + (abs(u1) + abs(u2)) / (A * abs(s)) + abs(out.theta_ddot) +
-              abs(out.psi_ddot) + abs(out.phi_ddot) + abs(psd * thd) + m * (g + abs(l) * (w.squaredNorm() + wdot.norm())) +
-              1;
-  return out;
+  return independent::top_on_pivot_by_hand(d(in.A), d(in.C), d(in.mass), d(in.l), d(in.gravity), d(in.psi), d(in.theta),
+                                           d(in.psi_dot), d(in.theta_dot), d(in.phi_dot));
 }
 
 std::string decimal(std::mt19937_64& rng, double lo, double hi, int digits = 6) {
