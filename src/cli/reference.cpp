@@ -254,9 +254,6 @@ std::string parse_reference_arguments(int argc, char** argv, int first, referenc
                                           {"--quiet"}, 1, c);
       !why.empty())
     return why;
-  auto count = [](const std::string& v, std::size_t digits_max) {
-    return !v.empty() && v.size() <= digits_max && v.find_first_not_of("0123456789") == std::string::npos;
-  };
   r.states = c.value_or("--states", "");
   r.box = c.value_or("--box", "");
   r.trajectory = c.value_or("--trajectory", "");
@@ -264,19 +261,21 @@ std::string parse_reference_arguments(int argc, char** argv, int first, referenc
   r.project = c.value_or("--project", "");
   r.quiet = c.has("--quiet");
   if (c.has("--n")) {
-    const std::string v = c.value_or("--n", "");
-    if (!count(v, 8) || std::stoull(v) == 0) return "--n: expected a number of states from 1 to 10000000, got '" + v + "'";
-    r.n = static_cast<std::size_t>(std::stoull(v));
+    unsigned n = 0;
+    if (std::string why = parse_integer("--n", c.value_or("--n", ""), 1, 10000000, n); !why.empty()) return why;
+    r.n = n;
   }
   if (c.has("--seed")) {
     const std::string v = c.value_or("--seed", "");
-    if (!count(v, 19)) return "--seed: expected a nonnegative integer, got '" + v + "'";
+    // 64 bits: more than parse_integer takes
+    if (v.empty() || v.size() > 19 || v.find_first_not_of("0123456789") != std::string::npos)
+      return "--seed: expected a nonnegative integer, got '" + v + "'";
     r.seed = std::stoull(v);
   }
   if (c.has("--digits")) {
-    const std::string v = c.value_or("--digits", "");
-    if (!count(v, 2) || std::stoi(v) > 12) return "--digits: expected 0 to 12, got '" + v + "'";
-    r.digits = std::stoi(v);
+    unsigned d = 0;
+    if (std::string why = parse_integer("--digits", c.value_or("--digits", ""), 0, 12, d); !why.empty()) return why;
+    r.digits = static_cast<int>(d);
   }
   if (c.has("--inputs")) {
     const std::string v = c.value_or("--inputs", "");
