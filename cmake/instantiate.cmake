@@ -126,8 +126,9 @@ endfunction()
 
 # `appell linearize` runs the generic path on multi_dual numbers: one unit per scalar.  The
 # linearization runs once per command and took 7 x 60 s to compile at -O3 (the heaviest units of
-# the library): -O1, the same results (46 s -> 28 s a unit without the PCH; with the library's -O3
-# PCH 60 s -> 55 s: docs/architecture.md, "Build time").
+# the library): -O1, the same results (46 s -> 28 s a unit without the PCH).  Without the library's
+# precompiled header: GCC compiles the templates parsed in a precompiled header at the header's
+# optimization level, so with it these units took 55 s at -O1 (docs/architecture.md, "Build time").
 function(appell_generate_linearize_units out_var)
   set(sources "")
   math(EXPR last "${APPELL_STANDARD_SCALAR_COUNT} - 1")
@@ -140,7 +141,7 @@ function(appell_generate_linearize_units out_var)
 template appell::linearization_report<appell::standard_scalar_at<${index}>>
 appell::linearize_scene<appell::standard_scalar_at<${index}>>(const appell::system_input&);
 ")
-    set_source_files_properties(${file} PROPERTIES COMPILE_OPTIONS $<$<CONFIG:Release>:-O1>)
+    set_source_files_properties(${file} PROPERTIES COMPILE_OPTIONS $<$<CONFIG:Release>:-O1> SKIP_PRECOMPILE_HEADERS ON)
     list(APPEND sources ${file})
   endforeach()
   set(${out_var} ${sources} PARENT_SCOPE)

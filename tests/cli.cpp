@@ -252,7 +252,7 @@ BOOST_AUTO_TEST_CASE(bad_command_lines_exit_2_with_one_line) {
   // one --bits parser for every command: digits only ("+64" and " 64" were taken by simulate,
   // enclose and horizon, refused by eval)
   for (const char* bits : {"0", "1", "-5", "100000000", "1e3", "12x", "", "+64", " 64", "64 "})
-    for (const std::string command : {"eval " + good_scene + " --scalar mpfi",
+    for (const std::string& command : {"eval " + good_scene + " --scalar mpfi",
                                       "simulate " + good_scene + " --scalar mpfr --t-end 1 --out " + (work / "bits").string(),
                                       "reference " + good_scene + " --scalar mpfi --n 1 --out " + (work / "bits").string()})
       expect_bad_input(command + " --bits '" + std::string(bits) + "'", "--bits");
@@ -264,7 +264,7 @@ BOOST_AUTO_TEST_CASE(bad_command_lines_exit_2_with_one_line) {
   expect_bad_input("tradeoff", "tradeoff: no scene given");
   // one command-line reader (flags.hpp): the same refusals in every command
   const std::string out = " --out " + (work / "flags").string();
-  for (const std::string command : {"eval " + good_scene, "linearize " + good_scene, "tradeoff " + good_scene + out,
+  for (const std::string& command : {"eval " + good_scene, "linearize " + good_scene, "tradeoff " + good_scene + out,
                                     "extremes" + out, "simulate " + good_scene + " --t-end 1" + out,
                                     "enclose " + good_scene + " --t-end 1" + out, "horizon " + good_scene + " --t-end 1" + out,
                                     "reference " + good_scene + " --n 1 --box 'omega[0]=0:1'" + out}) {
@@ -275,7 +275,7 @@ BOOST_AUTO_TEST_CASE(bad_command_lines_exit_2_with_one_line) {
                      twice + ": given twice");
   }
   // --out is required wherever a command writes files (tradeoff and extremes had defaults)
-  for (const std::string command : {"tradeoff " + good_scene, std::string("extremes"), "simulate " + good_scene + " --t-end 1",
+  for (const std::string& command : {"tradeoff " + good_scene, std::string("extremes"), "simulate " + good_scene + " --t-end 1",
                                     "enclose " + good_scene + " --t-end 1", "horizon " + good_scene + " --t-end 1",
                                     "reference " + good_scene + " --n 1 --box 'omega[0]=0:1'"})
     expect_bad_input(command, "--out DIR is required");

@@ -66,10 +66,7 @@ std::string parse_horizon_arguments(int argc, char** argv, int first, horizon_op
 }
 
 int horizon(const horizon_options& given) {
-  horizon_options o = given;
-  if (o.scene.empty()) throw input_error("horizon: no scene given");
-  if (o.t_end.empty()) throw input_error("--t-end: required (the horizon, a positive decimal)");
-  if (o.out.empty()) throw input_error("horizon: --out DIR is required");
+  horizon_options o = given;  // parse_horizon_arguments has checked the required flags (scene, --t-end, --out)
   const double t_end = positive_decimal("--t-end", o.t_end);
   for (const auto& s : o.scalars) {
     const auto infos = standard_scalar_infos();
@@ -223,7 +220,7 @@ int horizon(const horizon_options& given) {
   if (period > 0) std::cout << " (" << t_end / period << " periods of " << period << ")";
   std::cout << "; reference: " << reference_kind << "\n" << table.str();
   std::cout << "wrote " << (dir / "horizon.csv").string() << ", summary.json" << plotted << "\n";
-  return 0;
+  return static_cast<int>(appell::exit_status::done);
 }
 
 }  // namespace appell::cli

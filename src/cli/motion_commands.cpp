@@ -103,10 +103,7 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
 }
 
 int motion(const motion_options& given) {
-  motion_options o = given;
-  if (o.scene.empty()) throw input_error(o.command + ": no scene given");
-  if (o.t_end.empty()) throw input_error("--t-end: required (the horizon, a positive decimal)");
-  if (o.out.empty()) throw input_error(o.command + ": --out DIR is required");
+  motion_options o = given;  // parse_motion_arguments has checked the required flags (scene, --t-end, --out)
   const double horizon = positive_decimal("--t-end", o.t_end);
   if (o.command == "simulate") {
     if (o.every.empty()) {
@@ -122,7 +119,6 @@ int motion(const motion_options& given) {
   if (o.mu && o.command != "enclose" && o.command != "validity")
     throw input_error("--mu: applies to enclose and validity (every contact's friction coefficient)");
   if (o.command == "validity") {
-    if (o.vary_field.empty()) throw input_error("--vary: required (FIELD=lo:hi, the range to split)");
     if (o.mu && o.vary_field == "mu") throw input_error("--mu: fixes mu, which --vary mu varies; give one of them");
     if (o.locate || o.until_contact_fails)
       throw input_error(std::string(o.locate ? "--locate" : "--until-contact-fails") + ": applies to enclose, not validity");

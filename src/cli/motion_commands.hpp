@@ -108,7 +108,9 @@ double positive_decimal(const std::string& flag, const std::string& text);
 /// Parses argv[first..] into o; returns "" or the usage error (naming the flag).
 std::string parse_motion_arguments(int argc, char** argv, int first, motion_options& o);
 
-/// Validates the options, reads the scene, runs it; returns the exit status.
+/// Validates the options' combinations, reads the scene, runs it; returns the exit status.  The
+/// options come from parse_motion_arguments, which has refused a missing scene, --t-end, --out
+/// (and validity's --vary): the one place the required flags are checked.
 int motion(const motion_options& o);
 
 /// appell horizon SCENE --t-end T [--every DT] [--scalars LIST] --out DIR: the long-horizon study.
@@ -118,6 +120,7 @@ struct horizon_options {
   bool quiet = false;
 };
 std::string parse_horizon_arguments(int argc, char** argv, int first, horizon_options& o);
+/// Runs the study on options from parse_horizon_arguments (which checked scene, --t-end, --out).
 int horizon(const horizon_options& o);
 
 }  // namespace appell::cli

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "appell/errors.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "plot.hpp"
 #include "write_whole.hpp"
@@ -149,7 +150,7 @@ motion_outcome write_simulate(const simulate_report& r, const motion_options& o)
     else out << "  " << q.name << ": largest relative drift " << q.worst << "\n";
   }
   out << "wrote " << (dir / "trajectory.csv").string() << ", summary.json" << plotted << "\n";
-  return {complete ? 0 : 3, out.str()};
+  return {complete ? static_cast<int>(appell::exit_status::done) : static_cast<int>(appell::exit_status::no_certificate), out.str()};
 }
 
 motion_outcome write_enclose(const enclose_report& r, const motion_options& o) {
@@ -229,7 +230,7 @@ motion_outcome write_enclose(const enclose_report& r, const motion_options& o) {
         << (i < r.result_values ? " (its variation over the step included)\n" : " (constant in truth)\n");
   out << "wrote " << (dir / "steps.csv").string() << (r.contacts.empty() ? "" : ", contacts.csv") << ", summary.json" << plotted
       << "\n";
-  return {r.complete || !r.contact_stop.empty() ? 0 : 3, out.str()};
+  return {r.complete || !r.contact_stop.empty() ? static_cast<int>(appell::exit_status::done) : static_cast<int>(appell::exit_status::no_certificate), out.str()};
 }
 
 motion_outcome write_validity(const validity_report& r, const motion_options& o) {
@@ -289,14 +290,14 @@ motion_outcome write_validity(const validity_report& r, const motion_options& o)
   std::ostringstream out;
   out << "validity of " << o.scene << "'s contacts on [0, " << o.t_end << "] for " << o.vary_field << " in [" << o.vary_lo
       << ", " << o.vary_hi << "] (" << r.id.scalar << ", " << r.id.bits_text() << "): " << done.size() << " pieces in "
-      << r.seconds << " s on " << r.workers << (r.workers == 1 ? " worker" : " workers") << "\n";
+      << r.seconds << " s on " << r.workers() << (r.workers() == 1 ? " worker" : " workers") << "\n";
   if (!r.run.stopped.empty()) out << "  INCOMPLETE: " << r.run.stopped << "; " << r.run.not_run << " piece(s) not run\n";
   for (const char* v : {"holds", "fails", "undecided"})
     for (const auto& range : ranges[v])
       out << "  " << v << " for " << o.vary_field << " in [" << range[0].get<std::string>() << ", "
           << range[1].get<std::string>() << "]\n";
   out << "wrote " << (dir / "validity.csv").string() << ", summary.json" << plotted << "\n";
-  return {r.run.stopped.empty() ? 0 : 3, out.str()};
+  return {r.run.stopped.empty() ? static_cast<int>(appell::exit_status::done) : static_cast<int>(appell::exit_status::no_certificate), out.str()};
 }
 
 }  // namespace appell::cli

@@ -86,7 +86,9 @@ struct validity_report {
   run_identity id;
   double resolution = 0, t_end = 0, seconds = 0;
   pieces_outcome run;
-  int threads = 1, processes = 1, workers = 1;
+  int threads = 1, processes = 1;  ///< rank 0's threads; the MPI processes (1 without MPI)
+  /// rank 0's threads, then one worker per other rank
+  int workers() const { return threads + processes - 1; }
 };
 
 /// Writes DIR/validity.csv, summary.json and validity.png; the summary lines and exit status.

@@ -76,11 +76,14 @@ void column_names(const std::vector<ode::named_values<S>>& group, const std::str
 }
 
 
-/// The scalar's bits before the evaluation scope raises mpfi's working precision by its guard
-/// bits (set by run_model_motion): what the run reports as its bits, as `appell eval` does.
-inline thread_local unsigned requested_bits = 0;
-/// mp_precision_bits() at the same moment: the --bits asked for (runtime-precision scalars).
-inline thread_local unsigned asked_bits = 0;
+/// The bits of the run, captured by run_model_motion before the evaluation scope raises mpfi's
+/// working precision by its guard bits: `used`, the scalar's bits (what the run reports as its
+/// bits, as `appell eval` does), and `asked`, mp_precision_bits() at the same moment (the --bits
+/// asked for, for runtime-precision scalars).  0: not captured.
+struct run_bits_t {
+  unsigned used = 0, asked = 0;
+};
+inline thread_local run_bits_t run_bits;
 
 /// The run's scalar and settings, for its report (motion_output.hpp): "bits" the bits used and
 /// "bits_requested" where --bits asked for another count, as `appell eval` reports them.
@@ -89,9 +92,9 @@ run_identity identity_of(const scene_input& scene, int order, double tol) {
   run_identity id;
   id.model = scene.model;
   id.scalar = scalar_traits<T>::name;
-  id.bits = requested_bits ? requested_bits : scalar_traits<T>::precision_bits();
+  id.bits = run_bits.used ? run_bits.used : scalar_traits<T>::precision_bits();
   if constexpr (scalar_traits<T>::runtime_precision)
-    if (asked_bits && id.bits != asked_bits) id.bits_requested = asked_bits;
+    if (run_bits.asked && id.bits != run_bits.asked) id.bits_requested = run_bits.asked;
   id.order = order;
   id.tol = tol;
   return id;
@@ -544,7 +547,6 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     r.threads = std::max(1, net.threads);
     r.processes = net.remote ? net.remote->workers() + 1 : 1;
-    r.workers = std::max(1, net.threads) + (net.remote ? net.remote->workers() : 0);
     return write_validity(r, o);
   }
 }
@@ -589,8 +591,7 @@ motion_outcome run_model_motion(const scene_input& scene, const motion_options& 
   if constexpr (!moving_model<Model>) {
     throw std::logic_error("run_model_motion: model " + scene.model + " does not move");
   } else {
-    motion_detail::requested_bits = scalar_traits<T>::precision_bits();
-    motion_detail::asked_bits = mp_precision_bits();
+    motion_detail::run_bits = {scalar_traits<T>::precision_bits(), mp_precision_bits()};
     const evaluation_scope<T> scope;
     const auto m = Model::template prepare<T>(scene.as<typename Model::input>());
     const auto [prob, x0] = model_motion<Model>::template start<T>(m);

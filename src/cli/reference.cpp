@@ -22,6 +22,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "appell/errors.hpp"
+#include "appell/io/amplification.hpp"
 #include "appell/io/scene.hpp"
 #include "appell/io/urdf.hpp"
 #include "appell/io/files.hpp"
@@ -124,12 +126,18 @@ struct state_result {
 template <Scalar T>
 void certify(const scene_input& scene, state_result& r) {
   const evaluation<T> e = evaluate<T>(scene);
+  // appell's own interval<double> enclosure (the tolerance's floor) and the amplification from
+  // it: in interval, e itself (one evaluation a state, not three)
   std::optional<evaluation<interval>> e53;
-  try {
-    e53 = evaluate<interval>(scene);
-  } catch (const std::exception&) {
+  if constexpr (std::is_same_v<T, interval>) {
+    e53 = e;
+  } else {
+    try {
+      e53 = evaluate<interval>(scene);
+    } catch (const std::exception&) {
+    }
   }
-  r.amplification = error_amplification(scene);
+  r.amplification = e53 ? error_amplification(scene, *e53) : error_amplification(scene);
   for (const bool derived : {false, true}) {
     const auto& group = derived ? e.derived : e.results;
     for (std::size_t i = 0; i < group.size(); ++i) {
@@ -427,9 +435,9 @@ int reference_run::write(const std::vector<reference_state_output>& outputs, int
   if (refused) {
     std::cerr << "appell: " << refused << " of " << outputs.size()
               << " states refused or not certified (their reasons are in reference.csv)\n";
-    return 3;
+    return static_cast<int>(appell::exit_status::no_certificate);
   }
-  return 0;
+  return static_cast<int>(appell::exit_status::done);
 }
 
 void show_states_done(progress& line, std::size_t done, std::size_t total) {

@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "appell/errors.hpp"
 #include "appell/io/json.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/format.hpp"
@@ -167,7 +168,7 @@ int score(const score_options& o) {
         900, 500);
     std::cout << (p.written ? "wrote " + o.plot : "no plot: " + p.why) << "\n";
   }
-  return all_within && all_digits ? 0 : 1;
+  return all_within && all_digits ? static_cast<int>(appell::exit_status::done) : static_cast<int>(appell::exit_status::check_failed);
 }
 
 }  // namespace appell::cli

@@ -1,6 +1,7 @@
 // The scene layer's model-independent part: the registry lookup, reading and
 // validating scene files, and the measured error amplification.
 #include "appell/io/scene.hpp"
+#include "appell/io/amplification.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -90,6 +91,11 @@ double amplification_of(const evaluation<I>& e) {
 }
 
 }  // namespace
+
+double error_amplification(const scene_input& scene, const evaluation<interval>& e) {
+  const double a = amplification_of(e);
+  return std::isfinite(a) ? a : error_amplification(scene);
+}
 
 double error_amplification(const scene_input& scene) {
   // interval<double>: the rounding of double arithmetic, enclosed
