@@ -21,6 +21,7 @@
 #include <random>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 #include "appell/errors.hpp"
 #include "appell/io/amplification.hpp"
@@ -50,6 +51,53 @@ std::string sha256(const std::string& data) {
   for (unsigned int i = 0; i < length; ++i) out << std::hex << std::setw(2) << std::setfill('0') << static_cast<int>(md[i]);
   return out.str();
 }
+
+// ---------------------------------------------------------------------------
+// A state's line of reference.jsonl, written directly: the bytes nlohmann::ordered_json's dump()
+// writes for the same object (the dataset's contract), without building its tree (which took 30%
+// of a state's time in `interval`: docs/reference-values.md).
+
+/// A string as JSON: printable ASCII other than '"' and '\\' as it is (nlohmann's dump writes
+/// those bytes unchanged), anything else through nlohmann's own serializer (escapes, UTF-8 checks).
+std::string json_string(std::string_view v) {
+  for (const char c : v)
+    if (c < 0x20 || c > 0x7e || c == '"' || c == '\\') return nlohmann::json(std::string(v)).dump();
+  std::string out;
+  out.reserve(v.size() + 2);
+  out += '"';
+  out += v;
+  out += '"';
+  return out;
+}
+
+/// A JSON object of serialized values, in insertion order; a key given again replaces its value
+/// in place (as assignment to an ordered_json's key does).
+class json_line {
+ public:
+  void add(std::string_view key, std::string value) {
+    for (auto& [k, v] : members_)
+      if (k == key) {
+        v = std::move(value);
+        return;
+      }
+    members_.emplace_back(std::string(key), std::move(value));
+  }
+  bool empty() const { return members_.empty(); }
+  std::string text() const {
+    std::string out = "{";
+    for (std::size_t i = 0; i < members_.size(); ++i) {
+      if (i) out += ',';
+      out += json_string(members_[i].first);
+      out += ':';
+      out += members_[i].second;
+    }
+    out += '}';
+    return out;
+  }
+
+ private:
+  std::vector<std::pair<std::string, std::string>> members_;
+};
 
 // ---------------------------------------------------------------------------
 // One quantity of one state.
@@ -342,35 +390,35 @@ reference_state_output reference_run::compute(std::size_t i) const {
   reference_state_output out;
   out.certified = s.certified;
   std::ostringstream csv;
-  nlohmann::ordered_json line;
-  line["state"] = s.name;
-  line["status"] = s.certified ? "certified" : "refused";
-  nlohmann::ordered_json inputs = nlohmann::ordered_json::object();
-  for (const auto& [k, v] : s.inputs) inputs[k] = v;
-  line["inputs"] = inputs;
+  json_line line;
+  line.add("state", json_string(s.name));
+  line.add("status", json_string(s.certified ? "certified" : "refused"));
+  json_line inputs;
+  for (const auto& [k, v] : s.inputs) inputs.add(k, json_string(v));
+  line.add("inputs", inputs.text());
   if (!s.certified) {
-    line["reason"] = s.reason;
+    line.add("reason", json_string(s.reason));
     csv << csv_field(s.name) << ",,refused,,,,,,," << csv_field(s.reason) << "\n";
   } else {
-    line["error_amplification"] = s.amplification;
-    nlohmann::ordered_json qs = nlohmann::ordered_json::object(), ds = nlohmann::ordered_json::object();
+    line.add("error_amplification", nlohmann::json(s.amplification).dump());
+    json_line qs, ds;
     for (const quantity& q : s.quantities) {
       csv << csv_field(s.name) << "," << q.name << ",certified," << q.lower << "," << q.upper << "," << q.nearest_double
           << "," << (q.decided ? 1 : 0) << "," << q.rel_error_bound << "," << q.tolerance << ",\n";
-      nlohmann::ordered_json j;
-      j["lower"] = q.lower;
-      j["upper"] = q.upper;
-      j["double"] = q.nearest_double;
-      j["decided"] = q.decided;
-      if (!q.rel_error_bound.empty()) j["rel_error_bound"] = q.rel_error_bound;
-      j["tolerance"] = q.tolerance;
-      (q.derived ? ds : qs)[q.name] = j;
+      json_line j;
+      j.add("lower", json_string(q.lower));
+      j.add("upper", json_string(q.upper));
+      j.add("double", json_string(q.nearest_double));
+      j.add("decided", q.decided ? "true" : "false");
+      if (!q.rel_error_bound.empty()) j.add("rel_error_bound", json_string(q.rel_error_bound));
+      j.add("tolerance", json_string(q.tolerance));
+      (q.derived ? ds : qs).add(q.name, j.text());
     }
-    line["quantities"] = qs;
-    if (!ds.empty()) line["derived"] = ds;
+    line.add("quantities", qs.text());
+    if (!ds.empty()) line.add("derived", ds.text());
   }
   out.csv = csv.str();
-  out.jsonl = line.dump() + "\n";
+  out.jsonl = line.text() + "\n";
   return out;
 }
 
