@@ -141,7 +141,10 @@ function(appell_generate_linearize_units out_var)
 template appell::linearization_report<appell::standard_scalar_at<${index}>>
 appell::linearize_scene<appell::standard_scalar_at<${index}>>(const appell::system_input&);
 ")
-    set_source_files_properties(${file} PROPERTIES COMPILE_OPTIONS $<$<CONFIG:Release>:-O1> SKIP_PRECOMPILE_HEADERS ON)
+    set_source_files_properties(${file} PROPERTIES COMPILE_OPTIONS $<$<CONFIG:Release>:-O1>)
+    if(CMAKE_BUILD_TYPE STREQUAL "Release")  # other builds compile them at the header's own level
+      set_source_files_properties(${file} PROPERTIES SKIP_PRECOMPILE_HEADERS ON)
+    endif()
     list(APPEND sources ${file})
   endforeach()
   set(${out_var} ${sources} PARENT_SCOPE)
