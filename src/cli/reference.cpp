@@ -176,12 +176,14 @@ void certify(const scene_input& scene, state_result& r) {
   const evaluation<T> e = evaluate<T>(scene);
   // appell's own interval<double> enclosure (the tolerance's floor) and the amplification from
   // it: in interval, e itself (one evaluation a state, not three)
-  std::optional<evaluation<interval>> e53;
+  std::optional<evaluation<interval>> own53;  // in mpfi only
+  const evaluation<interval>* e53 = nullptr;
   if constexpr (std::is_same_v<T, interval>) {
-    e53 = e;
+    e53 = &e;
   } else {
     try {
-      e53 = evaluate<interval>(scene);
+      own53 = evaluate<interval>(scene);
+      e53 = &*own53;
     } catch (const std::exception&) {
     }
   }
