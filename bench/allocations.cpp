@@ -1,7 +1,7 @@
 // Heap allocations per evaluation (issue "speed without the heap", point 1: the profile before).
 //
 // For the scenes of appell_bench_generic, the heavy top, the system files of the same scenes, the
-// Whipple bicycle and a URDF robot, in every fixed-size scalar, counts the calls of
+// Whipple bicycle and a URDF robot, in every scalar (mpfr and mpfi at 256 bits), counts the calls of
 // malloc, calloc and realloc (replaced below, process-wide: operator new, std::vector,
 // std::string, shared_ptr go through malloc, and so do Eigen's dynamic matrices, which a replaced
 // operator new alone would miss) during one compute<T>() of the prepared scene, after one call not
@@ -67,8 +67,10 @@ int main(int argc, char** argv) {
   std::printf("%-34s %-12s %12s %12s\n", "scene", "scalar", "allocations", "bytes");
   for (const std::string& file : files) {
     const scene_input scene = read_scene_file(file);
-    for (const char* scalar : {"double", "long-double", "dd", "float128", "interval"}) {
-      with_scalar(scalar, std::nullopt, [&]<class T>(std::type_identity<T>) {
+    for (const char* scalar : {"double", "long-double", "dd", "float128", "interval", "mpfr", "mpfi"}) {
+      const bool mp = std::string(scalar) == "mpfr" || std::string(scalar) == "mpfi";
+      // mpfr and mpfi at 256 bits (their default; the significands inside the values)
+      with_scalar(scalar, mp ? std::optional<unsigned>(256) : std::nullopt, [&]<class T>(std::type_identity<T>) {
         const prepared_scene<T> prepared = prepare<T>(scene);
         (void)compute<T>(prepared);  // not counted: statics, caches
         allocations = bytes = 0;

@@ -17,16 +17,22 @@
 //  * the rest of the backend's surface: str and its round trip, conversions,
 //    pow (zero bases, aliasing), floor/ceil, frexp, numeric_limits, and MPFI's
 //    cbrt, log1p, expm1, asinh, acosh, atanh, hypot.
+//  * relocation: a value's bytes moved to new storage (as Eigen's conservativeResize does)
+//    make a valid value, at 256 bits and below (significands inside the value) and above.
 // CTest runs this suite a second time under valgrind (mpfi_backend_memcheck)
 // when valgrind is installed: invalid accesses and leaks fail it.
 #define BOOST_TEST_MODULE mpfi_backend
 #include <boost/test/unit_test.hpp>
 
+#include <Eigen/Core>
 #include <boost/multiprecision/mpfi.hpp>
 #include <cmath>
+#include <cstring>
+#include <new>
 #include <random>
 
 #include "appell/scalar/decimal.hpp"
+#include "appell/scalar/eigen.hpp"
 #include "appell/scalar/functions.hpp"
 
 using namespace appell;
@@ -330,8 +336,8 @@ BOOST_AUTO_TEST_CASE(text_round_trips_and_encloses) {
   const mp_precision_scope scope(113);
   for (int k = 0; k < 2000; ++k) {
     mpfr lo = std::ldexp(std::uniform_real_distribution<double>(-1, 1)(rng), uniform(-300, 300));
-    lo /= 3;  // all 113 bits: rounded to mpfi's exact 113 (mpfr values carry Boost's 114)
-    mpfr_prec_round(lo.backend().data(), static_cast<mpfr_prec_t>(mp_precision_bits()), MPFR_RNDN);
+    lo /= 3;  // all 113 bits (mpfr and mpfi both have exactly 113)
+    BOOST_TEST_REQUIRE(lo.backend().prec() == static_cast<mpfr_prec_t>(mp_precision_bits()));
     const mpfr hi = lo + abs(lo) * std::ldexp(1.0, -uniform(20, 100));
     const mpfi x = mpfi_from_bounds(lo, hi);
     const mpfi y(x.str(0));  // "{a,b}" at full precision
@@ -484,4 +490,35 @@ BOOST_AUTO_TEST_CASE(mpfi_only_functions_contain_320_bit_values) {
     }
   }
   BOOST_TEST_MESSAGE("MPFI-only functions: " << checked << " points contained");
+}
+
+// Up to 256 bits a value keeps both bounds' significands inside itself: bytes moved to new
+// storage without a constructor (Eigen's conservativeResize reallocs its elements) still make a
+// valid value, with the bounds in either order (negate() swaps them), and so does Eigen's resize.
+BOOST_AUTO_TEST_CASE(values_survive_bitwise_relocation) {
+  for (const unsigned bits : {64u, 256u, 257u, 1000u}) {
+    const mp_precision_scope scope(bits);
+    for (const bool negated : {false, true}) {
+      mpfi third = mpfi(1) / 3;
+      if (negated) third = -third;
+      alignas(mpfi) unsigned char from[sizeof(mpfi)], to[sizeof(mpfi)];
+      new (from) mpfi(third);
+      std::memcpy(to, from, sizeof(mpfi));
+      std::memset(from, 0xA5, sizeof(mpfi));  // the old place overwritten
+      mpfi& moved = *std::launder(reinterpret_cast<mpfi*>(to));
+      BOOST_TEST(same(&moved.backend().data()->left, &third.backend().data()->left));
+      BOOST_TEST(same(&moved.backend().data()->right, &third.backend().data()->right));
+      moved = moved * 3;
+      BOOST_TEST(contains(moved, mpfr(negated ? -1 : 1).backend().data()));
+      moved.~mpfi();
+    }
+    Eigen::Matrix<mpfi, Eigen::Dynamic, 1> x(3);
+    for (int i = 0; i < 3; ++i) x(i) = mpfi(i + 1) / 7;
+    const Eigen::Matrix<mpfi, Eigen::Dynamic, 1> before = x;
+    x.conservativeResize(300);
+    for (int i = 0; i < 3; ++i) {
+      BOOST_TEST(same(&x(i).backend().data()->left, &before(i).backend().data()->left));
+      BOOST_TEST(same(&x(i).backend().data()->right, &before(i).backend().data()->right));
+    }
+  }
 }

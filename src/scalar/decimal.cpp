@@ -19,37 +19,26 @@
 namespace appell {
 
 // --- mp precision ---------------------------------------------------------
-namespace {
-// The smallest Boost precision setting (decimal digits) that gives at least `bits` bits.
-unsigned digits10_holding(unsigned bits) {
-  unsigned d10 = 1;
-  while (boost::multiprecision::detail::digits10_2_2(d10) < bits) ++d10;
-  return d10;
-}
-}  // namespace
-
 unsigned set_mp_precision_bits(unsigned bits) {
   if (bits < 2) throw parse_error("precision must be at least 2 bits");
-  mpfr::default_precision(digits10_holding(bits));
+  mp::mpfr_backend::default_bits(bits);
   mp::mpfi_backend::default_bits(bits);
   return bits;
 }
 
-// The bits of new mpfi values: exactly those asked for (appell's backend).
+// The bits of new mpfr and mpfi values: exactly those asked for (appell's backends).
 unsigned mp_precision_bits() { return mp::mpfi_backend::default_bits(); }
 
-unsigned mpfr_precision_bits() {
-  return boost::multiprecision::detail::digits10_2_2(mpfr::default_precision());
-}
+unsigned mpfr_precision_bits() { return mp::mpfr_backend::default_bits(); }
 
-// Saves and restores both settings as they were (mpfr's in decimal digits, mpfi's in bits).
+// Saves and restores both settings as they were.
 mp_precision_scope::mp_precision_scope(unsigned bits)
-    : saved_mpfr_digits10_(mpfr::default_precision()),
+    : saved_mpfr_bits_(mp::mpfr_backend::default_bits()),
       saved_mpfi_bits_(mp::mpfi_backend::default_bits()),
       bits_(set_mp_precision_bits(bits)) {}
 
 mp_precision_scope::~mp_precision_scope() {
-  mpfr::default_precision(saved_mpfr_digits10_);
+  mp::mpfr_backend::default_bits(saved_mpfr_bits_);
   mp::mpfi_backend::default_bits(saved_mpfi_bits_);
 }
 
@@ -329,7 +318,7 @@ int decimal_sign_of_sum(std::initializer_list<std::pair<int, std::string_view>> 
 namespace {
 mpfr mpfr_at_prec(mpfr_prec_t prec) {
   mpfr r;
-  mpfr_set_prec(r.backend().data(), prec);
+  r.backend().set_prec(prec);
   return r;
 }
 }  // namespace

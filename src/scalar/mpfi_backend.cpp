@@ -265,13 +265,13 @@ void eval_frexp(mpfi_backend& r, const mpfi_backend& x, int* e) {
   *e = static_cast<int>(l);
 }
 
-void assign_components(mpfi_backend& r, const mpfr_b& a, const mpfr_b& b) {
+void assign_components(mpfi_backend& r, const mpfr_backend& a, const mpfr_backend& b) {
   if (mpfr_nan_p(a.data()) || mpfr_nan_p(b.data()) || mpfr_cmp(a.data(), b.data()) > 0)
     throw std::runtime_error("an interval needs lower <= upper, and no NaN");
   mpfi_interv_fr(r.data(), a.data(), b.data());  // outward at r's precision
 }
 
-void generic_interconvert(mpfr_b& to, const mpfi_backend& from,
+void generic_interconvert(mpfr_backend& to, const mpfi_backend& from,
                           const boost::mpl::int_<boost::multiprecision::number_kind_floating_point>&,
                           const boost::mpl::int_<boost::multiprecision::number_kind_floating_point>&) {
   mpfi_mid(to.data(), from.data());

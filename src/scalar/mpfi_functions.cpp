@@ -8,7 +8,7 @@ namespace appell {
 namespace {
 mpfr pow_dir(const mpfr& x, long n, mpfr_rnd_t rnd) {
   mpfr r;
-  mpfr_set_prec(r.backend().data(), mpfr_get_prec(x.backend().data()));
+  r.backend().set_prec(x.backend().prec());
   mpfr_pow_si(r.backend().data(), x.backend().data(), n, rnd);
   return r;
 }

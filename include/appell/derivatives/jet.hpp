@@ -298,7 +298,7 @@ struct jet {
   ///
   /// Coefficients of a fixed-size scalar (double, long double, interval, dd, float128) are kept
   /// inline up to order 7, longer ones in blocks of the thread's pool (detail::jet_block_pool);
-  /// mpfr and mpfi allocate their limbs anyway.
+  /// mpfr and mpfi keep one inline (a value of theirs is 64 bytes or more).
   static constexpr std::size_t inline_coefficients = scalar_traits<T>::runtime_precision ? 1 : 8;
   boost::container::small_vector<T, inline_coefficients, detail::jet_allocator<T>> c;
 

@@ -7,10 +7,13 @@
 // evaluation's time (callgrind, euler_body at 113 bits: malloc, free and
 // mpfr_init2 above 60% of the instructions) and twice what an mpfr value costs.
 //
-// mpfi_backend keeps both bounds' significands in ONE block, through MPFR's
-// documented custom interface (mpfr_custom_init_set): a value costs one
-// allocation, as an mpfr value does, and a new value is set to [+0, -0]
-// without a call into MPFR.  The bounds remain ordinary MPFR numbers to every
+// mpfi_backend keeps both bounds' significands inside the value up to
+// `inline_bits` bits a bound (256), and in ONE block above, through MPFR's
+// documented custom interface (mpfr_custom_init_set): up to 256 bits a value
+// costs no allocation at all, above one, and a new value is set to [+0, -0]
+// without a call into MPFR.  An inline value's significand pointers point into
+// the object itself; they are re-aimed on access (data(), ensure()) when the
+// object was relocated bitwise (Eigen's conservativeResize reallocs its elements).  The bounds remain ordinary MPFR numbers to every
 // MPFR and MPFI function, with three exceptions that the MPFR manual states
 // for custom numbers: mpfr_set_prec, mpfr_prec_round and mpfr_clear must
 // never see them.  Hence:
@@ -20,7 +23,9 @@
 //   * mpfr_swap of a bound with a number outside this value is forbidden
 //     (the two bounds of one value may be swapped: MPFI does, to reorder them).
 // The block's owner checks at release that both bounds still point into it,
-// and aborts with a message otherwise (never a silent heap corruption).
+// and an inline value on access that its bounds are its own two halves (or
+// both moved by one relocation), and aborts with a message otherwise (never a
+// silent heap corruption).
 // MPFI's functions were checked for this (objdump of libmpfi: only
 // mpfi_set_prec, mpfi_round_prec and mpfi_swap change or exchange a bound's
 // significand, and mpfi_revert_if_needed swaps the two bounds of one value).
@@ -45,13 +50,16 @@
 #include <boost/multiprecision/mpfi.hpp>  // BOOST_MULTIPRECISION_MPFI_DEFAULT_PRECISION
 #include <boost/multiprecision/mpfr.hpp>
 #include <boost/multiprecision/number.hpp>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <ios>
 #include <stdexcept>
 #include <string>
 
 #include "appell/errors.hpp"
 #include "appell/scalar/mpfi_ops.hpp"
+#include "appell/scalar/mpfr_backend.hpp"
 
 namespace appell::mp {
 
@@ -62,27 +70,33 @@ class mpfi_backend {
   using float_types = boost::mpl::list<double, long double>;
   using exponent_type = long;
 
-  mpfi_backend() { allocate(default_bits_); }
+  /// Significands of at most this many limbs a bound live inside the value (256 bits).
+  static constexpr int inline_limbs = 4;
+  static constexpr mpfr_prec_t inline_bits = inline_limbs * GMP_NUMB_BITS;
+
+  mpfi_backend() { init_zero(default_bits_); }
   mpfi_backend(const mpfi_backend& o) {
     const mpfi_srcptr src = o.data();
-    allocate(mpfr_get_prec(&src->left));
-    copy_bounds(src);
+    const mpfr_prec_t p = mpfr_get_prec(&src->left);
+    if (is_inline(p)) {  // the fields and both significands as they are (what mpfr_set does here)
+      v_[0] = *src;
+      std::memcpy(limbs_, o.limbs_, sizeof limbs_);
+      aim_halves(o.left_is_first_half());
+    } else {
+      init_zero(p);
+      copy_bounds(src);
+    }
   }
-  // A moved-from value owns no block; it is still valid: data() gives it a new
-  // one, holding [+0, -0], on first use (so it never reads or writes the block
-  // it gave away).  Its significand pointers are cleared as well, so that a
-  // path that bypassed data() would fault at once instead of aliasing.  (That
-  // first use writes even through const access: a moved-from value shared
-  // between threads must be assigned before it is read.)
-  mpfi_backend(mpfi_backend&& o) noexcept : block_(o.block_) {
-    v_[0] = o.v_[0];
-    o.block_ = nullptr;
-    o.v_->left._mpfr_d = nullptr;
-    o.v_->right._mpfr_d = nullptr;
-  }
-  /// From an MPFR number (Boost's mpfr backend): enclosed at the default precision.
-  explicit mpfi_backend(const boost::multiprecision::backends::mpfr_float_backend<0>& x) {
-    allocate(default_bits_);
+  // A value moved from keeps its precision and holds [+0, -0].  Above 256 bits it
+  // owns no block: data() gives it a new one on first use (so it never reads or
+  // writes the block it gave away); its significand pointers are cleared, so that a
+  // path that bypassed data() would fault at once instead of aliasing.  (That first
+  // use writes even through const access: a moved-from value shared between threads
+  // must be assigned before it is read.)
+  mpfi_backend(mpfi_backend&& o) noexcept { take(o); }
+  /// From an MPFR number (appell's mpfr backend): enclosed at the default precision.
+  explicit mpfi_backend(const mpfr_backend& x) {
+    init_zero(default_bits_);
     mpfi_set_fr(v_, x.data());
   }
   ~mpfi_backend() { release(); }
@@ -117,19 +131,17 @@ class mpfi_backend {
   /// numbers or +-inf, enclosed outward; throws std::runtime_error otherwise (NaN,
   /// trailing text, a > b decided on the exact decimals).
   mpfi_backend& operator=(const char* s);
-  mpfi_backend& operator=(const boost::multiprecision::backends::mpfr_float_backend<0>& x) {
+  mpfi_backend& operator=(const mpfr_backend& x) {
     ensure();
     mpfi_set_fr(v_, x.data());
     return *this;
   }
 
   void swap(mpfi_backend& o) noexcept {
-    __mpfi_struct t = v_[0];
-    v_[0] = o.v_[0];
-    o.v_[0] = t;
-    mp_limb_t* b = block_;
-    block_ = o.block_;
-    o.block_ = b;
+    if (this == &o) return;
+    mpfi_backend t(std::move(o));
+    o.take(*this);
+    take(t);
   }
   /// The value (a point) or "{lower,upper}": with digits <= 0 every bound exactly
   /// (as Boost's backend writes it; operator= reads it back); with digits > 0 that many
@@ -163,14 +175,19 @@ class mpfi_backend {
   /// Boost's precision interface, in decimal digits.
   static unsigned default_precision() noexcept { return default_digits10_; }
   static void default_precision(unsigned digits10) noexcept {
+    // The bits that gave this count of digits when it was set in bits (so that Boost's
+    // guard, which saves and restores the default in digits, restores it exactly).
+    default_bits_ = digits10 == exact_digits10_ ? exact_bits_
+                                                : static_cast<mpfr_prec_t>(boost::multiprecision::detail::digits10_2_2(digits10));
     default_digits10_ = digits10;
-    default_bits_ = static_cast<mpfr_prec_t>(boost::multiprecision::detail::digits10_2_2(digits10));
   }
   /// appell's interface, in bits (set_mp_precision_bits): new values get exactly `bits` bits.
   static unsigned default_bits() noexcept { return static_cast<unsigned>(default_bits_); }
   static void default_bits(unsigned bits) noexcept {
     default_bits_ = static_cast<mpfr_prec_t>(bits);
     default_digits10_ = static_cast<unsigned>(boost::multiprecision::detail::digits2_2_10(bits));
+    exact_bits_ = default_bits_;
+    exact_digits10_ = default_digits10_;
   }
   unsigned precision() const {
     return static_cast<unsigned>(boost::multiprecision::detail::digits2_2_10(static_cast<unsigned long>(prec())));
@@ -187,6 +204,7 @@ class mpfi_backend {
   static mp_size_t limbs(mpfr_prec_t p) noexcept {
     return static_cast<mp_size_t>((p + GMP_NUMB_BITS - 1) / GMP_NUMB_BITS);
   }
+  static bool is_inline(mpfr_prec_t p) noexcept { return p <= inline_bits; }
   // One block for both significands.
   static mp_limb_t* new_block(mpfr_prec_t p) {
     void* const b = std::malloc(2 * static_cast<std::size_t>(limbs(p)) * sizeof(mp_limb_t));
@@ -199,8 +217,45 @@ class mpfi_backend {
     mpfr_custom_init_set(&v_->left, MPFR_ZERO_KIND, 0, p, b);
     mpfr_custom_init_set(&v_->right, -MPFR_ZERO_KIND, 0, p, b + limbs(p));
   }
-  void allocate(mpfr_prec_t p) const { adopt(new_block(p), p); }
-  mpfr_prec_t raw_prec() const noexcept { return mpfr_get_prec(&v_->left); }  // only with a block
+  // The inline halves: [+0, -0] of precision p in the value's own limbs.
+  void inline_zero(mpfr_prec_t p) const noexcept {
+    block_ = nullptr;
+    mpfr_custom_init_set(&v_->left, MPFR_ZERO_KIND, 0, p, limbs_);
+    mpfr_custom_init_set(&v_->right, -MPFR_ZERO_KIND, 0, p, limbs_ + inline_limbs);
+  }
+  // A fresh [+0, -0] of precision p (nothing held before).
+  void init_zero(mpfr_prec_t p) {
+    if (is_inline(p)) inline_zero(p);
+    else adopt(new_block(p), p);
+  }
+  mpfr_prec_t raw_prec() const noexcept { return mpfr_get_prec(&v_->left); }
+  // Moves o's value here (this holds nothing); o keeps its precision and holds
+  // [+0, -0] (above 256 bits: no block, made again on first use).
+  void take(mpfi_backend& o) noexcept {
+    v_[0] = o.v_[0];
+    const mpfr_prec_t p = raw_prec();
+    if (is_inline(p)) {
+      const bool left_first = o.left_is_first_half();
+      std::memcpy(limbs_, o.limbs_, sizeof limbs_);
+      aim_halves(left_first);
+      o.inline_zero(p);
+    } else {
+      block_ = o.block_;
+      o.block_ = nullptr;
+      o.v_->left._mpfr_d = nullptr;
+      o.v_->right._mpfr_d = nullptr;
+    }
+  }
+  // Which half of the limbs the lower bound uses (MPFI may swap the two bounds of one
+  // value); decided on the pointers' order, which a bitwise relocation keeps.
+  bool left_is_first_half() const noexcept {
+    return reinterpret_cast<std::uintptr_t>(mpfr_custom_get_significand(&v_->left)) <
+           reinterpret_cast<std::uintptr_t>(mpfr_custom_get_significand(&v_->right));
+  }
+  void aim_halves(bool left_first) const noexcept {
+    mpfr_custom_move(&v_->left, left_first ? limbs_ : limbs_ + inline_limbs);
+    mpfr_custom_move(&v_->right, left_first ? limbs_ + inline_limbs : limbs_);
+  }
   void release() noexcept {
     if (!block_) return;
     const mp_limb_t* const a = block_;
@@ -212,8 +267,22 @@ class mpfi_backend {
     block_ = nullptr;
   }
   [[noreturn]] static void ownership_violation() noexcept;
+  // Before any access: an inline value's bounds point into this object (re-aimed
+  // after a bitwise relocation: both pointers moved by the same distance, one half
+  // apart); a value above 256 bits that gave its block away gets a new one.
   void ensure() const {
-    if (!block_) allocate(default_bits_);
+    const mpfr_prec_t p = raw_prec();
+    if (is_inline(p)) {
+      const void* const l = mpfr_custom_get_significand(&v_->left);
+      const void* const r = mpfr_custom_get_significand(&v_->right);
+      const mp_limb_t* const h = limbs_ + inline_limbs;
+      if ((l == limbs_ && r == h) || (l == h && r == limbs_)) return;
+      const auto li = reinterpret_cast<std::uintptr_t>(l), ri = reinterpret_cast<std::uintptr_t>(r);
+      if ((li > ri ? li - ri : ri - li) != inline_limbs * sizeof(mp_limb_t)) ownership_violation();
+      aim_halves(li < ri);
+    } else if (!block_) {
+      adopt(new_block(p), p);
+    }
   }
   template <class V, class Set>
   mpfi_backend& set_bounds(V v, Set set) {
@@ -223,16 +292,20 @@ class mpfi_backend {
     detail::mpfi_fix_zero_signs(v_);
     return *this;
   }
-  // Precision p, value unspecified: the block is kept when it has the room.  A
+  // Precision p, value unspecified: the storage is kept when it has the room.  A
   // new block is allocated before the old one is freed (strong guarantee).
   void reshape(mpfr_prec_t p) {
-    if (block_) {
-      const mpfr_prec_t q = raw_prec();
-      if (q == p) return;
-      if (limbs(p) == limbs(q)) {
-        adopt(block_, p);
-        return;
-      }
+    ensure();
+    const mpfr_prec_t q = raw_prec();
+    if (q == p) return;
+    if (is_inline(p)) {
+      release();
+      inline_zero(p);
+      return;
+    }
+    if (block_ && limbs(p) == limbs(q)) {
+      adopt(block_, p);
+      return;
     }
     mp_limb_t* const b = new_block(p);
     release();
@@ -243,14 +316,18 @@ class mpfi_backend {
     mpfr_set(&v_->right, &o->right, MPFR_RNDU);
   }
 
-  // mutable: a moved-from value gets its block on first use, also through const access.
+  // mutable: a moved-from value gets its block on first use, and an inline value's
+  // pointers are re-aimed, also through const access.
   mutable mpfi_t v_;
-  mutable mp_limb_t* block_ = nullptr;
+  mutable mp_limb_t* block_ = nullptr;  // the heap block above 256 bits, else null
+  mutable mp_limb_t limbs_[2 * inline_limbs];
 
   // Boost's default for mpfi_float_backend<0> until set_mp_precision_bits is called.
   inline static unsigned default_digits10_ = BOOST_MULTIPRECISION_MPFI_DEFAULT_PRECISION;
   inline static mpfr_prec_t default_bits_ = static_cast<mpfr_prec_t>(
       boost::multiprecision::detail::digits10_2_2(BOOST_MULTIPRECISION_MPFI_DEFAULT_PRECISION));
+  inline static mpfr_prec_t exact_bits_ = default_bits_;
+  inline static unsigned exact_digits10_ = default_digits10_;
 };
 
 // --- arithmetic ---------------------------------------------------------------
@@ -277,14 +354,14 @@ inline void eval_divide(mpfi_backend& r, const mpfi_backend& a, unsigned long b)
 inline void eval_divide(mpfi_backend& r, unsigned long b) { mpfi_div_ui(r.data(), r.data(), b); }
 
 /// [a, b] from two MPFR numbers (number(lo, hi)), rounded outward; a > b throws.
-void assign_components(mpfi_backend& r, const boost::multiprecision::backends::mpfr_float_backend<0>& a,
-                       const boost::multiprecision::backends::mpfr_float_backend<0>& b);
+void assign_components(mpfi_backend& r, const mpfr_backend& a,
+                       const mpfr_backend& b);
 /// Any other pair (strings, doubles): Boost's generic version rounds each to nearest, which
 /// need not enclose; write mpfi("[a, b]") or mpfi(mpfr, mpfr) instead.
 template <class A, class B>
 void assign_components(mpfi_backend&, const A&, const B&) = delete;
 /// To another floating-point type (e.g. static_cast<mpfr>(x)): the midpoint, as Boost's backend.
-void generic_interconvert(boost::multiprecision::backends::mpfr_float_backend<0>& to, const mpfi_backend& from,
+void generic_interconvert(mpfr_backend& to, const mpfi_backend& from,
                           const boost::mpl::int_<boost::multiprecision::number_kind_floating_point>&,
                           const boost::mpl::int_<boost::multiprecision::number_kind_floating_point>&);
 
@@ -373,7 +450,7 @@ struct is_variable_precision<appell::mp::mpfi_backend> : public true_type {};
 // mpfi(lower, upper) from two mpfr numbers (assign_components above).
 template <expression_template_option ET>
 struct component_type<number<appell::mp::mpfi_backend, ET>> {
-  using type = number<backends::mpfr_float_backend<0>, ET>;
+  using type = number<appell::mp::mpfr_backend, ET>;
 };
 }  // namespace boost::multiprecision
 

@@ -130,9 +130,8 @@ template <>
 struct scalar_traits<mpfr> : point_traits_base<mpfr> {
   static constexpr const char* name = "mpfr";
   static constexpr bool runtime_precision = true;
-  /// The bits new values get: Boost 1.74 sets mpfr_float's precision in decimal
-  /// digits, so this is the smallest reachable count >= the bits asked for
-  /// (113 -> 114); see mpfr_precision_bits() in types.hpp.
+  /// The bits new values get: exactly those asked for (appell's own backend,
+  /// mpfr_backend.hpp; Boost 1.74's mpfr_float gave 113 -> 114).
   static unsigned precision_bits() { return mpfr_precision_bits(); }
   static mpfr from_mpfr(mpfr_srcptr v) { return round_to_mpfr(v, MPFR_RNDN); }
 };

@@ -5,14 +5,16 @@
 //  long-double  long double               point, 64 bits (x87)
 //  dd           dd_real (QD)              point, ~106 bits (double-double)
 //  float128     appell::float128          point, 113 bits (libquadmath)
-//  mpfr         appell::mpfr              point, bits chosen at run time
+//  mpfr         appell::mpfr              point, bits chosen at run time (exactly)
 //  interval     appell::interval          rigorous, 53-bit bounds
 //  mpfi         appell::mpfi              rigorous, bits chosen at run time
 //
 // The Boost.Multiprecision types are used without expression templates
 // (et_off): Eigen's own expression templates do not compose with Boost's.
 // appell::mpfi is MPFI under appell's own backend (mpfi_backend.hpp: both
-// bounds in one allocation), not Boost's mpfi_float_backend.
+// bounds in one allocation), not Boost's mpfi_float_backend; appell::mpfr is
+// MPFR under appell's own backend (mpfr_backend.hpp: exactly the bits asked
+// for, and no heap up to 256 bits), not Boost's mpfr_float_backend.
 #pragma once
 
 #if defined(__GNUC__) && defined(__STRICT_ANSI__)
@@ -25,24 +27,22 @@
 
 #include "appell/scalar/interval.hpp"
 #include "appell/scalar/mpfi_backend.hpp"
+#include "appell/scalar/mpfr_backend.hpp"
 
 namespace appell {
 
 using float128 = boost::multiprecision::float128;
-using mpfr = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>,
-                                           boost::multiprecision::et_off>;
+using mpfr = boost::multiprecision::number<mp::mpfr_backend, boost::multiprecision::et_off>;
 using mpfi = boost::multiprecision::number<mp::mpfi_backend, boost::multiprecision::et_off>;
 using dd = ::dd_real;
 
 /// Sets the precision of new `mpfr` and `mpfi` values (on this thread and
-/// others) and returns `bits`.  `mpfi` (appell's own backend) gets exactly
-/// `bits` bits.  `mpfr` (Boost 1.74's mpfr_float, whose precision is set in
-/// decimal digits) gets the smallest reachable count of at least `bits` bits:
-/// 113 -> 114, 256 -> 257; mpfr_precision_bits() tells which.
+/// others) and returns `bits`: both get exactly `bits` bits (appell's own
+/// backends; Boost 1.74's mpfr_float, set in decimal digits, gave 113 -> 114).
 unsigned set_mp_precision_bits(unsigned bits);
-/// The precision, in bits, of new `mpfi` values: what the last set_mp_precision_bits asked for.
+/// The precision, in bits, of new `mpfr` and `mpfi` values: what the last set_mp_precision_bits asked for.
 unsigned mp_precision_bits();
-/// The precision, in bits, that new `mpfr` values get (>= mp_precision_bits()).
+/// The precision, in bits, that new `mpfr` values get (== mp_precision_bits()).
 unsigned mpfr_precision_bits();
 
 /// RAII: sets the mp precision for a scope and restores it.
@@ -55,7 +55,7 @@ class mp_precision_scope {
   unsigned bits() const { return bits_; }
 
  private:
-  unsigned saved_mpfr_digits10_;
+  unsigned saved_mpfr_bits_;
   unsigned saved_mpfi_bits_;
   unsigned bits_;
 };
