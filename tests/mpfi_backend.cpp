@@ -18,7 +18,7 @@
 //    pow (zero bases, aliasing), floor/ceil, frexp, numeric_limits, and MPFI's
 //    cbrt, log1p, expm1, asinh, acosh, atanh, hypot.
 //  * relocation: a value's bytes moved to new storage (as Eigen's conservativeResize does)
-//    make a valid value, at 256 bits and below (significands inside the value) and above.
+//    make a valid value, at 320 bits and below (significands inside the value) and above.
 // CTest runs this suite a second time under valgrind (mpfi_backend_memcheck)
 // when valgrind is installed: invalid accesses and leaks fail it.
 #define BOOST_TEST_MODULE mpfi_backend
@@ -492,7 +492,7 @@ BOOST_AUTO_TEST_CASE(mpfi_only_functions_contain_320_bit_values) {
   BOOST_TEST_MESSAGE("MPFI-only functions: " << checked << " points contained");
 }
 
-// Up to 256 bits a value keeps both bounds' significands inside itself: bytes moved to new
+// Up to 320 bits (--bits 256 with its guard bits) a value keeps both bounds' significands inside itself: bytes moved to new
 // storage without a constructor (Eigen's conservativeResize reallocs its elements) still make a
 // valid value, with the bounds in either order (negate() swaps them), and so does Eigen's resize.
 BOOST_AUTO_TEST_CASE(values_survive_bitwise_relocation) {

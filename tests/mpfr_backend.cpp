@@ -298,6 +298,15 @@ BOOST_AUTO_TEST_CASE(differential_against_mpfr) {
   BOOST_TEST_MESSAGE("differential run: " << checked << " steps, every value equal to its MPFR twin bit for bit");
 }
 
+BOOST_AUTO_TEST_CASE(precision_conversions_are_boosts) {
+  // mp::precision_default's constexpr conversions are Boost's (its guard speaks in digits).
+  for (unsigned long n = 0; n <= 5000; ++n) {
+    BOOST_TEST_REQUIRE(mp::precision_default::digits10_of(n) == boost::multiprecision::detail::digits2_2_10(n));
+    BOOST_TEST_REQUIRE(static_cast<unsigned long>(mp::precision_default::bits_of(n)) ==
+                       boost::multiprecision::detail::digits10_2_2(n));
+  }
+}
+
 BOOST_AUTO_TEST_CASE(exact_bits) {
   for (unsigned bits = 2; bits <= 600; ++bits) {
     const mp_precision_scope scope(bits);

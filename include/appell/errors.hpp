@@ -50,6 +50,9 @@ enum class exit_status : int {
   internal = 4,        ///< anything else: a bug
 };
 
+/// The process exit code of a status (what main returns).
+constexpr int exit_code(exit_status s) noexcept { return static_cast<int>(s); }
+
 namespace mp {
 /// Thrown by undecided comparisons and signs of intervals (as Boost's backend does).
 struct interval_error : std::runtime_error {

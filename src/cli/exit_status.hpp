@@ -28,19 +28,19 @@ inline int exit_status_of_current_exception(bool report = true) {
     throw;
   } catch (const appell::input_error& e) {
     say(one_line(e.what()));
-    return static_cast<int>(exit_status::bad_input);
+    return exit_code(exit_status::bad_input);
   } catch (const appell::parse_error& e) {
     say(one_line(e.what()));
-    return static_cast<int>(exit_status::bad_input);
+    return exit_code(exit_status::bad_input);
   } catch (const appell::certification_error& e) {
     say("cannot certify: " + one_line(e.what()));
-    return static_cast<int>(exit_status::no_certificate);
+    return exit_code(exit_status::no_certificate);
   } catch (const appell::domain_error& e) {
     say("cannot certify: " + one_line(e.what()));
-    return static_cast<int>(exit_status::no_certificate);
+    return exit_code(exit_status::no_certificate);
   } catch (const std::exception& e) {
     say("internal error: " + one_line(e.what()));
-    return static_cast<int>(exit_status::internal);
+    return exit_code(exit_status::internal);
   }
 }
 

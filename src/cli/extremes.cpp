@@ -127,7 +127,7 @@ int extremes(const extremes_options& o) {
   }
   line.done();
   std::cout << "\nwrote " << o.out_dir << "/<sweep>.csv and .png\n";
-  return static_cast<int>(appell::exit_status::done);
+  return appell::exit_code(appell::exit_status::done);
 }
 
 }  // namespace appell::cli

@@ -220,7 +220,7 @@ int horizon(const horizon_options& given) {
   if (period > 0) std::cout << " (" << t_end / period << " periods of " << period << ")";
   std::cout << "; reference: " << reference_kind << "\n" << table.str();
   std::cout << "wrote " << (dir / "horizon.csv").string() << ", summary.json" << plotted << "\n";
-  return static_cast<int>(appell::exit_status::done);
+  return appell::exit_code(appell::exit_status::done);
 }
 
 }  // namespace appell::cli

@@ -109,7 +109,7 @@ class cerr_silenced {
 // what was wrong; `appell --help` prints the usage.
 int usage(const std::string& why) {
   std::cerr << "appell: " << one_line(why) << " (appell --help lists the commands and options)\n";
-  return static_cast<int>(appell::exit_status::bad_input);
+  return appell::exit_code(appell::exit_status::bad_input);
 }
 
 /// The result on stdout: exit 0, or 4 when it could not be written.
@@ -118,9 +118,9 @@ int print(const std::string& out) {
   std::cout.flush();
   if (!std::cout) {
     std::cerr << "appell: internal error: could not write the result to stdout\n";
-    return static_cast<int>(appell::exit_status::internal);
+    return appell::exit_code(appell::exit_status::internal);
   }
-  return static_cast<int>(appell::exit_status::done);
+  return appell::exit_code(appell::exit_status::done);
 }
 
 std::string dispatch(const appell::scene_input& scene, const options& o) {
@@ -137,7 +137,7 @@ int main(int argc, char** argv) {
   const std::string command = argv[1];
   if (command == "--help" || command == "-h" || command == "help") {
     std::cout << usage_text << appell::cli::moving_model_names() << "\n";
-    return static_cast<int>(appell::exit_status::done);
+    return appell::exit_code(appell::exit_status::done);
   }
   if (command == "extremes") {
     appell::cli::extremes_options x;

@@ -150,7 +150,7 @@ motion_outcome write_simulate(const simulate_report& r, const motion_options& o)
     else out << "  " << q.name << ": largest relative drift " << q.worst << "\n";
   }
   out << "wrote " << (dir / "trajectory.csv").string() << ", summary.json" << plotted << "\n";
-  return {complete ? static_cast<int>(appell::exit_status::done) : static_cast<int>(appell::exit_status::no_certificate), out.str()};
+  return {complete ? appell::exit_code(appell::exit_status::done) : appell::exit_code(appell::exit_status::no_certificate), out.str()};
 }
 
 motion_outcome write_enclose(const enclose_report& r, const motion_options& o) {
@@ -230,7 +230,7 @@ motion_outcome write_enclose(const enclose_report& r, const motion_options& o) {
         << (i < r.result_values ? " (its variation over the step included)\n" : " (constant in truth)\n");
   out << "wrote " << (dir / "steps.csv").string() << (r.contacts.empty() ? "" : ", contacts.csv") << ", summary.json" << plotted
       << "\n";
-  return {r.complete || !r.contact_stop.empty() ? static_cast<int>(appell::exit_status::done) : static_cast<int>(appell::exit_status::no_certificate), out.str()};
+  return {r.complete || !r.contact_stop.empty() ? appell::exit_code(appell::exit_status::done) : appell::exit_code(appell::exit_status::no_certificate), out.str()};
 }
 
 motion_outcome write_validity(const validity_report& r, const motion_options& o) {
@@ -297,7 +297,7 @@ motion_outcome write_validity(const validity_report& r, const motion_options& o)
       out << "  " << v << " for " << o.vary_field << " in [" << range[0].get<std::string>() << ", "
           << range[1].get<std::string>() << "]\n";
   out << "wrote " << (dir / "validity.csv").string() << ", summary.json" << plotted << "\n";
-  return {r.run.stopped.empty() ? static_cast<int>(appell::exit_status::done) : static_cast<int>(appell::exit_status::no_certificate), out.str()};
+  return {r.run.stopped.empty() ? appell::exit_code(appell::exit_status::done) : appell::exit_code(appell::exit_status::no_certificate), out.str()};
 }
 
 }  // namespace appell::cli

@@ -63,7 +63,7 @@ int validity(int argc, char** argv, boost::mpi::communicator& world) {
   const std::string error = appell::cli::parse_motion_arguments(argc, argv, 2, o);
   if (!error.empty()) {
     if (root) std::cerr << "appell: " << appell::cli::one_line(error) << "\n";
-    return static_cast<int>(appell::exit_status::bad_input);
+    return appell::exit_code(appell::exit_status::bad_input);
   }
   if (o.jobs == 0) o.jobs = 1;  // one thread of rank 0's besides its leading: a rank per core is MPI's way
   mpi_pieces remote(world);
@@ -86,7 +86,7 @@ int validity(int argc, char** argv, boost::mpi::communicator& world) {
     };
   }
   o.pieces = &net;
-  int status = static_cast<int>(appell::exit_status::done);
+  int status = appell::exit_code(appell::exit_status::done);
   // The other ranks print nothing: their summary is empty and rank 0 reports the errors.
   std::streambuf* const saved = root ? nullptr : std::cout.rdbuf(nullptr);
   try {
@@ -114,15 +114,15 @@ int main(int argc, char** argv) {
                    "[options as appell reference: --box, --trajectory, --scalar, --bits, --inputs, --project, --quiet]\n"
                    "       mpirun -np P appell-mpi validity SCENE --vary FIELD=lo:hi --t-end T --out DIR "
                    "[options as appell validity]\n";
-    return static_cast<int>(appell::exit_status::bad_input);
+    return appell::exit_code(appell::exit_status::bad_input);
   }
   appell::cli::reference_options options;
   const std::string error = appell::cli::parse_reference_arguments(argc, argv, 2, options);
   if (!error.empty()) {
     if (root) std::cerr << "appell: " << appell::cli::one_line(error) << "\n";
-    return static_cast<int>(appell::exit_status::bad_input);
+    return appell::exit_code(appell::exit_status::bad_input);
   }
-  int status = static_cast<int>(appell::exit_status::done);
+  int status = appell::exit_code(appell::exit_status::done);
   try {
     const appell::cli::reference_run run(options);
     const std::size_t n = run.states(), p = static_cast<std::size_t>(processes);
@@ -150,7 +150,7 @@ int main(int argc, char** argv) {
     const bool any_failure = boost::mpi::all_reduce(world, !failure.empty(), std::logical_or<bool>());
     if (any_failure) {
       if (!failure.empty()) std::cerr << "appell: internal error (rank " << world.rank() << "): " << failure << "\n";
-      return static_cast<int>(appell::exit_status::internal);
+      return appell::exit_code(appell::exit_status::internal);
     }
     std::vector<std::vector<std::string>> all;
     boost::mpi::gather(world, mine, all, 0);

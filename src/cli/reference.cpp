@@ -485,9 +485,9 @@ int reference_run::write(const std::vector<reference_state_output>& outputs, int
   if (refused) {
     std::cerr << "appell: " << refused << " of " << outputs.size()
               << " states refused or not certified (their reasons are in reference.csv)\n";
-    return static_cast<int>(appell::exit_status::no_certificate);
+    return appell::exit_code(appell::exit_status::no_certificate);
   }
-  return static_cast<int>(appell::exit_status::done);
+  return appell::exit_code(appell::exit_status::done);
 }
 
 void show_states_done(progress& line, std::size_t done, std::size_t total) {

@@ -168,7 +168,7 @@ int score(const score_options& o) {
         900, 500);
     std::cout << (p.written ? "wrote " + o.plot : "no plot: " + p.why) << "\n";
   }
-  return all_within && all_digits ? static_cast<int>(appell::exit_status::done) : static_cast<int>(appell::exit_status::check_failed);
+  return all_within && all_digits ? appell::exit_code(appell::exit_status::done) : appell::exit_code(appell::exit_status::check_failed);
 }
 
 }  // namespace appell::cli

@@ -189,7 +189,7 @@ int tradeoff(const tradeoff_options& o) {
                         "\nset grid\nset offsets graph 0.03, graph 0.1, 0, 0\nset key outside right top\nplot " + series + "\n",
                  1000, 600);
   std::cout << "\nwrote " << csv.string() << plot_note(plotted, png) << "\n";
-  return static_cast<int>(appell::exit_status::done);
+  return appell::exit_code(appell::exit_status::done);
 }
 
 }  // namespace appell::cli

@@ -8,8 +8,9 @@
 // mpfr_init2 above 60% of the instructions) and twice what an mpfr value costs.
 //
 // mpfi_backend keeps both bounds' significands inside the value up to
-// `inline_bits` bits a bound (256), and in ONE block above, through MPFR's
-// documented custom interface (mpfr_custom_init_set): up to 256 bits a value
+// `inline_bits` bits a bound (320: `--bits 256` computes at 320 with its guard
+// bits, scalar_traits<mpfi>::working_bits), and in ONE block above, through MPFR's
+// documented custom interface (mpfr_custom_init_set): up to 320 bits a value
 // costs no allocation at all, above one, and a new value is set to [+0, -0]
 // without a call into MPFR.  An inline value's significand pointers point into
 // the object itself; they are re-aimed on access (data(), ensure()) when the
@@ -58,6 +59,7 @@
 #include <string>
 
 #include "appell/errors.hpp"
+#include "appell/scalar/mp_default_precision.hpp"
 #include "appell/scalar/mpfi_ops.hpp"
 #include "appell/scalar/mpfr_backend.hpp"
 
@@ -70,11 +72,12 @@ class mpfi_backend {
   using float_types = boost::mpl::list<double, long double>;
   using exponent_type = long;
 
-  /// Significands of at most this many limbs a bound live inside the value (256 bits).
-  static constexpr int inline_limbs = 4;
+  /// Significands of at most this many limbs a bound live inside the value (320 bits:
+  /// the working precision of the default --bits 256).
+  static constexpr int inline_limbs = 5;
   static constexpr mpfr_prec_t inline_bits = inline_limbs * GMP_NUMB_BITS;
 
-  mpfi_backend() { init_zero(default_bits_); }
+  mpfi_backend() { init_zero(defaults_.bits()); }
   mpfi_backend(const mpfi_backend& o) {
     const mpfi_srcptr src = o.data();
     const mpfr_prec_t p = mpfr_get_prec(&src->left);
@@ -87,7 +90,7 @@ class mpfi_backend {
       copy_bounds(src);
     }
   }
-  // A value moved from keeps its precision and holds [+0, -0].  Above 256 bits it
+  // A value moved from keeps its precision and holds [+0, -0].  Above 320 bits it
   // owns no block: data() gives it a new one on first use (so it never reads or
   // writes the block it gave away); its significand pointers are cleared, so that a
   // path that bypassed data() would fault at once instead of aliasing.  (That first
@@ -96,7 +99,7 @@ class mpfi_backend {
   mpfi_backend(mpfi_backend&& o) noexcept { take(o); }
   /// From an MPFR number (appell's mpfr backend): enclosed at the default precision.
   explicit mpfi_backend(const mpfr_backend& x) {
-    init_zero(default_bits_);
+    init_zero(defaults_.bits());
     mpfi_set_fr(v_, x.data());
   }
   ~mpfi_backend() { release(); }
@@ -173,22 +176,11 @@ class mpfi_backend {
   mpfr_prec_t prec() const { return mpfr_get_prec(&data()->left); }
 
   /// Boost's precision interface, in decimal digits.
-  static unsigned default_precision() noexcept { return default_digits10_; }
-  static void default_precision(unsigned digits10) noexcept {
-    // The bits that gave this count of digits when it was set in bits (so that Boost's
-    // guard, which saves and restores the default in digits, restores it exactly).
-    default_bits_ = digits10 == exact_digits10_ ? exact_bits_
-                                                : static_cast<mpfr_prec_t>(boost::multiprecision::detail::digits10_2_2(digits10));
-    default_digits10_ = digits10;
-  }
+  static unsigned default_precision() noexcept { return defaults_.digits10(); }
+  static void default_precision(unsigned digits10) noexcept { defaults_.set_digits10(digits10); }
   /// appell's interface, in bits (set_mp_precision_bits): new values get exactly `bits` bits.
-  static unsigned default_bits() noexcept { return static_cast<unsigned>(default_bits_); }
-  static void default_bits(unsigned bits) noexcept {
-    default_bits_ = static_cast<mpfr_prec_t>(bits);
-    default_digits10_ = static_cast<unsigned>(boost::multiprecision::detail::digits2_2_10(bits));
-    exact_bits_ = default_bits_;
-    exact_digits10_ = default_digits10_;
-  }
+  static unsigned default_bits() noexcept { return static_cast<unsigned>(defaults_.bits()); }
+  static void default_bits(unsigned bits) noexcept { defaults_.set_bits(bits); }
   unsigned precision() const {
     return static_cast<unsigned>(boost::multiprecision::detail::digits2_2_10(static_cast<unsigned long>(prec())));
   }
@@ -230,7 +222,7 @@ class mpfi_backend {
   }
   mpfr_prec_t raw_prec() const noexcept { return mpfr_get_prec(&v_->left); }
   // Moves o's value here (this holds nothing); o keeps its precision and holds
-  // [+0, -0] (above 256 bits: no block, made again on first use).
+  // [+0, -0] (above 320 bits: no block, made again on first use).
   void take(mpfi_backend& o) noexcept {
     v_[0] = o.v_[0];
     const mpfr_prec_t p = raw_prec();
@@ -269,7 +261,7 @@ class mpfi_backend {
   [[noreturn]] static void ownership_violation() noexcept;
   // Before any access: an inline value's bounds point into this object (re-aimed
   // after a bitwise relocation: both pointers moved by the same distance, one half
-  // apart); a value above 256 bits that gave its block away gets a new one.
+  // apart); a value above 320 bits that gave its block away gets a new one.
   void ensure() const {
     const mpfr_prec_t p = raw_prec();
     if (is_inline(p)) {
@@ -319,15 +311,11 @@ class mpfi_backend {
   // mutable: a moved-from value gets its block on first use, and an inline value's
   // pointers are re-aimed, also through const access.
   mutable mpfi_t v_;
-  mutable mp_limb_t* block_ = nullptr;  // the heap block above 256 bits, else null
+  mutable mp_limb_t* block_ = nullptr;  // the heap block above 320 bits, else null
   mutable mp_limb_t limbs_[2 * inline_limbs];
 
   // Boost's default for mpfi_float_backend<0> until set_mp_precision_bits is called.
-  inline static unsigned default_digits10_ = BOOST_MULTIPRECISION_MPFI_DEFAULT_PRECISION;
-  inline static mpfr_prec_t default_bits_ = static_cast<mpfr_prec_t>(
-      boost::multiprecision::detail::digits10_2_2(BOOST_MULTIPRECISION_MPFI_DEFAULT_PRECISION));
-  inline static mpfr_prec_t exact_bits_ = default_bits_;
-  inline static unsigned exact_digits10_ = default_digits10_;
+  inline static constinit precision_default defaults_{BOOST_MULTIPRECISION_MPFI_DEFAULT_PRECISION};
 };
 
 // --- arithmetic ---------------------------------------------------------------

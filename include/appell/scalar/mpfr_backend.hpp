@@ -44,6 +44,8 @@
 #include <new>
 #include <string>
 
+#include "appell/scalar/mp_default_precision.hpp"
+
 namespace appell::mp {
 
 class mpfr_backend {
@@ -58,7 +60,7 @@ class mpfr_backend {
   static constexpr int inline_limbs = 4;
   static constexpr mpfr_prec_t inline_bits = inline_limbs * GMP_NUMB_BITS;
 
-  mpfr_backend() { init_zero(default_bits_); }
+  mpfr_backend() { init_zero(defaults_.bits()); }
   mpfr_backend(const mpfr_backend& o) {
     const mpfr_srcptr src = o.data();
     const mpfr_prec_t p = mpfr_get_prec(src);
@@ -163,23 +165,12 @@ class mpfr_backend {
   mpfr_prec_t prec() const noexcept { return mpfr_get_prec(&v_); }
 
   /// Boost's precision interface, in decimal digits (Boost's precision guard uses it).
-  static unsigned default_precision() noexcept { return default_digits10_; }
-  static void default_precision(unsigned digits10) noexcept {
-    // The bits that gave this count of digits when it was set in bits (so that Boost's
-    // guard, which saves and restores the default in digits, restores it exactly).
-    default_bits_ = digits10 == exact_digits10_ ? exact_bits_
-                                                : static_cast<mpfr_prec_t>(boost::multiprecision::detail::digits10_2_2(digits10));
-    default_digits10_ = digits10;
-  }
+  static unsigned default_precision() noexcept { return defaults_.digits10(); }
+  static void default_precision(unsigned digits10) noexcept { defaults_.set_digits10(digits10); }
   /// appell's interface, in bits (set_mp_precision_bits): new values get exactly `bits` bits.
-  static unsigned default_bits() noexcept { return static_cast<unsigned>(default_bits_); }
-  static void default_bits(unsigned bits) noexcept {
-    default_bits_ = static_cast<mpfr_prec_t>(bits);
-    default_digits10_ = digits10_of(bits);
-    exact_bits_ = default_bits_;
-    exact_digits10_ = default_digits10_;
-  }
-  unsigned precision() const noexcept { return digits10_of(static_cast<unsigned>(prec())); }
+  static unsigned default_bits() noexcept { return static_cast<unsigned>(defaults_.bits()); }
+  static void default_bits(unsigned bits) noexcept { defaults_.set_bits(bits); }
+  unsigned precision() const noexcept { return precision_default::digits10_of(static_cast<unsigned long>(prec())); }
   void precision(unsigned digits10) {  // keeps the value, rounded to nearest
     round_prec(static_cast<mpfr_prec_t>(boost::multiprecision::detail::digits10_2_2(digits10)));
   }
@@ -192,9 +183,6 @@ class mpfr_backend {
   void round_prec(mpfr_prec_t p);
 
  private:
-  static unsigned digits10_of(unsigned bits) noexcept {
-    return static_cast<unsigned>(boost::multiprecision::detail::digits2_2_10(bits));
-  }
   static bool is_inline(mpfr_prec_t p) noexcept { return p <= inline_bits; }
   static std::size_t block_bytes(mpfr_prec_t p) noexcept { return mpfr_custom_get_size(p); }
   // A fresh +0 of precision p (no value held before: nothing released).
@@ -275,11 +263,7 @@ class mpfr_backend {
   mutable mp_limb_t limbs_[inline_limbs];
 
   // Boost's default for mpfr_float_backend<0> until set_mp_precision_bits is called.
-  inline static unsigned default_digits10_ = BOOST_MULTIPRECISION_MPFR_DEFAULT_PRECISION;
-  inline static mpfr_prec_t default_bits_ =
-      static_cast<mpfr_prec_t>(boost::multiprecision::detail::digits10_2_2(BOOST_MULTIPRECISION_MPFR_DEFAULT_PRECISION));
-  inline static mpfr_prec_t exact_bits_ = default_bits_;
-  inline static unsigned exact_digits10_ = default_digits10_;
+  inline static constinit precision_default defaults_{BOOST_MULTIPRECISION_MPFR_DEFAULT_PRECISION};
 };
 
 // --- arithmetic (MPFR, rounded to nearest at the result's precision) ------------
