@@ -34,6 +34,7 @@
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/eigen.hpp"
 #include "appell/scalar/functions.hpp"
+#include "mpfr_same.hpp"
 
 using namespace appell;
 using boost_mpfi = boost::multiprecision::number<boost::multiprecision::mpfi_float_backend<0>, boost::multiprecision::et_off>;
@@ -43,12 +44,7 @@ namespace {
 std::mt19937_64 rng(20261121);
 int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
 
-// Bound for bound (NaN matches NaN; zeros must agree in sign), and precision.
-bool same(mpfr_srcptr a, mpfr_srcptr b) {
-  if (mpfr_get_prec(a) != mpfr_get_prec(b)) return false;
-  if (mpfr_nan_p(a) || mpfr_nan_p(b)) return mpfr_nan_p(a) && mpfr_nan_p(b);
-  return mpfr_equal_p(a, b) && mpfr_signbit(a) == mpfr_signbit(b);
-}
+using appell::test::same;  // bound for bound (tests/mpfr_same.hpp)
 bool same(const mpfi& x, const boost_mpfi& y) {
   return same(&x.backend().data()->left, &y.backend().data()->left) &&
          same(&x.backend().data()->right, &y.backend().data()->right);

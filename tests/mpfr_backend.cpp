@@ -31,6 +31,7 @@
 
 #include "appell/scalar/eigen.hpp"
 #include "appell/scalar/functions.hpp"
+#include "mpfr_same.hpp"
 
 using namespace appell;
 
@@ -39,12 +40,7 @@ namespace {
 std::mt19937_64 rng(20261128);
 int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
 
-// Value and precision, bit for bit (NaN matches NaN; zeros agree in sign).
-bool same(mpfr_srcptr a, mpfr_srcptr b) {
-  if (mpfr_get_prec(a) != mpfr_get_prec(b)) return false;
-  if (mpfr_nan_p(a) || mpfr_nan_p(b)) return mpfr_nan_p(a) && mpfr_nan_p(b);
-  return mpfr_equal_p(a, b) && mpfr_signbit(a) == mpfr_signbit(b);
-}
+using appell::test::same;  // value and precision, bit for bit (tests/mpfr_same.hpp)
 std::string show(mpfr_srcptr p) {
   char buf[300];
   mpfr_snprintf(buf, sizeof buf, "%.30Rg (%ld bits)", p, static_cast<long>(mpfr_get_prec(p)));
