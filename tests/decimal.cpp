@@ -7,6 +7,8 @@
 #include <gmp.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <random>
 
 #include "appell/scalar/decimal.hpp"
@@ -211,4 +213,72 @@ BOOST_AUTO_TEST_CASE(printing_round_trips_and_rounds_bounds_outward) {
     const mpfr third = mpfr(1) / 3;
     BOOST_TEST(from_decimal<mpfr>(to_decimal(third)) == third);
   }
+}
+
+// mpfr_to_decimal prints a value that is a double (an interval<double>'s bound, up to 64 bits of
+// precision) by exact integer arithmetic of its own, not through mpfr_get_str: the text must be
+// MPFR's, character for character, for every digit count 1 .. 17 and every rounding. MPFR's
+// mpfr_get_str is reached with the same value at 80 bits (the own path takes at most 64).
+BOOST_AUTO_TEST_CASE(doubles_print_as_mpfr_prints_them) {
+  std::mt19937_64 rng(20261128);
+  std::uniform_int_distribution<int> digits_of(1, 17);
+  std::uniform_int_distribution<int> kind_of(0, 3);
+  std::uniform_int_distribution<int> small(-40, 40);
+  const mpfr_rnd_t modes[] = {MPFR_RNDN, MPFR_RNDD, MPFR_RNDU, MPFR_RNDZ, MPFR_RNDA};
+  mpfr_value as_double(53), as_64(64), wide(80);
+  long compared = 0, ties = 0;
+  for (int i = 0; i < 60000; ++i) {
+    double x = 0;
+    switch (kind_of(rng)) {
+      case 0: {  // any finite double: every exponent, subnormals included
+        std::uint64_t bits = rng();
+        std::memcpy(&x, &bits, sizeof x);
+        if (!std::isfinite(x)) continue;
+        break;
+      }
+      case 1:  // a short dyadic number: exact decimal expansions, ties at small digit counts
+        x = std::ldexp(static_cast<double>(static_cast<std::int64_t>(rng() % 2000001) - 1000000), small(rng));
+        break;
+      case 2: {  // near a power of ten (the decade of the digits changes there)
+        x = std::pow(10.0, small(rng) * 7);
+        std::uint64_t bits;
+        std::memcpy(&bits, &x, sizeof bits);
+        bits += static_cast<std::uint64_t>(static_cast<std::int64_t>(rng() % 7) - 3);
+        std::memcpy(&x, &bits, sizeof x);
+        if (rng() & 1) x = -x;
+        break;
+      }
+      default: {  // a 17-digit decimal rounded to a double (what engines print)
+        const double mantissa = 1.0 + static_cast<double>(rng() % 9000000000000000ULL) / 1e15;
+        x = mantissa * std::pow(10.0, small(rng));
+        if (rng() & 1) x = -x;
+      }
+    }
+    if (x == 0) continue;
+    mpfr_set_d(as_double, x, MPFR_RNDN);
+    mpfr_set_d(as_64, x, MPFR_RNDN);
+    mpfr_set_d(wide, x, MPFR_RNDN);
+    const int digits = digits_of(rng);
+    for (const mpfr_rnd_t rnd : modes) {
+      const std::string mpfrs = mpfr_to_decimal(wide, digits, rnd);
+      BOOST_REQUIRE_MESSAGE(mpfr_to_decimal(as_double, digits, rnd) == mpfrs,
+                            "x = " << to_decimal(x) << ", " << digits << " digits, rounding " << mpfr_print_rnd_mode(rnd)
+                                   << ": " << mpfr_to_decimal(as_double, digits, rnd) << " against MPFR's " << mpfrs);
+      BOOST_REQUIRE(mpfr_to_decimal(as_64, digits, rnd) == mpfrs);
+      ++compared;
+    }
+    // the text of the nearest rounding decides the ties: count them, so that the test shows it met some
+    // a tie: the exact expansion (at most 767 digits) has digits + 1 significant digits, the last a 5
+    if (std::string exact = mpfr_to_decimal(wide, 800, MPFR_RNDN); [&] {
+          std::string significant;
+          for (const char c : exact.substr(0, exact.find('e')))
+            if (c >= '0' && c <= '9' && !(significant.empty() && c == '0')) significant += c;
+          while (!significant.empty() && significant.back() == '0') significant.pop_back();
+          return static_cast<int>(significant.size()) == digits + 1 && significant.back() == '5';
+        }())
+      ++ties;
+  }
+  BOOST_TEST_MESSAGE("texts compared: " << compared << ", ties to even among them: " << ties);
+  BOOST_TEST(compared > 200000);
+  BOOST_TEST(ties > 100);
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -108,38 +109,71 @@ struct quantity {
   bool derived = false;  ///< of the derived state (evaluation::derived), not a result
 };
 
-std::string mpfr_text(const mpfr_value& v, int digits, mpfr_rnd_t rnd) { return mpfr_to_decimal(v, digits, rnd); }
+std::string mpfr_text(mpfr_srcptr v, int digits, mpfr_rnd_t rnd) { return mpfr_to_decimal(v, digits, rnd); }
 
-template <Scalar T>
-quantity describe(const std::string& name, const T& x, const interval* x53, double scale, double amplification) {
+/// An MPFR number of at most 128 bits whose significand lives in the object (MPFR's custom
+/// interface): describing a quantity makes a dozen of these, and mpfr_value's heap blocks for them
+/// were a tenth of a state's time in `interval`. Neither copied nor moved (MPFR holds its address).
+class stack_mpfr {
+ public:
+  explicit stack_mpfr(mpfr_prec_t prec) {
+    if (prec > capacity) throw std::logic_error("stack_mpfr: more bits than its capacity");
+    mpfr_custom_init(limbs_, prec);
+    mpfr_custom_init_set(v_, MPFR_NAN_KIND, 0, prec, limbs_);
+  }
+  stack_mpfr(const stack_mpfr&) = delete;
+  stack_mpfr& operator=(const stack_mpfr&) = delete;
+  operator mpfr_ptr() { return v_; }
+  operator mpfr_srcptr() const { return v_; }
+
+  static constexpr mpfr_prec_t capacity = 128;
+
+ private:
+  mp_limb_t limbs_[2];
+  mpfr_t v_;
+};
+
+/// The description of a quantity enclosed in [lo, hi] (MPFR numbers holding the enclosure's bounds
+/// exactly): the bounds rounded outward to decimal, the double nearest the enclosure, the error
+/// bound of that double and the tolerance for a double engine (x53: appell's own interval<double>
+/// enclosure, null when there is none).
+quantity describe_bounds(const std::string& name, mpfr_srcptr lo, mpfr_srcptr hi, const interval* x53, double scale,
+                         double amplification) {
   quantity q;
   q.name = name;
-  mpfr_value lo, hi;
-  scalar_traits<T>::to_mpfr(x, lo, hi);
-  q.lower = lower_string(x);
-  q.upper = upper_string(x);
+  q.lower = mpfr_to_decimal(lo, roundtrip_digits(static_cast<unsigned>(mpfr_get_prec(lo))), MPFR_RNDD);
+  q.upper = mpfr_to_decimal(hi, roundtrip_digits(static_cast<unsigned>(mpfr_get_prec(hi))), MPFR_RNDU);
   const double dlo = mpfr_get_d(lo, MPFR_RNDN), dhi = mpfr_get_d(hi, MPFR_RNDN);
   double d = dlo;
   q.decided = dlo == dhi;  // round-to-nearest is monotone: every point of [lo, hi] rounds to it
   if (!q.decided) {
-    mpfr_value mid(std::max(mpfr_get_prec(lo), mpfr_get_prec(hi)) + 2);
-    mpfr_add(mid, lo, hi, MPFR_RNDN);  // exact at this precision
-    mpfr_div_2ui(mid, mid, 1, MPFR_RNDN);
-    d = mpfr_get_d(mid, MPFR_RNDN);
+    const mpfr_prec_t prec = std::max(mpfr_get_prec(lo), mpfr_get_prec(hi)) + 2;
+    auto midpoint = [&](mpfr_ptr mid) {
+      mpfr_add(mid, lo, hi, MPFR_RNDN);  // exact at this precision
+      mpfr_div_2ui(mid, mid, 1, MPFR_RNDN);
+      return mpfr_get_d(mid, MPFR_RNDN);
+    };
+    if (prec <= stack_mpfr::capacity) {
+      stack_mpfr mid(prec);
+      d = midpoint(mid);
+    } else {
+      mpfr_value mid(prec);
+      d = midpoint(mid);
+    }
   }
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.17g", d);
-  q.nearest_double = buffer;
+  const auto printed = std::to_chars(buffer, buffer + sizeof buffer, d, std::chars_format::general, 17);  // "%.17g"
+  q.nearest_double.assign(buffer, printed.ptr);
   // |d - exact| <= max(d - lo, hi - d), rounded up; relative to min |x| over the enclosure.
-  mpfr_value e1(64), e2(64), e(64);
-  mpfr_value dv(53);
+  stack_mpfr e1(64), e2(64), e(64);
+  stack_mpfr dv(53);
   mpfr_set_d(dv, d, MPFR_RNDN);
   mpfr_sub(e1, dv, lo, MPFR_RNDU);
   mpfr_sub(e2, hi, dv, MPFR_RNDU);
   mpfr_max(e, e1, e2, MPFR_RNDU);
-  if (mpfr_sgn(lo.get()) > 0 || mpfr_sgn(hi.get()) < 0) {
-    mpfr_value m(64);
-    if (mpfr_sgn(lo.get()) > 0) mpfr_set(m, lo, MPFR_RNDD);
+  if (mpfr_sgn(lo) > 0 || mpfr_sgn(hi) < 0) {
+    stack_mpfr m(64);
+    if (mpfr_sgn(lo) > 0) mpfr_set(m, lo, MPFR_RNDD);
     else mpfr_neg(m, hi, MPFR_RNDD);
     mpfr_div(e, e, m, MPFR_RNDU);
     q.rel_error_bound = mpfr_text(e, 3, MPFR_RNDU);
@@ -152,7 +186,7 @@ quantity describe(const std::string& name, const T& x, const interval* x53, doub
   // least 16 times the width of appell's own interval<double> enclosure of it.
   if (x53) {
     const double w = std::max(boost::numeric::width(*x53), std::ldexp(std::max(amplification, 1.0) * scale, -53));
-    mpfr_value tol(64);
+    stack_mpfr tol(64);
     mpfr_set_d(tol, w, MPFR_RNDU);
     mpfr_mul_ui(tol, tol, 16, MPFR_RNDU);
     q.tolerance = mpfr_text(tol, 3, MPFR_RNDU);
@@ -160,6 +194,32 @@ quantity describe(const std::string& name, const T& x, const interval* x53, doub
     q.tolerance = "inf";  // interval<double> cannot certify this state: no double engine can be held to it
   }
   return q;
+}
+
+template <Scalar T>
+quantity describe(const std::string& name, const T& x, const interval* x53, double scale, double amplification) {
+  if constexpr (std::is_same_v<T, interval>) {  // the bounds are doubles: exact in 53 bits
+    stack_mpfr lo(53), hi(53);
+    mpfr_set_d(lo, x.lower(), MPFR_RNDN);
+    mpfr_set_d(hi, x.upper(), MPFR_RNDN);
+    return describe_bounds(name, lo, hi, x53, scale, amplification);
+  } else {
+    mpfr_value lo, hi;
+    scalar_traits<T>::to_mpfr(x, lo, hi);
+    return describe_bounds(name, lo, hi, x53, scale, amplification);
+  }
+}
+
+/// The largest |bound| of x, each bound rounded to the nearest double.
+template <Scalar T>
+double largest_bound(const T& x) {
+  if constexpr (std::is_same_v<T, interval>) {
+    return std::max(std::abs(x.lower()), std::abs(x.upper()));
+  } else {
+    mpfr_value lo, hi;
+    scalar_traits<T>::to_mpfr(x, lo, hi);
+    return std::max(std::abs(mpfr_get_d(lo, MPFR_RNDN)), std::abs(mpfr_get_d(hi, MPFR_RNDN)));
+  }
 }
 
 struct state_result {
@@ -193,11 +253,7 @@ void certify(const scene_input& scene, state_result& r) {
     for (std::size_t i = 0; i < group.size(); ++i) {
       const auto& res = group[i];
       double scale = 0;  // the largest |component| of this result
-      for (const T& v : res.values) {
-        mpfr_value lo, hi;
-        scalar_traits<T>::to_mpfr(v, lo, hi);
-        scale = std::max({scale, std::abs(mpfr_get_d(lo, MPFR_RNDN)), std::abs(mpfr_get_d(hi, MPFR_RNDN))});
-      }
+      for (const T& v : res.values) scale = std::max(scale, largest_bound(v));
       for (std::size_t j = 0; j < res.values.size(); ++j) {
         const std::string name = res.is_vector ? res.name + "[" + std::to_string(j) + "]" : res.name;
         const interval* x53 = e53 ? &(derived ? e53->derived : e53->results)[i].values[j] : nullptr;
@@ -391,7 +447,7 @@ reference_state_output reference_run::compute(std::size_t i) const {
   // The dataset's lines for this state: the same text whichever process computes them.
   reference_state_output out;
   out.certified = s.certified;
-  std::ostringstream csv;
+  std::string& csv = out.csv;
   json_line line;
   line.add("state", json_string(s.name));
   line.add("status", json_string(s.certified ? "certified" : "refused"));
@@ -400,27 +456,52 @@ reference_state_output reference_run::compute(std::size_t i) const {
   line.add("inputs", inputs.text());
   if (!s.certified) {
     line.add("reason", json_string(s.reason));
-    csv << csv_field(s.name) << ",,refused,,,,,,," << csv_field(s.reason) << "\n";
+    csv += csv_field(s.name);
+    csv += ",,refused,,,,,,,";
+    csv += csv_field(s.reason);
+    csv += '\n';
   } else {
     line.add("error_amplification", nlohmann::json(s.amplification).dump());
     json_line qs, ds;
+    const std::string state_field = csv_field(s.name);
+    std::string j;
     for (const quantity& q : s.quantities) {
-      csv << csv_field(s.name) << "," << q.name << ",certified," << q.lower << "," << q.upper << "," << q.nearest_double
-          << "," << (q.decided ? 1 : 0) << "," << q.rel_error_bound << "," << q.tolerance << ",\n";
-      json_line j;
-      j.add("lower", json_string(q.lower));
-      j.add("upper", json_string(q.upper));
-      j.add("double", json_string(q.nearest_double));
-      j.add("decided", q.decided ? "true" : "false");
-      if (!q.rel_error_bound.empty()) j.add("rel_error_bound", json_string(q.rel_error_bound));
-      j.add("tolerance", json_string(q.tolerance));
-      (q.derived ? ds : qs).add(q.name, j.text());
+      csv += state_field;
+      csv += ',';
+      csv += q.name;
+      csv += ",certified,";
+      csv += q.lower;
+      csv += ',';
+      csv += q.upper;
+      csv += ',';
+      csv += q.nearest_double;
+      csv += q.decided ? ",1," : ",0,";
+      csv += q.rel_error_bound;
+      csv += ',';
+      csv += q.tolerance;
+      csv += ",\n";
+      // the quantity's object: its keys are distinct, so written in order (json_line's bytes)
+      j = "{\"lower\":";
+      j += json_string(q.lower);
+      j += ",\"upper\":";
+      j += json_string(q.upper);
+      j += ",\"double\":";
+      j += json_string(q.nearest_double);
+      j += q.decided ? ",\"decided\":true" : ",\"decided\":false";
+      if (!q.rel_error_bound.empty()) {
+        j += ",\"rel_error_bound\":";
+        j += json_string(q.rel_error_bound);
+      }
+      j += ",\"tolerance\":";
+      j += json_string(q.tolerance);
+      j += '}';
+      (q.derived ? ds : qs).add(q.name, j);
     }
     line.add("quantities", qs.text());
     if (!ds.empty()) line.add("derived", ds.text());
   }
-  out.csv = csv.str();
-  out.jsonl = line.text() + "\n";
+  out.jsonl = line.text();
+  out.jsonl += '\n';
   return out;
 }
 
@@ -430,6 +511,13 @@ int reference_run::write(const std::vector<reference_state_output>& outputs, int
   if (outputs.size() != states()) throw std::logic_error("reference_run::write: one output per state expected");
   std::string csv = "state,quantity,status,lower,upper,double,decided,rel_error_bound,tolerance,reason\n", jsonl;
   std::size_t refused = 0;
+  std::size_t csv_bytes = csv.size(), jsonl_bytes = 0;
+  for (const reference_state_output& s : outputs) {
+    csv_bytes += s.csv.size();
+    jsonl_bytes += s.jsonl.size();
+  }
+  csv.reserve(csv_bytes);
+  jsonl.reserve(jsonl_bytes);
   for (const reference_state_output& s : outputs) {
     csv += s.csv;
     jsonl += s.jsonl;

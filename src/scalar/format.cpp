@@ -4,8 +4,13 @@
 
 #include "appell/scalar/format.hpp"
 
+#include <gmp.h>
+
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <memory>
 
 namespace appell {
@@ -15,19 +20,14 @@ int roundtrip_digits(unsigned bits) {
   return 1 + static_cast<int>(std::ceil(bits * 0.30102999566398120));
 }
 
-std::string mpfr_to_decimal(mpfr_srcptr v, int digits, mpfr_rnd_t rnd) {
-  if (mpfr_nan_p(v)) return "nan";
-  if (mpfr_inf_p(v)) return mpfr_sgn(v) > 0 ? "inf" : "-inf";
-  if (mpfr_zero_p(v)) return mpfr_signbit(v) ? "-0" : "0";
-  mpfr_exp_t exp10 = 0;
-  std::unique_ptr<char, void (*)(char*)> text(
-      mpfr_get_str(nullptr, &exp10, 10, static_cast<std::size_t>(digits), v, rnd), mpfr_free_str);
-  std::string s(text.get());
-  bool negative = s[0] == '-';
-  if (negative) s.erase(0, 1);
+namespace {
+
+// The text of the number 0.s * 10^exp10 (s: its significant digits, at least one), in the form
+// every bound and value is printed in: positional for exponents -5 .. 20, scientific otherwise.
+std::string decimal_text(bool negative, std::string s, long exp10) {
   while (s.size() > 1 && s.back() == '0') s.pop_back();  // trailing zeros carry nothing
   // value = 0.s * 10^exp10 = s[0].s[1..] * 10^(exp10-1)
-  long e = static_cast<long>(exp10) - 1;
+  const long e = exp10 - 1;
   std::string out = negative ? "-" : "";
   if (e >= -5 && e < 21) {
     if (e >= 0) {
@@ -45,6 +45,152 @@ std::string mpfr_to_decimal(mpfr_srcptr v, int digits, mpfr_rnd_t rnd) {
     out += "e" + std::to_string(e);
   }
   return out;
+}
+
+// --- the significant digits of a double, exactly, without MPFR's mpfr_get_str --------------------
+//
+// The digits mpfr_get_str gives for a value that is a double, with at most 17 digits: the same
+// string and exponent (tests/decimal.cpp compares them on random doubles, every digit count and
+// rounding), by exact integer arithmetic on limbs on the stack (GMP's mpn layer: no allocation).
+// What `appell reference` prints for every bound of an interval<double> (half its time went to
+// mpfr_get_str: docs/reference-values.md).
+
+constexpr int max_limbs = 48;  // 10^350 x 2^53 x 2^64 and 2^1075 x 10^20 fit in 3072 bits
+
+struct limbs {
+  mp_limb_t d[max_limbs];
+  mp_size_t n = 0;  // significant limbs (d[n - 1] != 0 unless n == 0)
+  void set(std::uint64_t v) {
+    d[0] = static_cast<mp_limb_t>(v);
+    n = v ? 1 : 0;
+  }
+  void mul(mp_limb_t f) {
+    if (n == 0) return;
+    const mp_limb_t carry = mpn_mul_1(d, d, n, f);
+    if (carry) d[n++] = carry;
+  }
+  void mul_pow10(int k) {  // k >= 0
+    constexpr mp_limb_t ten19 = 10000000000000000000ULL;
+    for (; k >= 19; k -= 19) mul(ten19);
+    mp_limb_t f = 1;
+    for (; k > 0; --k) f *= 10;
+    if (f != 1) mul(f);
+  }
+  void shift_left(long bits) {  // bits >= 0
+    if (n == 0 || bits == 0) return;
+    const auto whole = static_cast<mp_size_t>(bits / 64);
+    const auto part = static_cast<unsigned>(bits % 64);
+    mp_limb_t top = 0;
+    if (part) top = mpn_lshift(d + whole, d, n, part);
+    else std::memmove(d + whole, d, static_cast<std::size_t>(n) * sizeof(mp_limb_t));
+    std::fill(d, d + whole, mp_limb_t(0));
+    n += whole;
+    if (top) d[n++] = top;
+  }
+};
+
+// q = floor(m 2^e / 10^k) and how the remainder r compares with half the divisor:
+// 0 exact, 1 below half, 2 half, 3 above half.  Returns false if q needs more than 64 bits.
+bool scaled_digits(std::uint64_t m, long e, long k, std::uint64_t& q, int& remainder) {
+  limbs num, den;
+  num.set(m);
+  den.set(1);
+  if (e >= 0) num.shift_left(e);
+  else den.shift_left(-e);
+  if (k <= 0) num.mul_pow10(static_cast<int>(-k));
+  else den.mul_pow10(static_cast<int>(k));
+  if (num.n < den.n) {  // q = 0
+    q = 0;
+    remainder = 1;  // nonzero (m > 0) and below half: only asked when q is out of range anyway
+    return true;
+  }
+  mp_limb_t quotient[max_limbs + 1], rest[max_limbs];
+  mpn_tdiv_qr(quotient, rest, 0, num.d, num.n, den.d, den.n);
+  const mp_size_t qn = num.n - den.n + 1;
+  for (mp_size_t i = 1; i < qn; ++i)
+    if (quotient[i]) return false;
+  q = quotient[0];
+  // compare 2 r with den
+  mp_size_t rn = den.n;
+  while (rn > 0 && rest[rn - 1] == 0) --rn;
+  if (rn == 0) {
+    remainder = 0;
+    return true;
+  }
+  mp_limb_t twice[max_limbs + 1];
+  const mp_limb_t top = mpn_lshift(twice, rest, rn, 1);
+  mp_size_t tn = rn;
+  if (top) twice[tn++] = top;
+  int c = tn != den.n ? (tn < den.n ? -1 : 1) : mpn_cmp(twice, den.d, tn);
+  remainder = c < 0 ? 1 : c == 0 ? 2 : 3;
+  return true;
+}
+
+// The digits and exponent of x (finite, nonzero) as mpfr_get_str(.., digits, x, rnd) gives them:
+// value = 0.s * 10^exp10.  False when this path does not apply (the caller asks MPFR).
+bool double_digits(double x, int digits, mpfr_rnd_t rnd, std::string& s, long& exp10) {
+  if (digits < 1 || digits > 17) return false;
+  bool up_when_inexact;  // the magnitude rounded away from 0
+  const bool negative = std::signbit(x);
+  switch (rnd) {
+    case MPFR_RNDD: up_when_inexact = negative; break;
+    case MPFR_RNDU: up_when_inexact = !negative; break;
+    case MPFR_RNDZ: up_when_inexact = false; break;
+    case MPFR_RNDA: up_when_inexact = true; break;
+    case MPFR_RNDN: up_when_inexact = false; break;  // decided by the remainder below
+    default: return false;
+  }
+  int binary_exponent = 0;
+  const double fraction = std::frexp(std::fabs(x), &binary_exponent);  // |x| = fraction 2^binary_exponent
+  const auto m = static_cast<std::uint64_t>(std::ldexp(fraction, 53));  // exact: 53 bits
+  const long e = binary_exponent - 53;                                  // |x| = m 2^e
+  std::uint64_t pow_low = 1;  // 10^(digits - 1)
+  for (int i = 1; i < digits; ++i) pow_low *= 10;
+  const std::uint64_t pow_high = pow_low * 10;  // 10^digits
+  // k: |x| / 10^k has `digits` digits before the point; estimated, then corrected.
+  long k = static_cast<long>(std::floor(std::log10(std::fabs(x)))) - (digits - 1);
+  std::uint64_t q = 0;
+  int remainder = 0;
+  for (int attempt = 0;; ++attempt) {
+    if (attempt > 4 || !scaled_digits(m, e, k, q, remainder)) return false;
+    if (q >= pow_high) ++k;
+    else if (q < pow_low) --k;
+    else break;
+  }
+  bool up = remainder != 0 && up_when_inexact;
+  if (rnd == MPFR_RNDN) up = remainder == 3 || (remainder == 2 && (q & 1) != 0);  // ties to even
+  if (up && ++q == pow_high) {
+    q = pow_low;
+    ++k;
+  }
+  char buffer[24];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, q);
+  if (ec != std::errc() || end - buffer != digits) return false;
+  s.assign(buffer, end);
+  exp10 = k + digits;
+  return true;
+}
+
+}  // namespace
+
+std::string mpfr_to_decimal(mpfr_srcptr v, int digits, mpfr_rnd_t rnd) {
+  if (mpfr_nan_p(v)) return "nan";
+  if (mpfr_inf_p(v)) return mpfr_sgn(v) > 0 ? "inf" : "-inf";
+  if (mpfr_zero_p(v)) return mpfr_signbit(v) ? "-0" : "0";
+  if (mpfr_get_prec(v) <= 64) {  // a double's bound, or a 64-bit value that is a double
+    const double x = mpfr_get_d(v, MPFR_RNDN);
+    std::string s;
+    long exp10 = 0;
+    if (std::isfinite(x) && mpfr_cmp_d(v, x) == 0 && double_digits(x, digits, rnd, s, exp10))
+      return decimal_text(std::signbit(x), std::move(s), exp10);
+  }
+  mpfr_exp_t exp10 = 0;
+  std::unique_ptr<char, void (*)(char*)> text(
+      mpfr_get_str(nullptr, &exp10, 10, static_cast<std::size_t>(digits), v, rnd), mpfr_free_str);
+  std::string s(text.get());
+  const bool negative = s[0] == '-';
+  if (negative) s.erase(0, 1);
+  return decimal_text(negative, std::move(s), static_cast<long>(exp10));
 }
 
 namespace {
