@@ -215,21 +215,39 @@ BOOST_AUTO_TEST_CASE(printing_round_trips_and_rounds_bounds_outward) {
   }
 }
 
-// mpfr_to_decimal prints a value that is a double (an interval<double>'s bound, up to 64 bits of
-// precision) by exact integer arithmetic of its own, not through mpfr_get_str: the text must be
-// MPFR's, character for character, for every digit count 1 .. 17 and every rounding. MPFR's
-// mpfr_get_str is reached with the same value at 80 bits (the own path takes at most 64).
+// mpfr_to_decimal prints a value of at most 64 bits (an interval<double>'s bound, a 64-bit error
+// bound) by exact integer arithmetic of its own, not through mpfr_get_str: the text must be MPFR's,
+// character for character, for every digit count 1 .. 17 and every rounding. MPFR's mpfr_get_str
+// is reached with the same value at 80 bits (the own path takes at most 64).
 BOOST_AUTO_TEST_CASE(doubles_print_as_mpfr_prints_them) {
   std::mt19937_64 rng(20261128);
   std::uniform_int_distribution<int> digits_of(1, 17);
-  std::uniform_int_distribution<int> kind_of(0, 3);
+  std::uniform_int_distribution<int> kind_of(0, 4);
+  std::uniform_int_distribution<int> exponent_of(-1150, 1150);
   std::uniform_int_distribution<int> small(-40, 40);
   const mpfr_rnd_t modes[] = {MPFR_RNDN, MPFR_RNDD, MPFR_RNDU, MPFR_RNDZ, MPFR_RNDA};
   mpfr_value as_double(53), as_64(64), wide(80);
-  long compared = 0, ties = 0;
+  long compared = 0, ties = 0, beyond_double = 0;
   for (int i = 0; i < 60000; ++i) {
     double x = 0;
-    switch (kind_of(rng)) {
+    const int kind = kind_of(rng);
+    if (kind == 4) {  // 64 random bits of significand, exponents beyond a double's (and beyond the own path's)
+      mpfr_set_uj(wide, rng() | 1, MPFR_RNDN);
+      mpfr_mul_2si(wide, wide, exponent_of(rng), MPFR_RNDN);
+      if (rng() & 1) mpfr_neg(wide, wide, MPFR_RNDN);
+      BOOST_REQUIRE(mpfr_set(as_64, wide, MPFR_RNDN) == 0);
+      if (std::abs(mpfr_get_exp(wide)) > 1022) ++beyond_double;
+      const int digits = digits_of(rng);
+      for (const mpfr_rnd_t rnd : modes) {
+        BOOST_REQUIRE_MESSAGE(mpfr_to_decimal(as_64, digits, rnd) == mpfr_to_decimal(wide, digits, rnd),
+                              "64-bit value " << mpfr_to_decimal(wide, 30, MPFR_RNDN) << ", " << digits << " digits, rounding "
+                                              << mpfr_print_rnd_mode(rnd) << ": " << mpfr_to_decimal(as_64, digits, rnd)
+                                              << " against MPFR's " << mpfr_to_decimal(wide, digits, rnd));
+        ++compared;
+      }
+      continue;
+    }
+    switch (kind) {
       case 0: {  // any finite double: every exponent, subnormals included
         std::uint64_t bits = rng();
         std::memcpy(&x, &bits, sizeof x);
@@ -278,7 +296,74 @@ BOOST_AUTO_TEST_CASE(doubles_print_as_mpfr_prints_them) {
         }())
       ++ties;
   }
-  BOOST_TEST_MESSAGE("texts compared: " << compared << ", ties to even among them: " << ties);
+  BOOST_TEST_MESSAGE("texts compared: " << compared << ", ties to even among them: " << ties
+                                        << ", 64-bit values beyond a double's exponents: " << beyond_double);
+  BOOST_TEST(beyond_double > 1000);
   BOOST_TEST(compared > 200000);
   BOOST_TEST(ties > 100);
+}
+
+// A decimal literal becomes a double (each bound of an interval, every point double) by an exact
+// path of appell's own (from_chars, then the exact comparison of the decimal with that double):
+// the doubles must be MPFR's (mpfr_strtofr in binary64's range, the path produce_double takes for
+// any other producer), in every rounding, on random literals of every shape: signs, leading and
+// trailing zeros, points at either end, exponents, exact values, midpoints between two doubles,
+// subnormals, near the largest double, and more than 40 digits (MPFR's path on both sides).
+BOOST_AUTO_TEST_CASE(decimals_become_the_doubles_mpfr_gives) {
+  std::mt19937_64 rng(11282026);
+  auto pick = [&](int n) { return static_cast<int>(rng() % static_cast<std::uint64_t>(n)); };
+  const mpfr_rnd_t modes[] = {MPFR_RNDN, MPFR_RNDD, MPFR_RNDU, MPFR_RNDZ};
+  long compared = 0, exact = 0, midpoints = 0;
+  for (int i = 0; i < 40000; ++i) {
+    std::string text;
+    const int kind = pick(5);
+    if (kind == 0) {  // random digits, a point somewhere, an exponent
+      if (pick(3) == 0) text += pick(2) ? "-" : "+";
+      const int n = 1 + pick(45);
+      const int point = pick(n + 2) - 1;  // -1: none
+      for (int d = 0; d < n; ++d) {
+        if (d == point) text += '.';
+        text += static_cast<char>('0' + (d < 2 && pick(4) == 0 ? 0 : pick(10)));
+      }
+      if (point == n) text += '.';
+      if (pick(2)) text += (pick(2) ? "e" : "E") + std::to_string(pick(640) - 320);
+    } else if (kind == 1) {  // an exact dyadic value: short decimal expansions
+      const double x = std::ldexp(static_cast<double>(pick(1 << 20)) - (1 << 19), pick(60) - 30);
+      mpfr_value v(60);
+      mpfr_set_d(v, x, MPFR_RNDN);
+      text = mpfr_to_decimal(v, 40, MPFR_RNDN);
+    } else if (kind == 2) {  // the midpoint of two doubles in [2^53, 2^63): an integer
+      const int shift = pick(10);
+      const std::uint64_t x = ((std::uint64_t(1) << 52) | (rng() >> 12)) << shift;  // a double's value
+      const std::uint64_t mid = x + (shift ? std::uint64_t(1) << (shift - 1) : 0);
+      text = std::to_string(shift ? mid : x);
+      if (shift) ++midpoints;
+    } else if (kind == 3) {  // near the ends of the range: subnormals and the largest doubles
+      text = std::to_string(1 + pick(9)) + "." + std::to_string(rng() % 1000000) + "e" +
+             std::to_string(pick(2) ? 300 + pick(9) : -300 - pick(30));
+    } else {  // what an engine prints: 17 significant digits
+      char buffer[64];
+      const double x = std::ldexp(static_cast<double>(rng() >> 11), pick(200) - 150);
+      std::snprintf(buffer, sizeof buffer, "%.17g", pick(2) ? -x : x);
+      text = buffer;
+    }
+    if (!is_decimal_literal(text)) continue;
+    const mpfr_producer own = decimal_producer(text);
+    const mpfr_producer by_mpfr = [text](mpfr_ptr out, mpfr_rnd_t rnd) {
+      return mpfr_strtofr(out, text.c_str(), nullptr, 10, rnd);
+    };
+    const double down = produce_double(by_mpfr, MPFR_RNDD), up = produce_double(by_mpfr, MPFR_RNDU);
+    if (down == up) ++exact;
+    for (const mpfr_rnd_t rnd : modes) {
+      const double a = produce_double(own, rnd), b = produce_double(by_mpfr, rnd);
+      BOOST_REQUIRE_MESSAGE(a == b && std::signbit(a) == std::signbit(b),
+                            "'" << text << "' rounded " << mpfr_print_rnd_mode(rnd) << ": " << to_decimal(a)
+                                << " against MPFR's " << to_decimal(b));
+      ++compared;
+    }
+  }
+  BOOST_TEST_MESSAGE("doubles compared: " << compared << ", exact decimals: " << exact << ", midpoints: " << midpoints);
+  BOOST_TEST(compared > 100000);
+  BOOST_TEST(exact > 1000);
+  BOOST_TEST(midpoints > 1000);
 }

@@ -12,7 +12,12 @@
 
 #include <boost/multiprecision/detail/digits.hpp>
 
+#include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <cmath>
 #include <initializer_list>
 
@@ -143,8 +148,141 @@ mpfr round_to_mpfr(mpfr_srcptr v, mpfr_rnd_t rnd) {
   return r;
 }
 
+// --- a decimal literal into a double, exactly, without MPFR ------------------------------------
+//
+// std::from_chars rounds to nearest (C++17 [charconv.from.chars]); the exact comparison of the
+// decimal D 10^k with that double m 2^e, by integers on limbs on the stack (GMP's mpn layer), says
+// whether it is exact and on which side the decimal lies, which gives the directed roundings. The
+// results are MPFR's (tests/decimal.cpp compares them on random literals). Outside the normal range
+// of doubles, for more than 40 significant digits or beyond 10^+-300, MPFR's path is taken.
+namespace {
+
+// The producer of a decimal literal (checked), a type of its own so that produce_double can see it
+// and take its exact path (decimal_to_double) rather than MPFR's.
+struct decimal_text_producer {
+  std::string text;
+  int operator()(mpfr_ptr out, mpfr_rnd_t rnd) const {
+    char* end = nullptr;
+    return mpfr_strtofr(out, text.c_str(), &end, 10, rnd);
+  }
+};
+
+constexpr int decimal_limbs = 48;
+
+struct limb_number {
+  mp_limb_t d[decimal_limbs];
+  mp_size_t n = 0;
+  void mul(mp_limb_t f) {
+    if (n == 0) return;
+    const mp_limb_t carry = mpn_mul_1(d, d, n, f);
+    if (carry) d[n++] = carry;
+  }
+  void mul_pow10(long k) {
+    constexpr mp_limb_t ten19 = 10000000000000000000ULL;
+    for (; k >= 19; k -= 19) mul(ten19);
+    mp_limb_t f = 1;
+    for (; k > 0; --k) f *= 10;
+    if (f != 1) mul(f);
+  }
+  void shift_left(long bits) {
+    if (n == 0 || bits == 0) return;
+    const auto whole = static_cast<mp_size_t>(bits / 64);
+    const auto part = static_cast<unsigned>(bits % 64);
+    mp_limb_t top = 0;
+    if (part) top = mpn_lshift(d + whole, d, n, part);
+    else std::memmove(d + whole, d, static_cast<std::size_t>(n) * sizeof(mp_limb_t));
+    std::fill(d, d + whole, mp_limb_t(0));
+    n += whole;
+    if (top) d[n++] = top;
+  }
+  int compare(const limb_number& o) const {
+    if (n != o.n) return n < o.n ? -1 : 1;
+    return n == 0 ? 0 : mpn_cmp(d, o.d, n);
+  }
+};
+
+bool decimal_to_double(const std::string& text, mpfr_rnd_t rnd, double& out) {
+  if (rnd != MPFR_RNDN && rnd != MPFR_RNDD && rnd != MPFR_RNDU && rnd != MPFR_RNDZ) return false;
+  // the literal (already checked by is_decimal_literal): sign, significant digits, exponent
+  std::size_t i = 0;
+  bool negative = false;
+  if (text[i] == '+' || text[i] == '-') negative = text[i++] == '-';
+  unsigned char digits[48];
+  int count = 0;
+  long exponent = 0;  // value = digits x 10^exponent
+  bool after_point = false;
+  for (; i < text.size() && text[i] != 'e' && text[i] != 'E'; ++i) {
+    if (text[i] == '.') {
+      after_point = true;
+      continue;
+    }
+    const int digit = text[i] - '0';
+    if (count == 0 && digit == 0) {  // a leading zero
+      if (after_point) --exponent;
+      continue;
+    }
+    if (count == 40) return false;
+    digits[count++] = static_cast<unsigned char>(digit);
+    if (after_point) --exponent;
+  }
+  if (i < text.size()) {
+    long e10 = 0;
+    const char* first = text.data() + i + 1;
+    if (*first == '+') ++first;
+    const auto [end, ec] = std::from_chars(first, text.data() + text.size(), e10);
+    if (ec != std::errc() || end != text.data() + text.size()) return false;
+    exponent += e10;
+  }
+  if (count == 0) {  // zero: MPFR's sign of zero
+    out = negative ? -0.0 : 0.0;
+    return true;
+  }
+  while (count > 1 && digits[count - 1] == 0) {  // trailing zeros into the exponent
+    --count;
+    ++exponent;
+  }
+  const long decade = exponent + count;  // 10^(decade - 1) <= |value| < 10^decade
+  if (decade < -300 || decade > 300) return false;
+  // the nearest double
+  const char* first = text.data() + (text[0] == '+' ? 1 : 0);
+  double x = 0;
+  const auto [end, ec] = std::from_chars(first, text.data() + text.size(), x);
+  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(x)) return false;
+  const double magnitude = std::fabs(x);
+  if (!(magnitude >= std::numeric_limits<double>::min()) || magnitude == std::numeric_limits<double>::max()) return false;
+  // |decimal| = D 10^exponent against |x| = m 2^e
+  int e2 = 0;
+  const auto m = static_cast<std::uint64_t>(std::ldexp(std::frexp(magnitude, &e2), 53));
+  const long e = e2 - 53;
+  limb_number lhs, rhs;  // lhs ~ D, rhs ~ m
+  lhs.n = static_cast<mp_size_t>(mpn_set_str(lhs.d, digits, static_cast<std::size_t>(count), 10));
+  rhs.d[0] = m;
+  rhs.n = 1;
+  if (exponent >= 0) lhs.mul_pow10(exponent);
+  else rhs.mul_pow10(-exponent);
+  if (e >= 0) rhs.shift_left(e);
+  else lhs.shift_left(-e);
+  const int c = lhs.compare(rhs);  // sign of |decimal| - |x|
+  if (c == 0 || rnd == MPFR_RNDN) {
+    out = x;
+    return true;
+  }
+  const bool toward_larger_magnitude = (rnd == MPFR_RNDU && !negative) || (rnd == MPFR_RNDD && negative);
+  double result = magnitude;
+  if (c > 0 && toward_larger_magnitude) result = std::nextafter(magnitude, std::numeric_limits<double>::infinity());
+  if (c < 0 && !toward_larger_magnitude) result = std::nextafter(magnitude, 0.0);
+  out = negative ? -result : result;
+  return true;
+}
+
+}  // namespace
+
 // --- producers -------------------------------------------------------------
 double produce_double(const mpfr_producer& f, mpfr_rnd_t rnd) {
+  if (const auto* d = f.target<decimal_text_producer>()) {
+    double x = 0;
+    if (decimal_to_double(d->text, rnd, x)) return x;
+  }
   mpfr_value r;
   produce_in(binary64, f, rnd, r);
   return mpfr_get_d(r, rnd);
@@ -209,12 +347,7 @@ bool is_decimal_literal(std::string_view s) {
 
 mpfr_producer decimal_producer(std::string_view s) {
   if (!is_decimal_literal(s)) throw parse_error("'" + std::string(s) + "' is not a decimal number");
-  std::string text(s);
-  return [text](mpfr_ptr out, mpfr_rnd_t rnd) {
-    char* end = nullptr;
-    int t = mpfr_strtofr(out, text.c_str(), &end, 10, rnd);
-    return t;
-  };
+  return decimal_text_producer{std::string(s)};
 }
 
 mpfr_producer rational_producer(long p, long q) {

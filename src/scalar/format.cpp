@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <string_view>
 
 namespace appell {
 
@@ -24,36 +25,50 @@ namespace {
 
 // The text of the number 0.s * 10^exp10 (s: its significant digits, at least one), in the form
 // every bound and value is printed in: positional for exponents -5 .. 20, scientific otherwise.
-std::string decimal_text(bool negative, std::string s, long exp10) {
-  while (s.size() > 1 && s.back() == '0') s.pop_back();  // trailing zeros carry nothing
+std::string decimal_text(bool negative, std::string_view s, long exp10) {
+  while (s.size() > 1 && s.back() == '0') s.remove_suffix(1);  // trailing zeros carry nothing
   // value = 0.s * 10^exp10 = s[0].s[1..] * 10^(exp10-1)
   const long e = exp10 - 1;
-  std::string out = negative ? "-" : "";
+  const auto n = static_cast<long>(s.size());
+  std::string out;
+  out.reserve(s.size() + 32);
+  if (negative) out += '-';
   if (e >= -5 && e < 21) {
     if (e >= 0) {
-      if (static_cast<long>(s.size()) <= e + 1) {
-        out += s + std::string(static_cast<std::size_t>(e + 1) - s.size(), '0');
+      if (n <= e + 1) {
+        out += s;
+        out.append(static_cast<std::size_t>(e + 1 - n), '0');
       } else {
-        out += s.substr(0, static_cast<std::size_t>(e + 1)) + "." + s.substr(static_cast<std::size_t>(e + 1));
+        out += s.substr(0, static_cast<std::size_t>(e + 1));
+        out += '.';
+        out += s.substr(static_cast<std::size_t>(e + 1));
       }
     } else {
-      out += "0." + std::string(static_cast<std::size_t>(-e - 1), '0') + s;
+      out += "0.";
+      out.append(static_cast<std::size_t>(-e - 1), '0');
+      out += s;
     }
   } else {
-    out += s.substr(0, 1);
-    if (s.size() > 1) out += "." + s.substr(1);
-    out += "e" + std::to_string(e);
+    out += s[0];
+    if (n > 1) {
+      out += '.';
+      out += s.substr(1);
+    }
+    char buffer[24];
+    const auto printed = std::to_chars(buffer, buffer + sizeof buffer, e);
+    out += 'e';
+    out.append(buffer, printed.ptr);
   }
   return out;
 }
 
-// --- the significant digits of a double, exactly, without MPFR's mpfr_get_str --------------------
+// --- the significant digits of a number of at most 64 bits, exactly, without mpfr_get_str ----------
 //
-// The digits mpfr_get_str gives for a value that is a double, with at most 17 digits: the same
-// string and exponent (tests/decimal.cpp compares them on random doubles, every digit count and
-// rounding), by exact integer arithmetic on limbs on the stack (GMP's mpn layer: no allocation).
-// What `appell reference` prints for every bound of an interval<double> (half its time went to
-// mpfr_get_str: docs/reference-values.md).
+// The digits mpfr_get_str gives for a value of at most 64 bits (an interval<double>'s bound, a
+// 64-bit error bound), with at most 17 digits: the same string and exponent (tests/decimal.cpp
+// compares them on random values, every digit count and rounding), by exact integer arithmetic on
+// limbs on the stack (GMP's mpn layer: no allocation). What `appell reference` prints for every
+// bound of an interval<double> (mpfr_get_str took half of a state's time: docs/reference-values.md).
 
 constexpr int max_limbs = 48;  // 10^350 x 2^53 x 2^64 and 2^1075 x 10^20 fit in 3072 bits
 
@@ -126,12 +141,15 @@ bool scaled_digits(std::uint64_t m, long e, long k, std::uint64_t& q, int& remai
   return true;
 }
 
-// The digits and exponent of x (finite, nonzero) as mpfr_get_str(.., digits, x, rnd) gives them:
-// value = 0.s * 10^exp10.  False when this path does not apply (the caller asks MPFR).
-bool double_digits(double x, int digits, mpfr_rnd_t rnd, std::string& s, long& exp10) {
-  if (digits < 1 || digits > 17) return false;
+// The digits and exponent of v (a regular number of at most 64 bits: one limb) as
+// mpfr_get_str(.., digits, v, rnd) gives them: value = 0.s * 10^exp10.  False when this path does
+// not apply (more than 17 digits, an exponent beyond +-1100, another rounding): the caller asks MPFR.
+bool small_binary_digits(mpfr_srcptr v, int digits, mpfr_rnd_t rnd, char (&s)[24], long& exp10) {
+  if (digits < 1 || digits > 17 || mpfr_get_prec(v) > 64 || !mpfr_regular_p(v)) return false;
+  const mpfr_exp_t binary_exponent = mpfr_custom_get_exp(v);  // |v| = 0.significand 2^binary_exponent
+  if (binary_exponent < -1100 || binary_exponent > 1100) return false;
   bool up_when_inexact;  // the magnitude rounded away from 0
-  const bool negative = std::signbit(x);
+  const bool negative = mpfr_signbit(v);
   switch (rnd) {
     case MPFR_RNDD: up_when_inexact = negative; break;
     case MPFR_RNDU: up_when_inexact = !negative; break;
@@ -140,15 +158,15 @@ bool double_digits(double x, int digits, mpfr_rnd_t rnd, std::string& s, long& e
     case MPFR_RNDN: up_when_inexact = false; break;  // decided by the remainder below
     default: return false;
   }
-  int binary_exponent = 0;
-  const double fraction = std::frexp(std::fabs(x), &binary_exponent);  // |x| = fraction 2^binary_exponent
-  const auto m = static_cast<std::uint64_t>(std::ldexp(fraction, 53));  // exact: 53 bits
-  const long e = binary_exponent - 53;                                  // |x| = m 2^e
+  static_assert(GMP_NUMB_BITS == 64, "one 64-bit limb holds a significand of up to 64 bits");
+  const std::uint64_t m = static_cast<const mp_limb_t*>(mpfr_custom_get_significand(v))[0];  // top bit set
+  const long e = static_cast<long>(binary_exponent) - 64;  // |v| = m 2^e
   std::uint64_t pow_low = 1;  // 10^(digits - 1)
   for (int i = 1; i < digits; ++i) pow_low *= 10;
   const std::uint64_t pow_high = pow_low * 10;  // 10^digits
-  // k: |x| / 10^k has `digits` digits before the point; estimated, then corrected.
-  long k = static_cast<long>(std::floor(std::log10(std::fabs(x)))) - (digits - 1);
+  // k: |v| / 10^k has `digits` digits before the point; estimated from log10 |v|, then corrected.
+  const double log10_v = (std::log2(static_cast<double>(m)) + static_cast<double>(e)) * 0.30102999566398120;
+  long k = static_cast<long>(std::floor(log10_v)) - (digits - 1);
   std::uint64_t q = 0;
   int remainder = 0;
   for (int attempt = 0;; ++attempt) {
@@ -163,10 +181,9 @@ bool double_digits(double x, int digits, mpfr_rnd_t rnd, std::string& s, long& e
     q = pow_low;
     ++k;
   }
-  char buffer[24];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, q);
-  if (ec != std::errc() || end - buffer != digits) return false;
-  s.assign(buffer, end);
+  const auto [end, ec] = std::to_chars(s, s + sizeof s - 1, q);
+  if (ec != std::errc() || end - s != digits) return false;
+  *end = '\0';
   exp10 = k + digits;
   return true;
 }
@@ -177,20 +194,18 @@ std::string mpfr_to_decimal(mpfr_srcptr v, int digits, mpfr_rnd_t rnd) {
   if (mpfr_nan_p(v)) return "nan";
   if (mpfr_inf_p(v)) return mpfr_sgn(v) > 0 ? "inf" : "-inf";
   if (mpfr_zero_p(v)) return mpfr_signbit(v) ? "-0" : "0";
-  if (mpfr_get_prec(v) <= 64) {  // a double's bound, or a 64-bit value that is a double
-    const double x = mpfr_get_d(v, MPFR_RNDN);
-    std::string s;
+  {  // at most 64 bits (a double's bound, a 64-bit bound of an error): exact integer arithmetic
+    char s[24];
     long exp10 = 0;
-    if (std::isfinite(x) && mpfr_cmp_d(v, x) == 0 && double_digits(x, digits, rnd, s, exp10))
-      return decimal_text(std::signbit(x), std::move(s), exp10);
+    if (small_binary_digits(v, digits, rnd, s, exp10)) return decimal_text(mpfr_signbit(v), s, exp10);
   }
   mpfr_exp_t exp10 = 0;
   std::unique_ptr<char, void (*)(char*)> text(
       mpfr_get_str(nullptr, &exp10, 10, static_cast<std::size_t>(digits), v, rnd), mpfr_free_str);
-  std::string s(text.get());
+  std::string_view s(text.get());
   const bool negative = s[0] == '-';
-  if (negative) s.erase(0, 1);
-  return decimal_text(negative, std::move(s), static_cast<long>(exp10));
+  if (negative) s.remove_prefix(1);
+  return decimal_text(negative, s, static_cast<long>(exp10));
 }
 
 namespace {
