@@ -355,7 +355,14 @@ BOOST_AUTO_TEST_CASE(decimals_become_the_doubles_mpfr_gives) {
     const double down = produce_double(by_mpfr, MPFR_RNDD), up = produce_double(by_mpfr, MPFR_RNDU);
     if (down == up) ++exact;
     for (const mpfr_rnd_t rnd : modes) {
-      const double a = produce_double(own, rnd), b = produce_double(by_mpfr, rnd);
+      double a = 0;
+      if (i % 2) {  // inside an interval evaluation's scope: the processor rounds upward there
+        const upward_rounding upward;
+        a = produce_double(own, rnd);
+      } else {
+        a = produce_double(own, rnd);
+      }
+      const double b = produce_double(by_mpfr, rnd);
       BOOST_REQUIRE_MESSAGE(a == b && std::signbit(a) == std::signbit(b),
                             "'" << text << "' rounded " << mpfr_print_rnd_mode(rnd) << ": " << to_decimal(a)
                                 << " against MPFR's " << to_decimal(b));
@@ -366,4 +373,51 @@ BOOST_AUTO_TEST_CASE(decimals_become_the_doubles_mpfr_gives) {
   BOOST_TEST(compared > 100000);
   BOOST_TEST(exact > 1000);
   BOOST_TEST(midpoints > 1000);
+}
+
+// p/q becomes a double (rational<double>, rational<interval>: the models' constants such as 2/5) by
+// an exact path of its own (the quotient, then its remainder by one fma): the doubles must be MPFR's
+// (mpfr_set_q), in every rounding, inside and outside an upward-rounding scope, for small and
+// large numerators and denominators of both signs, exact quotients included.
+BOOST_AUTO_TEST_CASE(rationals_become_the_doubles_mpfr_gives) {
+  std::mt19937_64 rng(20261129);
+  const mpfr_rnd_t modes[] = {MPFR_RNDN, MPFR_RNDD, MPFR_RNDU, MPFR_RNDZ};
+  long compared = 0, exact = 0;
+  for (int i = 0; i < 40000; ++i) {
+    const int bits_p = 1 + static_cast<int>(rng() % 56), bits_q = 1 + static_cast<int>(rng() % 56);
+    long p = static_cast<long>(rng() >> (64 - bits_p)), q = static_cast<long>(rng() >> (64 - bits_q));
+    if (i % 5 == 0) p = q * static_cast<long>(rng() % 64);  // exact quotients
+    if (q == 0) q = 1;
+    if (rng() & 1) p = -p;
+    if (rng() & 1) q = -q;
+    const mpfr_producer own = rational_producer(p, q);
+    const mpfr_producer by_mpfr = [p, q](mpfr_ptr out, mpfr_rnd_t rnd) {
+      mpq_t r;
+      mpq_init(r);
+      mpq_set_si(r, p, static_cast<unsigned long>(q < 0 ? -q : q));
+      mpq_canonicalize(r);
+      if (q < 0) mpq_neg(r, r);
+      const int t = mpfr_set_q(out, r, rnd);
+      mpq_clear(r);
+      return t;
+    };
+    if (produce_double(by_mpfr, MPFR_RNDD) == produce_double(by_mpfr, MPFR_RNDU)) ++exact;
+    for (const mpfr_rnd_t rnd : modes) {
+      double a = 0;
+      if (i % 2) {
+        const upward_rounding upward;
+        a = produce_double(own, rnd);
+      } else {
+        a = produce_double(own, rnd);
+      }
+      const double b = produce_double(by_mpfr, rnd);
+      BOOST_REQUIRE_MESSAGE(a == b && std::signbit(a) == std::signbit(b),
+                            p << "/" << q << " rounded " << mpfr_print_rnd_mode(rnd) << ": " << to_decimal(a)
+                              << " against MPFR's " << to_decimal(b));
+      ++compared;
+    }
+  }
+  BOOST_TEST_MESSAGE("doubles compared: " << compared << ", exact quotients: " << exact);
+  BOOST_TEST(compared == 160000);
+  BOOST_TEST(exact > 5000);
 }

@@ -167,6 +167,37 @@ struct decimal_text_producer {
   }
 };
 
+// The producer of p/q, a type of its own for the same reason (rational_to_double).
+struct rational_value_producer {
+  long p, q;
+  int operator()(mpfr_ptr out, mpfr_rnd_t rnd) const;
+};
+
+// p/q (q != 0) into a double in direction rnd, exactly: the quotient rounded to nearest, then the
+// remainder p - q x, exact by one fma (the remainder of a correctly rounded quotient is a double),
+// says on which side p/q lies. False beyond |p|, |q| <= 2^53 (MPFR's path then).
+bool rational_to_double(long p, long q, mpfr_rnd_t rnd, double& out) {
+  constexpr long limit = 1L << 53;
+  if (p < -limit || p > limit || q < -limit || q > limit) return false;
+  if (rnd != MPFR_RNDN && rnd != MPFR_RNDD && rnd != MPFR_RNDU && rnd != MPFR_RNDZ) return false;
+  if (p == 0) {
+    out = 0.0;  // MPFR's +0 for a zero rational
+    return true;
+  }
+  const nearest_rounding nearest;  // the caller may be inside an upward_rounding scope
+  const double a = static_cast<double>(p), b = static_cast<double>(q);
+  const double x = a / b;
+  const double r = std::fma(-x, b, a);  // p - q x, exact
+  const int side = r == 0 ? 0 : (r > 0) == (b > 0) ? 1 : -1;  // sign of p/q - x
+  double result = x;
+  if (side > 0 && (rnd == MPFR_RNDU || (rnd == MPFR_RNDZ && x < 0)))
+    result = std::nextafter(x, std::numeric_limits<double>::infinity());
+  if (side < 0 && (rnd == MPFR_RNDD || (rnd == MPFR_RNDZ && x > 0)))
+    result = std::nextafter(x, -std::numeric_limits<double>::infinity());
+  out = result;
+  return true;
+}
+
 constexpr int decimal_limbs = 48;
 
 struct limb_number {
@@ -243,7 +274,9 @@ bool decimal_to_double(const std::string& text, mpfr_rnd_t rnd, double& out) {
   }
   const long decade = exponent + count;  // 10^(decade - 1) <= |value| < 10^decade
   if (decade < -300 || decade > 300) return false;
-  // the nearest double
+  // the nearest double (from_chars may take a floating-point fast path: the caller may be inside
+  // an upward_rounding scope)
+  const nearest_rounding nearest;
   const char* first = text.data() + (text[0] == '+' ? 1 : 0);
   double x = 0;
   const auto [end, ec] = std::from_chars(first, text.data() + text.size(), x);
@@ -282,6 +315,9 @@ double produce_double(const mpfr_producer& f, mpfr_rnd_t rnd) {
   if (const auto* d = f.target<decimal_text_producer>()) {
     double x = 0;
     if (decimal_to_double(d->text, rnd, x)) return x;
+  } else if (const auto* r = f.target<rational_value_producer>()) {
+    double x = 0;
+    if (rational_to_double(r->p, r->q, rnd, x)) return x;
   }
   mpfr_value r;
   produce_in(binary64, f, rnd, r);
@@ -352,20 +388,24 @@ mpfr_producer decimal_producer(std::string_view s) {
 
 mpfr_producer rational_producer(long p, long q) {
   if (q == 0) throw parse_error("rational with zero denominator");
-  return [p, q](mpfr_ptr out, mpfr_rnd_t rnd) {
-    mpq_t r;
-    mpq_init(r);
-    mpq_set_si(r, p, 1);
-    mpq_t d;
-    mpq_init(d);
-    mpq_set_si(d, q, 1);
-    mpq_div(r, r, d);
-    int t = mpfr_set_q(out, r, rnd);
-    mpq_clear(d);
-    mpq_clear(r);
-    return t;
-  };
+  return rational_value_producer{p, q};
 }
+
+namespace {
+int rational_value_producer::operator()(mpfr_ptr out, mpfr_rnd_t rnd) const {
+  mpq_t r;
+  mpq_init(r);
+  mpq_set_si(r, p, 1);
+  mpq_t d;
+  mpq_init(d);
+  mpq_set_si(d, q, 1);
+  mpq_div(r, r, d);
+  int t = mpfr_set_q(out, r, rnd);
+  mpq_clear(d);
+  mpq_clear(r);
+  return t;
+}
+}  // namespace
 
 mpfr_producer pi_producer() {
   return [](mpfr_ptr out, mpfr_rnd_t rnd) { return mpfr_const_pi(out, rnd); };
@@ -428,7 +468,22 @@ rational_q rational_from_decimal(const std::string& s) {
   return rational_q(q.v);
 }
 
+namespace {
+// The sign of one decimal literal, read from its digits (no rational made).
+int literal_sign(std::string_view s) {
+  if (!is_decimal_literal(s)) throw parse_error("'" + std::string(s) + "' is not a decimal number");
+  const std::size_t end = s.find_first_of("eE");
+  for (const char c : s.substr(0, end))
+    if (c >= '1' && c <= '9') return s[0] == '-' ? -1 : 1;
+  return 0;
+}
+}  // namespace
+
 int decimal_sign_of_polynomial(const std::vector<decimal_term>& terms) {
+  if (terms.size() == 1 && terms[0].factors.size() == 1) {  // c d: the signs of c and d
+    const int c = terms[0].coefficient > 0 ? 1 : terms[0].coefficient < 0 ? -1 : 0;
+    return c * literal_sign(terms[0].factors[0]);
+  }
   scoped_mpq sum, term, factor;
   for (const auto& t : terms) {
     mpq_set_si(term.v, t.coefficient, 1);
@@ -442,6 +497,10 @@ int decimal_sign_of_polynomial(const std::vector<decimal_term>& terms) {
 }
 
 int decimal_sign_of_sum(std::initializer_list<std::pair<int, std::string_view>> terms) {
+  if (terms.size() == 1) {  // c d: the signs of c and d
+    const auto& [coefficient, text] = *terms.begin();
+    return (coefficient > 0 ? 1 : coefficient < 0 ? -1 : 0) * literal_sign(text);
+  }
   std::vector<decimal_term> polynomial;
   for (const auto& [coefficient, text] : terms) polynomial.push_back({coefficient, {std::string(text)}});
   return decimal_sign_of_polynomial(polynomial);

@@ -27,39 +27,50 @@ namespace {
 // every bound and value is printed in: positional for exponents -5 .. 20, scientific otherwise.
 std::string decimal_text(bool negative, std::string_view s, long exp10) {
   while (s.size() > 1 && s.back() == '0') s.remove_suffix(1);  // trailing zeros carry nothing
-  // value = 0.s * 10^exp10 = s[0].s[1..] * 10^(exp10-1)
+  // value = 0.s * 10^exp10 = s[0].s[1..] * 10^(exp10-1); written into a buffer first when short, so
+  // that a text of up to 15 characters makes no heap block (std::string's own storage)
   const long e = exp10 - 1;
   const auto n = static_cast<long>(s.size());
-  std::string out;
-  out.reserve(s.size() + 32);
-  if (negative) out += '-';
+  char small[96];
+  std::string large;
+  const bool fits = n <= 40;
+  char* p = small;
+  auto put = [&](std::string_view t) {
+    if (fits) p = std::copy(t.begin(), t.end(), p);
+    else large += t;
+  };
+  auto zeros = [&](long count) {
+    if (fits) p = std::fill_n(p, count, '0');
+    else large.append(static_cast<std::size_t>(count), '0');
+  };
+  if (negative) put("-");
   if (e >= -5 && e < 21) {
     if (e >= 0) {
       if (n <= e + 1) {
-        out += s;
-        out.append(static_cast<std::size_t>(e + 1 - n), '0');
+        put(s);
+        zeros(e + 1 - n);
       } else {
-        out += s.substr(0, static_cast<std::size_t>(e + 1));
-        out += '.';
-        out += s.substr(static_cast<std::size_t>(e + 1));
+        put(s.substr(0, static_cast<std::size_t>(e + 1)));
+        put(".");
+        put(s.substr(static_cast<std::size_t>(e + 1)));
       }
     } else {
-      out += "0.";
-      out.append(static_cast<std::size_t>(-e - 1), '0');
-      out += s;
+      put("0.");
+      zeros(-e - 1);
+      put(s);
     }
   } else {
-    out += s[0];
+    put(s.substr(0, 1));
     if (n > 1) {
-      out += '.';
-      out += s.substr(1);
+      put(".");
+      put(s.substr(1));
     }
     char buffer[24];
-    const auto printed = std::to_chars(buffer, buffer + sizeof buffer, e);
-    out += 'e';
-    out.append(buffer, printed.ptr);
+    buffer[0] = 'e';
+    const auto printed = std::to_chars(buffer + 1, buffer + sizeof buffer, e);
+    put(std::string_view(buffer, static_cast<std::size_t>(printed.ptr - buffer)));
   }
-  return out;
+  return fits ? std::string(small, p) : large;
 }
 
 // --- the significant digits of a number of at most 64 bits, exactly, without mpfr_get_str ----------
