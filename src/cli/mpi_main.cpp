@@ -16,13 +16,18 @@
 // Every rank reads and checks the inputs (the same verdict everywhere: bad input
 // is exit 2 on all ranks, reported once, by rank 0).  Exit status as `appell
 // reference` or `appell validity`, the same on every rank.
+#include <mpi.h>
+
 #include <boost/mpi.hpp>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
+#include <algorithm>
+#include <cstdint>
 #include <iostream>
 #include <optional>
 #include <utility>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "exit_status.hpp"
@@ -33,6 +38,58 @@
 namespace {
 
 constexpr int tag_piece = 1, tag_report = 2, tag_stop = 3;
+constexpr int tag_text_header = 11, tag_text_sizes = 12, tag_text_csv = 13, tag_text_jsonl = 14;
+
+/// A rank's share of `appell reference`: its states' lines one after the other, and per state the
+/// lengths of its CSV and JSON lines and whether it was certified.
+struct rank_text {
+  std::string csv, jsonl;
+  std::vector<std::uint64_t> sizes;  ///< csv length, jsonl length, certified (1 or 0), per state
+
+  void add(std::string_view c, std::string_view j, bool certified) {
+    csv += c;
+    jsonl += j;
+    sizes.insert(sizes.end(), {c.size(), j.size(), certified ? 1u : 0u});
+  }
+  void send(MPI_Comm comm) const {
+    const std::uint64_t header[3] = {sizes.size(), csv.size(), jsonl.size()};
+    MPI_Send(header, 3, MPI_UINT64_T, 0, tag_text_header, comm);
+    send_bytes(comm, sizes.data(), sizes.size() * sizeof(std::uint64_t), tag_text_sizes);
+    send_bytes(comm, csv.data(), csv.size(), tag_text_csv);
+    send_bytes(comm, jsonl.data(), jsonl.size(), tag_text_jsonl);
+  }
+  void receive(MPI_Comm comm, int from) {
+    std::uint64_t header[3];
+    MPI_Recv(header, 3, MPI_UINT64_T, from, tag_text_header, comm, MPI_STATUS_IGNORE);
+    sizes.resize(header[0]);
+    csv.resize(header[1]);
+    jsonl.resize(header[2]);
+    receive_bytes(comm, from, sizes.data(), sizes.size() * sizeof(std::uint64_t), tag_text_sizes);
+    receive_bytes(comm, from, csv.data(), csv.size(), tag_text_csv);
+    receive_bytes(comm, from, jsonl.data(), jsonl.size(), tag_text_jsonl);
+  }
+
+ private:
+  static constexpr std::size_t piece = std::size_t(1) << 30;  // an MPI count is an int
+  static void send_bytes(MPI_Comm comm, const void* data, std::size_t bytes, int tag) {
+    const char* at = static_cast<const char*>(data);
+    do {
+      const std::size_t now = std::min(bytes, piece);
+      MPI_Send(at, static_cast<int>(now), MPI_BYTE, 0, tag, comm);
+      at += now;
+      bytes -= now;
+    } while (bytes > 0);
+  }
+  static void receive_bytes(MPI_Comm comm, int from, void* data, std::size_t bytes, int tag) {
+    char* at = static_cast<char*>(data);
+    do {
+      const std::size_t now = std::min(bytes, piece);
+      MPI_Recv(at, static_cast<int>(now), MPI_BYTE, from, tag, comm, MPI_STATUS_IGNORE);
+      at += now;
+      bytes -= now;
+    } while (bytes > 0);
+  }
+};
 
 /// The other ranks as validity's remote workers (rank w + 1 is worker w), seen from rank 0.
 class mpi_pieces final : public appell::cli::remote_pieces {
@@ -127,7 +184,8 @@ int main(int argc, char** argv) {
     const appell::cli::reference_run run(options);
     const std::size_t n = run.states(), p = static_cast<std::size_t>(processes);
     // Mine: (csv, jsonl, certified) per state, flattened for the gather.
-    std::vector<std::string> mine;
+    // this rank's states' lines, one after the other, and per state its two lengths and its status
+    rank_text mine;
     std::string failure;
     {
       appell::cli::progress line("appell-mpi reference (rank 0's share, " + std::to_string(processes) + " processes)",
@@ -137,12 +195,10 @@ int main(int argc, char** argv) {
       for (std::size_t i = static_cast<std::size_t>(world.rank()); i < n; i += p) {
         try {
           const appell::cli::reference_state_output o = run.compute(i);
-          mine.push_back(o.csv);
-          mine.push_back(o.jsonl);
-          mine.push_back(o.certified ? "1" : "0");
+          mine.add(o.csv, o.jsonl, o.certified);
         } catch (const std::exception& e) {  // an internal error: reported after the collective steps
           if (failure.empty()) failure = e.what();
-          mine.insert(mine.end(), {"", "", "0"});
+          mine.add("", "", false);
         }
         if (root) appell::cli::show_states_done(line, ++done, share);
       }
@@ -152,17 +208,29 @@ int main(int argc, char** argv) {
       if (!failure.empty()) std::cerr << "appell: internal error (rank " << world.rank() << "): " << failure << "\n";
       return appell::exit_code(appell::exit_status::internal);
     }
-    std::vector<std::vector<std::string>> all;
-    boost::mpi::gather(world, mine, all, 0);
-    if (root) {
-      std::vector<appell::cli::reference_state_output> outputs(n);
-      for (std::size_t q = 0; q < all.size(); ++q)
-        for (std::size_t k = 0; 3 * k + 2 < all[q].size(); ++k) {
+    // The lines reach rank 0 as raw bytes (three messages a rank, in pieces of at most 1 GiB), not
+    // through Boost.Serialization (which copied 57 MB of text for 10^4 states of the bowl several
+    // times over, and kept the other ranks waiting).
+    const MPI_Comm comm = world;
+    if (!root) {
+      mine.send(comm);
+    } else {
+      std::vector<rank_text> ranks(p);
+      ranks[0] = std::move(mine);
+      for (std::size_t q = 1; q < p; ++q) ranks[q].receive(comm, static_cast<int>(q));
+      std::vector<appell::cli::reference_state_text> outputs(n);
+      for (std::size_t q = 0; q < p; ++q) {
+        std::size_t csv_at = 0, jsonl_at = 0;
+        for (std::size_t k = 0; 3 * k + 2 < ranks[q].sizes.size(); ++k) {
+          const std::uint64_t* z = &ranks[q].sizes[3 * k];
           auto& o = outputs[q + k * p];
-          o.csv = all[q][3 * k];
-          o.jsonl = all[q][3 * k + 1];
-          o.certified = all[q][3 * k + 2] == "1";
+          o.csv = std::string_view(ranks[q].csv).substr(csv_at, z[0]);
+          o.jsonl = std::string_view(ranks[q].jsonl).substr(jsonl_at, z[1]);
+          o.certified = z[2] == 1;
+          csv_at += z[0];
+          jsonl_at += z[1];
         }
+      }
       status = run.write(outputs, processes);
     }
   } catch (...) {

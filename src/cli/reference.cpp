@@ -518,7 +518,7 @@ reference_state_output reference_run::compute(std::size_t i) const {
   return out;
 }
 
-int reference_run::write(const std::vector<reference_state_output>& outputs, int processes) const {
+int reference_run::write(const std::vector<reference_state_text>& outputs, int processes) const {
   const impl& r = *p_;
   const reference_options& o = r.o;
   if (outputs.size() != states()) throw std::logic_error("reference_run::write: one output per state expected");
@@ -529,7 +529,7 @@ int reference_run::write(const std::vector<reference_state_output>& outputs, int
   csv.reserve(outputs.size() + 1);
   jsonl.reserve(outputs.size());
   std::size_t refused = 0;
-  for (const reference_state_output& s : outputs) {
+  for (const reference_state_text& s : outputs) {
     csv.emplace_back(s.csv);
     jsonl.emplace_back(s.jsonl);
     if (!s.certified) ++refused;
@@ -609,7 +609,10 @@ int reference(const reference_options& o) {
       show_states_done(line, i + 1, run.states());
     }
   }
-  return run.write(outputs, 1);
+  std::vector<reference_state_text> texts;
+  texts.reserve(outputs.size());
+  for (const reference_state_output& s : outputs) texts.push_back({s.csv, s.jsonl, s.certified});
+  return run.write(texts, 1);
 }
 
 }  // namespace appell::cli

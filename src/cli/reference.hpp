@@ -24,6 +24,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "progress.hpp"
@@ -58,6 +59,11 @@ struct reference_state_output {
   std::string csv, jsonl;
   bool certified = false;
 };
+/// The same lines, held elsewhere (a process's own outputs, or the text a rank sent).
+struct reference_state_text {
+  std::string_view csv, jsonl;
+  bool certified = false;
+};
 
 /// `appell reference` in three steps, so that a distributed run (appell-mpi) can
 /// share the states out: the constructor reads and checks every input (input_error
@@ -69,7 +75,7 @@ class reference_run {
   std::size_t states() const;
   reference_state_output compute(std::size_t i) const;
   /// Returns the exit status (0, or 3 when some states were refused).
-  int write(const std::vector<reference_state_output>& outputs, int processes) const;
+  int write(const std::vector<reference_state_text>& outputs, int processes) const;
 
  private:
   struct impl;
