@@ -118,6 +118,17 @@ struct limbs {
 // q = floor(m 2^e / 10^k) and how the remainder r compares with half the divisor:
 // 0 exact, 1 below half, 2 half, 3 above half.  Returns false if q needs more than 64 bits.
 bool scaled_digits(std::uint64_t m, long e, long k, std::uint64_t& q, int& remainder) {
+  if (k <= 0 && k >= -19 && e < 0 && e > -128) {  // m 10^-k < 2^128, divided by 2^-e: in 128 bits
+    unsigned __int128 n = m;
+    for (long i = 0; i < -k; ++i) n *= 10;
+    const unsigned shift = static_cast<unsigned>(-e);
+    const unsigned __int128 quotient = n >> shift, rest = n & ((static_cast<unsigned __int128>(1) << shift) - 1);
+    if (quotient >> 64) return false;
+    q = static_cast<std::uint64_t>(quotient);
+    const unsigned __int128 half = static_cast<unsigned __int128>(1) << (shift - 1);
+    remainder = rest == 0 ? 0 : rest < half ? 1 : rest == half ? 2 : 3;
+    return true;
+  }
   limbs num, den;
   num.set(m);
   den.set(1);
