@@ -457,27 +457,37 @@ reference_state_output reference_run::compute(std::size_t i) const {
   } catch (const domain_error& e) {
     s.reason = std::string("cannot certify: ") + e.what();
   }
-  // The dataset's lines for this state: the same text whichever process computes them.
+  // The dataset's lines for this state: the same text whichever process computes them. The JSON
+  // line is the bytes nlohmann::ordered_json's dump() gives for the object (its keys in insertion
+  // order, a key given again replacing the value in place: json_line), written straight into the
+  // line when its keys are distinct, which the fixed keys, the states' columns (refused when named
+  // twice) and, in every model, the quantities' names are.
   reference_state_output out;
   out.certified = s.certified;
   std::string& csv = out.csv;
-  json_line line;
-  line.add("state", json_string(s.name));
-  line.add("status", json_string(s.certified ? "certified" : "refused"));
-  json_line inputs;
-  for (const auto& [k, v] : s.inputs) inputs.add(k, json_string(v));
-  line.add("inputs", inputs.text());
+  std::string& js = out.jsonl;
+  js.reserve(256 + 256 * s.quantities.size());
+  js += "{\"state\":";
+  append_json_string(js, s.name);
+  js += s.certified ? ",\"status\":\"certified\",\"inputs\":{" : ",\"status\":\"refused\",\"inputs\":{";
+  for (std::size_t k = 0; k < s.inputs.size(); ++k) {
+    if (k) js += ',';
+    append_json_string(js, s.inputs[k].first);
+    js += ':';
+    append_json_string(js, s.inputs[k].second);
+  }
+  js += '}';
   if (!s.certified) {
-    line.add("reason", json_string(s.reason));
+    js += ",\"reason\":";
+    append_json_string(js, s.reason);
     csv += csv_field(s.name);
     csv += ",,refused,,,,,,,";
     csv += csv_field(s.reason);
     csv += '\n';
   } else {
-    line.add("error_amplification", nlohmann::json(s.amplification).dump());
-    json_line qs, ds;
+    js += ",\"error_amplification\":";
+    js += nlohmann::json(s.amplification).dump();
     const std::string state_field = csv_field(s.name);
-    std::string j;
     for (const quantity& q : s.quantities) {
       csv += state_field;
       csv += ',';
@@ -493,8 +503,10 @@ reference_state_output reference_run::compute(std::size_t i) const {
       csv += ',';
       csv += q.tolerance;
       csv += ",\n";
-      // the quantity's object: its keys are distinct, so written in order (json_line's bytes)
-      j = "{\"lower\":";
+    }
+    // a quantity's object: its keys are distinct, so written in order (json_line's bytes)
+    auto append_quantity = [](std::string& j, const quantity& q) {
+      j += "{\"lower\":";
       append_json_string(j, q.lower);
       j += ",\"upper\":";
       append_json_string(j, q.upper);
@@ -508,13 +520,38 @@ reference_state_output reference_run::compute(std::size_t i) const {
       j += ",\"tolerance\":";
       append_json_string(j, q.tolerance);
       j += '}';
-      (q.derived ? ds : qs).add(q.name, j);
+    };
+    for (const bool derived : {false, true}) {
+      std::vector<const quantity*> group;
+      for (const quantity& q : s.quantities)
+        if (q.derived == derived) group.push_back(&q);
+      if (derived && group.empty()) break;  // no "derived" object
+      js += derived ? ",\"derived\":" : ",\"quantities\":";
+      bool distinct = true;
+      for (std::size_t a = 0; a < group.size() && distinct; ++a)
+        for (std::size_t b = a + 1; b < group.size() && distinct; ++b) distinct = group[a]->name != group[b]->name;
+      if (distinct) {
+        js += '{';
+        for (std::size_t k = 0; k < group.size(); ++k) {
+          if (k) js += ',';
+          append_json_string(js, group[k]->name);
+          js += ':';
+          append_quantity(js, *group[k]);
+        }
+        js += '}';
+      } else {  // a name given twice: its later value in the place of the first (json_line)
+        json_line object;
+        std::string j;
+        for (const quantity* q : group) {
+          j.clear();
+          append_quantity(j, *q);
+          object.add(q->name, j);
+        }
+        object.append_to(js);
+      }
     }
-    line.add("quantities", qs.text());
-    if (!ds.empty()) line.add("derived", ds.text());
   }
-  line.append_to(out.jsonl);
-  out.jsonl += '\n';
+  js += "}\n";
   return out;
 }
 
