@@ -291,6 +291,47 @@ struct jet_allocator {
 };
 }  // namespace detail
 
+namespace detail {
+/// s += x y and s -= x y in a recurrence's inner loop, the same numbers bit for bit as those
+/// expressions.  For appell's MPFR and MPFI numbers (Boost numbers without expression
+/// templates) the expression makes a temporary for x y, under Boost's precision guard, and
+/// drops it; here the product goes into one scratch value kept for the whole recurrence,
+/// through the backend's own eval_multiply and eval_add/eval_subtract (what the expression
+/// calls), whenever the guard would change nothing (s, x and y at the default precision).
+/// Otherwise, and for every other scalar, the expression itself.
+template <class T>
+struct product_sum {
+  void add(T& s, const T& x, const T& y) { s += x * y; }
+  void subtract(T& s, const T& x, const T& y) { s -= x * y; }
+};
+template <class Backend>
+  requires(std::is_same_v<Backend, mp::mpfr_backend> || std::is_same_v<Backend, mp::mpfi_backend>)
+struct product_sum<boost::multiprecision::number<Backend, boost::multiprecision::et_off>> {
+  using number = boost::multiprecision::number<Backend, boost::multiprecision::et_off>;
+  number t;  ///< at the default precision when made; checked before each use
+  bool in_place(const number& s, const number& x, const number& y) const {
+    const auto p = static_cast<mpfr_prec_t>(Backend::default_bits());
+    return s.backend().prec() == p && x.backend().prec() == p && y.backend().prec() == p && t.backend().prec() == p;
+  }
+  void add(number& s, const number& x, const number& y) {
+    if (!in_place(s, x, y)) {
+      s += x * y;
+      return;
+    }
+    eval_multiply(t.backend(), x.backend(), y.backend());
+    eval_add(s.backend(), t.backend());
+  }
+  void subtract(number& s, const number& x, const number& y) {
+    if (!in_place(s, x, y)) {
+      s -= x * y;
+      return;
+    }
+    eval_multiply(t.backend(), x.backend(), y.backend());
+    eval_subtract(s.backend(), t.backend());
+  }
+};
+}  // namespace detail
+
 template <class T>
 struct jet {
   /// c[k] = coefficient of t^k; those past c.size() are exact zeros.  A constant keeps its one
@@ -379,11 +420,12 @@ struct jet {
     memo.operand(a.c.data(), la);
     memo.operand(b.c.data(), lb);
     const int first = memo.reuse(0, r.c.data(), lr);
+    detail::product_sum<T> sum;
     for (int k = first; k < lr; ++k) {
       T s = T(0);
       const int lo = std::max(0, k - lb + 1), hi = std::min(k, la - 1);
-      for (int i = lo; i <= hi; ++i) s += a.c[static_cast<std::size_t>(i)] * b.c[static_cast<std::size_t>(k - i)];
-      r.c[static_cast<std::size_t>(k)] = s;
+      for (int i = lo; i <= hi; ++i) sum.add(s, a.c[static_cast<std::size_t>(i)], b.c[static_cast<std::size_t>(k - i)]);
+      r.c[static_cast<std::size_t>(k)] = std::move(s);
     }
     memo.store(r.c);
     return r;
@@ -404,9 +446,11 @@ struct jet {
     memo.operand(a.c.data(), std::min(a.size(), n + 1));
     memo.operand(b.c.data(), lb);
     const int first = memo.reuse(0, r.c.data(), n + 1);
+    detail::product_sum<T> sum;
     for (int k = first; k <= n; ++k) {
       T s = a[k];
-      for (int j = 1; j <= std::min(k, lb - 1); ++j) s -= b.c[static_cast<std::size_t>(j)] * r.c[static_cast<std::size_t>(k - j)];
+      for (int j = 1; j <= std::min(k, lb - 1); ++j)
+        sum.subtract(s, b.c[static_cast<std::size_t>(j)], r.c[static_cast<std::size_t>(k - j)]);
       r.c[static_cast<std::size_t>(k)] = s / b.c[0];
     }
     memo.store(r.c);
@@ -433,12 +477,13 @@ void sin_cos(const jet<T>& x, jet<T>& s, jet<T>& c) {
     c.c[0] = c0;
     first = 1;
   }
+  detail::product_sum<T> sum;
   for (int k = first; k <= n; ++k) {
     T a = T(0), b = T(0);
     for (int j = 1; j <= std::min(k, lx - 1); ++j) {
       const T jx = T(j) * x.c[static_cast<std::size_t>(j)];
-      a += jx * c.c[static_cast<std::size_t>(k - j)];
-      b += jx * s.c[static_cast<std::size_t>(k - j)];
+      sum.add(a, jx, c.c[static_cast<std::size_t>(k - j)]);
+      sum.add(b, jx, s.c[static_cast<std::size_t>(k - j)]);
     }
     s.c[static_cast<std::size_t>(k)] = a / T(k);
     c.c[static_cast<std::size_t>(k)] = -b / T(k);
@@ -470,9 +515,10 @@ template <class T> jet<T> sqrt(const jet<T>& x) {
   detail::memo_op<T> memo(detail::memo_sqrt, n);
   const int first = detail::unary_start(memo, x, r, n, [](const T& v) { return sqrt(v); });
   const T two_r0 = T(2) * r.c[0];
+  detail::product_sum<T> sum;
   for (int k = first; k <= n; ++k) {
     T s = x[k];
-    for (int j = 1; j < k; ++j) s -= r.c[static_cast<std::size_t>(j)] * r.c[static_cast<std::size_t>(k - j)];
+    for (int j = 1; j < k; ++j) sum.subtract(s, r.c[static_cast<std::size_t>(j)], r.c[static_cast<std::size_t>(k - j)]);
     r.c[static_cast<std::size_t>(k)] = s / two_r0;
   }
   memo.store(r.c);

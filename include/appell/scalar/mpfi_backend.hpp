@@ -181,11 +181,9 @@ class mpfi_backend {
   /// appell's interface, in bits (set_mp_precision_bits): new values get exactly `bits` bits.
   static unsigned default_bits() noexcept { return static_cast<unsigned>(defaults_.bits()); }
   static void default_bits(unsigned bits) noexcept { defaults_.set_bits(bits); }
-  unsigned precision() const {
-    return static_cast<unsigned>(boost::multiprecision::detail::digits2_2_10(static_cast<unsigned long>(prec())));
-  }
+  unsigned precision() const { return precision_default::digits10_of(static_cast<unsigned long>(prec())); }
   void precision(unsigned digits10) {  // keeps the value, enclosed outward
-    round_prec(static_cast<mpfr_prec_t>(boost::multiprecision::detail::digits10_2_2(digits10)));
+    round_prec(precision_default::bits_of(digits10));
   }
   /// mpfi_set_prec for this backend: precision p, value NaN.
   void set_prec(mpfr_prec_t p);
@@ -198,7 +196,7 @@ class mpfi_backend {
   }
   static bool is_inline(mpfr_prec_t p) noexcept { return p <= inline_bits; }
   // One block for both significands.
-  static mp_limb_t* new_block(mpfr_prec_t p) {
+  [[gnu::noinline]] static mp_limb_t* new_block(mpfr_prec_t p) {
     void* const b = std::malloc(2 * static_cast<std::size_t>(limbs(p)) * sizeof(mp_limb_t));
     if (!b) throw std::bad_alloc();
     return static_cast<mp_limb_t*>(b);
@@ -262,19 +260,23 @@ class mpfi_backend {
   // Before any access: an inline value's bounds point into this object (re-aimed
   // after a bitwise relocation: both pointers moved by the same distance, one half
   // apart); a value above 320 bits that gave its block away gets a new one.
-  void ensure() const {
+  // Inlined (every access goes through it); re-aiming and a new block are out of line.
+  [[gnu::always_inline]] void ensure() const {
     const mpfr_prec_t p = raw_prec();
-    if (is_inline(p)) {
+    if (is_inline(p)) [[likely]] {
       const void* const l = mpfr_custom_get_significand(&v_->left);
       const void* const r = mpfr_custom_get_significand(&v_->right);
       const mp_limb_t* const h = limbs_ + inline_limbs;
-      if ((l == limbs_ && r == h) || (l == h && r == limbs_)) return;
-      const auto li = reinterpret_cast<std::uintptr_t>(l), ri = reinterpret_cast<std::uintptr_t>(r);
-      if ((li > ri ? li - ri : ri - li) != inline_limbs * sizeof(mp_limb_t)) ownership_violation();
-      aim_halves(li < ri);
+      if ((l == limbs_ && r == h) || (l == h && r == limbs_)) [[likely]] return;
+      re_aim(l, r);
     } else if (!block_) {
       adopt(new_block(p), p);
     }
+  }
+  [[gnu::noinline, gnu::cold]] void re_aim(const void* l, const void* r) const {
+    const auto li = reinterpret_cast<std::uintptr_t>(l), ri = reinterpret_cast<std::uintptr_t>(r);
+    if ((li > ri ? li - ri : ri - li) != inline_limbs * sizeof(mp_limb_t)) ownership_violation();
+    aim_halves(li < ri);
   }
   template <class V, class Set>
   mpfi_backend& set_bounds(V v, Set set) {
@@ -287,8 +289,13 @@ class mpfi_backend {
   // Precision p, value unspecified: the storage is kept when it has the room.  A
   // new block is allocated before the old one is freed (strong guarantee).
   void reshape(mpfr_prec_t p) {
-    ensure();
     const mpfr_prec_t q = raw_prec();
+    if (!is_inline(q) && !block_) {  // moved from above 320 bits: no block to keep or to free
+      if (is_inline(p)) inline_zero(p);
+      else adopt(new_block(p), p);
+      return;
+    }
+    ensure();  // an inline value re-aimed (release() checks the halves)
     if (q == p) return;
     if (is_inline(p)) {
       release();
