@@ -303,6 +303,19 @@ BOOST_AUTO_TEST_CASE(doubles_print_as_mpfr_prints_them) {
   BOOST_TEST(ties > 100);
 }
 
+namespace {
+/// f() inside an upward_rounding scope (an interval evaluation's: the processor rounds upward
+/// there) when `upward`, else outside any.
+template <class F>
+double in_rounding_scope(bool upward, F f) {
+  if (upward) {
+    const upward_rounding scope;
+    return f();
+  }
+  return f();
+}
+}  // namespace
+
 // A decimal literal becomes a double (each bound of an interval, every point double) by an exact
 // path of appell's own (from_chars, then the exact comparison of the decimal with that double):
 // the doubles must be MPFR's (mpfr_strtofr in binary64's range, the path produce_double takes for
@@ -355,13 +368,7 @@ BOOST_AUTO_TEST_CASE(decimals_become_the_doubles_mpfr_gives) {
     const double down = produce_double(by_mpfr, MPFR_RNDD), up = produce_double(by_mpfr, MPFR_RNDU);
     if (down == up) ++exact;
     for (const mpfr_rnd_t rnd : modes) {
-      double a = 0;
-      if (i % 2) {  // inside an interval evaluation's scope: the processor rounds upward there
-        const upward_rounding upward;
-        a = produce_double(own, rnd);
-      } else {
-        a = produce_double(own, rnd);
-      }
+      const double a = in_rounding_scope(i % 2, [&] { return produce_double(own, rnd); });
       const double b = produce_double(by_mpfr, rnd);
       BOOST_REQUIRE_MESSAGE(a == b && std::signbit(a) == std::signbit(b),
                             "'" << text << "' rounded " << mpfr_print_rnd_mode(rnd) << ": " << to_decimal(a)
@@ -403,13 +410,7 @@ BOOST_AUTO_TEST_CASE(rationals_become_the_doubles_mpfr_gives) {
     };
     if (produce_double(by_mpfr, MPFR_RNDD) == produce_double(by_mpfr, MPFR_RNDU)) ++exact;
     for (const mpfr_rnd_t rnd : modes) {
-      double a = 0;
-      if (i % 2) {
-        const upward_rounding upward;
-        a = produce_double(own, rnd);
-      } else {
-        a = produce_double(own, rnd);
-      }
+      const double a = in_rounding_scope(i % 2, [&] { return produce_double(own, rnd); });
       const double b = produce_double(by_mpfr, rnd);
       BOOST_REQUIRE_MESSAGE(a == b && std::signbit(a) == std::signbit(b),
                             p << "/" << q << " rounded " << mpfr_print_rnd_mode(rnd) << ": " << to_decimal(a)

@@ -70,12 +70,6 @@ void append_json_string(std::string& out, std::string_view v) {
   out += v;
   out += '"';
 }
-std::string json_string(std::string_view v) {
-  std::string out;
-  out.reserve(v.size() + 2);
-  append_json_string(out, v);
-  return out;
-}
 
 /// A JSON object of serialized values, in insertion order; a key given again replaces its value
 /// in place (as assignment to an ordered_json's key does).

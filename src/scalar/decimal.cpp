@@ -9,6 +9,7 @@
 
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/rational.hpp"
+#include "stack_limbs.hpp"
 
 #include <boost/multiprecision/detail/digits.hpp>
 
@@ -198,39 +199,7 @@ bool rational_to_double(long p, long q, mpfr_rnd_t rnd, double& out) {
   return true;
 }
 
-constexpr int decimal_limbs = 48;
-
-struct limb_number {
-  mp_limb_t d[decimal_limbs];
-  mp_size_t n = 0;
-  void mul(mp_limb_t f) {
-    if (n == 0) return;
-    const mp_limb_t carry = mpn_mul_1(d, d, n, f);
-    if (carry) d[n++] = carry;
-  }
-  void mul_pow10(long k) {
-    constexpr mp_limb_t ten19 = 10000000000000000000ULL;
-    for (; k >= 19; k -= 19) mul(ten19);
-    mp_limb_t f = 1;
-    for (; k > 0; --k) f *= 10;
-    if (f != 1) mul(f);
-  }
-  void shift_left(long bits) {
-    if (n == 0 || bits == 0) return;
-    const auto whole = static_cast<mp_size_t>(bits / 64);
-    const auto part = static_cast<unsigned>(bits % 64);
-    mp_limb_t top = 0;
-    if (part) top = mpn_lshift(d + whole, d, n, part);
-    else std::memmove(d + whole, d, static_cast<std::size_t>(n) * sizeof(mp_limb_t));
-    std::fill(d, d + whole, mp_limb_t(0));
-    n += whole;
-    if (top) d[n++] = top;
-  }
-  int compare(const limb_number& o) const {
-    if (n != o.n) return n < o.n ? -1 : 1;
-    return n == 0 ? 0 : mpn_cmp(d, o.d, n);
-  }
-};
+using limb_number = detail::stack_limbs;
 
 bool decimal_to_double(const std::string& text, mpfr_rnd_t rnd, double& out) {
   if (rnd != MPFR_RNDN && rnd != MPFR_RNDD && rnd != MPFR_RNDU && rnd != MPFR_RNDZ) return false;

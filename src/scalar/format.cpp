@@ -3,6 +3,7 @@
 #include <mpfr.h>
 
 #include "appell/scalar/format.hpp"
+#include "stack_limbs.hpp"
 
 #include <gmp.h>
 
@@ -81,39 +82,8 @@ std::string decimal_text(bool negative, std::string_view s, long exp10) {
 // limbs on the stack (GMP's mpn layer: no allocation). What `appell reference` prints for every
 // bound of an interval<double> (mpfr_get_str took half of a state's time: docs/reference-values.md).
 
-constexpr int max_limbs = 48;  // 10^350 x 2^53 x 2^64 and 2^1075 x 10^20 fit in 3072 bits
-
-struct limbs {
-  mp_limb_t d[max_limbs];
-  mp_size_t n = 0;  // significant limbs (d[n - 1] != 0 unless n == 0)
-  void set(std::uint64_t v) {
-    d[0] = static_cast<mp_limb_t>(v);
-    n = v ? 1 : 0;
-  }
-  void mul(mp_limb_t f) {
-    if (n == 0) return;
-    const mp_limb_t carry = mpn_mul_1(d, d, n, f);
-    if (carry) d[n++] = carry;
-  }
-  void mul_pow10(int k) {  // k >= 0
-    constexpr mp_limb_t ten19 = 10000000000000000000ULL;
-    for (; k >= 19; k -= 19) mul(ten19);
-    mp_limb_t f = 1;
-    for (; k > 0; --k) f *= 10;
-    if (f != 1) mul(f);
-  }
-  void shift_left(long bits) {  // bits >= 0
-    if (n == 0 || bits == 0) return;
-    const auto whole = static_cast<mp_size_t>(bits / 64);
-    const auto part = static_cast<unsigned>(bits % 64);
-    mp_limb_t top = 0;
-    if (part) top = mpn_lshift(d + whole, d, n, part);
-    else std::memmove(d + whole, d, static_cast<std::size_t>(n) * sizeof(mp_limb_t));
-    std::fill(d, d + whole, mp_limb_t(0));
-    n += whole;
-    if (top) d[n++] = top;
-  }
-};
+using limbs = detail::stack_limbs;
+constexpr mp_size_t max_limbs = limbs::capacity;
 
 // q = floor(m 2^e / 10^k) and how the remainder r compares with half the divisor:
 // 0 exact, 1 below half, 2 half, 3 above half.  Returns false if q needs more than 64 bits.
@@ -134,8 +104,8 @@ bool scaled_digits(std::uint64_t m, long e, long k, std::uint64_t& q, int& remai
   den.set(1);
   if (e >= 0) num.shift_left(e);
   else den.shift_left(-e);
-  if (k <= 0) num.mul_pow10(static_cast<int>(-k));
-  else den.mul_pow10(static_cast<int>(k));
+  if (k <= 0) num.mul_pow10(-k);
+  else den.mul_pow10(k);
   if (num.n < den.n) {  // q = 0
     q = 0;
     remainder = 1;  // nonzero (m > 0) and below half: only asked when q is out of range anyway
