@@ -97,11 +97,6 @@ class json_line {
     }
     out += '}';
   }
-  std::string text() const {
-    std::string out;
-    append_to(out);
-    return out;
-  }
 
  private:
   std::vector<std::pair<std::string, std::string>> members_;
@@ -116,29 +111,14 @@ struct quantity {
   bool derived = false;  ///< of the derived state (evaluation::derived), not a result
 };
 
-std::string mpfr_text(mpfr_srcptr v, int digits, mpfr_rnd_t rnd) { return mpfr_to_decimal(v, digits, rnd); }
-
-/// An MPFR number of at most 128 bits whose significand lives in the object (MPFR's custom
-/// interface): describing a quantity makes a dozen of these, and mpfr_value's heap blocks for them
-/// were a tenth of a state's time in `interval`. Neither copied nor moved (MPFR holds its address).
-class stack_mpfr {
- public:
-  explicit stack_mpfr(mpfr_prec_t prec) {
-    if (prec > capacity) throw std::logic_error("stack_mpfr: more bits than its capacity");
-    mpfr_custom_init(limbs_, prec);
-    mpfr_custom_init_set(v_, MPFR_NAN_KIND, 0, prec, limbs_);
-  }
-  stack_mpfr(const stack_mpfr&) = delete;
-  stack_mpfr& operator=(const stack_mpfr&) = delete;
-  operator mpfr_ptr() { return v_; }
-  operator mpfr_srcptr() const { return v_; }
-
-  static constexpr mpfr_prec_t capacity = 128;
-
- private:
-  mp_limb_t limbs_[2];
-  mpfr_t v_;
-};
+/// An MPFR number of precision p (NaN): appell's `mpfr`, whose significand lives inside the value
+/// up to 256 bits, so that describing a quantity (a dozen of these) makes no heap block.
+mpfr mp_number(mpfr_prec_t p) {
+  mpfr r;
+  r.backend().set_prec(p);
+  return r;
+}
+mpfr_ptr ptr(mpfr& x) { return x.backend().data(); }
 
 /// The description of a quantity enclosed in [lo, hi] (MPFR numbers holding the enclosure's bounds
 /// exactly): the bounds rounded outward to decimal, the double nearest the enclosure, the error
@@ -154,36 +134,26 @@ quantity describe_bounds(const std::string& name, mpfr_srcptr lo, mpfr_srcptr hi
   double d = dlo;
   q.decided = dlo == dhi;  // round-to-nearest is monotone: every point of [lo, hi] rounds to it
   if (!q.decided) {
-    const mpfr_prec_t prec = std::max(mpfr_get_prec(lo), mpfr_get_prec(hi)) + 2;
-    auto midpoint = [&](mpfr_ptr mid) {
-      mpfr_add(mid, lo, hi, MPFR_RNDN);  // exact at this precision
-      mpfr_div_2ui(mid, mid, 1, MPFR_RNDN);
-      return mpfr_get_d(mid, MPFR_RNDN);
-    };
-    if (prec <= stack_mpfr::capacity) {
-      stack_mpfr mid(prec);
-      d = midpoint(mid);
-    } else {
-      mpfr_value mid(prec);
-      d = midpoint(mid);
-    }
+    mpfr mid = mp_number(std::max(mpfr_get_prec(lo), mpfr_get_prec(hi)) + 2);
+    mpfr_add(ptr(mid), lo, hi, MPFR_RNDN);  // exact at this precision
+    mpfr_div_2ui(ptr(mid), ptr(mid), 1, MPFR_RNDN);
+    d = mpfr_get_d(ptr(mid), MPFR_RNDN);
   }
   char buffer[64];
   const auto printed = std::to_chars(buffer, buffer + sizeof buffer, d, std::chars_format::general, 17);  // "%.17g"
   q.nearest_double.assign(buffer, printed.ptr);
   // |d - exact| <= max(d - lo, hi - d), rounded up; relative to min |x| over the enclosure.
-  stack_mpfr e1(64), e2(64), e(64);
-  stack_mpfr dv(53);
-  mpfr_set_d(dv, d, MPFR_RNDN);
-  mpfr_sub(e1, dv, lo, MPFR_RNDU);
-  mpfr_sub(e2, hi, dv, MPFR_RNDU);
-  mpfr_max(e, e1, e2, MPFR_RNDU);
+  mpfr e1 = mp_number(64), e2 = mp_number(64), e = mp_number(64), dv = mp_number(53);
+  mpfr_set_d(ptr(dv), d, MPFR_RNDN);
+  mpfr_sub(ptr(e1), ptr(dv), lo, MPFR_RNDU);
+  mpfr_sub(ptr(e2), hi, ptr(dv), MPFR_RNDU);
+  mpfr_max(ptr(e), ptr(e1), ptr(e2), MPFR_RNDU);
   if (mpfr_sgn(lo) > 0 || mpfr_sgn(hi) < 0) {
-    stack_mpfr m(64);
-    if (mpfr_sgn(lo) > 0) mpfr_set(m, lo, MPFR_RNDD);
-    else mpfr_neg(m, hi, MPFR_RNDD);
-    mpfr_div(e, e, m, MPFR_RNDU);
-    q.rel_error_bound = mpfr_text(e, 3, MPFR_RNDU);
+    mpfr m = mp_number(64);
+    if (mpfr_sgn(lo) > 0) mpfr_set(ptr(m), lo, MPFR_RNDD);
+    else mpfr_neg(ptr(m), hi, MPFR_RNDD);
+    mpfr_div(ptr(e), ptr(e), ptr(m), MPFR_RNDU);
+    q.rel_error_bound = mpfr_to_decimal(ptr(e), 3, MPFR_RNDU);
   }
   // The suggested tolerance on |engine - exact| for a double-precision engine,
   // from the problem's conditioning: 16 x error_amplification x 2^-53 x the
@@ -193,10 +163,10 @@ quantity describe_bounds(const std::string& name, mpfr_srcptr lo, mpfr_srcptr hi
   // least 16 times the width of appell's own interval<double> enclosure of it.
   if (x53) {
     const double w = std::max(boost::numeric::width(*x53), std::ldexp(std::max(amplification, 1.0) * scale, -53));
-    stack_mpfr tol(64);
-    mpfr_set_d(tol, w, MPFR_RNDU);
-    mpfr_mul_ui(tol, tol, 16, MPFR_RNDU);
-    q.tolerance = mpfr_text(tol, 3, MPFR_RNDU);
+    mpfr tol = mp_number(64);
+    mpfr_set_d(ptr(tol), w, MPFR_RNDU);
+    mpfr_mul_ui(ptr(tol), ptr(tol), 16, MPFR_RNDU);
+    q.tolerance = mpfr_to_decimal(ptr(tol), 3, MPFR_RNDU);
   } else {
     q.tolerance = "inf";  // interval<double> cannot certify this state: no double engine can be held to it
   }
@@ -206,10 +176,10 @@ quantity describe_bounds(const std::string& name, mpfr_srcptr lo, mpfr_srcptr hi
 template <Scalar T>
 quantity describe(const std::string& name, const T& x, const interval* x53, double scale, double amplification) {
   if constexpr (std::is_same_v<T, interval>) {  // the bounds are doubles: exact in 53 bits
-    stack_mpfr lo(53), hi(53);
-    mpfr_set_d(lo, x.lower(), MPFR_RNDN);
-    mpfr_set_d(hi, x.upper(), MPFR_RNDN);
-    return describe_bounds(name, lo, hi, x53, scale, amplification);
+    mpfr lo = mp_number(53), hi = mp_number(53);
+    mpfr_set_d(ptr(lo), x.lower(), MPFR_RNDN);
+    mpfr_set_d(ptr(hi), x.upper(), MPFR_RNDN);
+    return describe_bounds(name, ptr(lo), ptr(hi), x53, scale, amplification);
   } else {
     mpfr_value lo, hi;
     scalar_traits<T>::to_mpfr(x, lo, hi);

@@ -171,7 +171,19 @@ struct decimal_text_producer {
 // The producer of p/q, a type of its own for the same reason (rational_to_double).
 struct rational_value_producer {
   long p, q;
-  int operator()(mpfr_ptr out, mpfr_rnd_t rnd) const;
+  int operator()(mpfr_ptr out, mpfr_rnd_t rnd) const {
+    mpq_t r;
+    mpq_init(r);
+    mpq_set_si(r, p, 1);
+    mpq_t d;
+    mpq_init(d);
+    mpq_set_si(d, q, 1);
+    mpq_div(r, r, d);
+    int t = mpfr_set_q(out, r, rnd);
+    mpq_clear(d);
+    mpq_clear(r);
+    return t;
+  }
 };
 
 // p/q (q != 0) into a double in direction rnd, exactly: the quotient rounded to nearest, then the
@@ -360,22 +372,6 @@ mpfr_producer rational_producer(long p, long q) {
   return rational_value_producer{p, q};
 }
 
-namespace {
-int rational_value_producer::operator()(mpfr_ptr out, mpfr_rnd_t rnd) const {
-  mpq_t r;
-  mpq_init(r);
-  mpq_set_si(r, p, 1);
-  mpq_t d;
-  mpq_init(d);
-  mpq_set_si(d, q, 1);
-  mpq_div(r, r, d);
-  int t = mpfr_set_q(out, r, rnd);
-  mpq_clear(d);
-  mpq_clear(r);
-  return t;
-}
-}  // namespace
-
 mpfr_producer pi_producer() {
   return [](mpfr_ptr out, mpfr_rnd_t rnd) { return mpfr_const_pi(out, rnd); };
 }
@@ -438,21 +434,18 @@ rational_q rational_from_decimal(const std::string& s) {
 }
 
 namespace {
-// The sign of one decimal literal, read from its digits (no rational made).
-int literal_sign(std::string_view s) {
-  if (!is_decimal_literal(s)) throw parse_error("'" + std::string(s) + "' is not a decimal number");
-  const std::size_t end = s.find_first_of("eE");
-  for (const char c : s.substr(0, end))
-    if (c >= '1' && c <= '9') return s[0] == '-' ? -1 : 1;
+// The sign of c d, d one decimal literal, from c's sign and d's digits (no rational made).
+int term_sign(long c, std::string_view d) {
+  if (!is_decimal_literal(d)) throw parse_error("'" + std::string(d) + "' is not a decimal number");
+  const int sign_c = c > 0 ? 1 : c < 0 ? -1 : 0;
+  for (const char ch : d.substr(0, d.find_first_of("eE")))
+    if (ch >= '1' && ch <= '9') return d[0] == '-' ? -sign_c : sign_c;
   return 0;
 }
 }  // namespace
 
 int decimal_sign_of_polynomial(const std::vector<decimal_term>& terms) {
-  if (terms.size() == 1 && terms[0].factors.size() == 1) {  // c d: the signs of c and d
-    const int c = terms[0].coefficient > 0 ? 1 : terms[0].coefficient < 0 ? -1 : 0;
-    return c * literal_sign(terms[0].factors[0]);
-  }
+  if (terms.size() == 1 && terms[0].factors.size() == 1) return term_sign(terms[0].coefficient, terms[0].factors[0]);
   scoped_mpq sum, term, factor;
   for (const auto& t : terms) {
     mpq_set_si(term.v, t.coefficient, 1);
@@ -466,10 +459,7 @@ int decimal_sign_of_polynomial(const std::vector<decimal_term>& terms) {
 }
 
 int decimal_sign_of_sum(std::initializer_list<std::pair<int, std::string_view>> terms) {
-  if (terms.size() == 1) {  // c d: the signs of c and d
-    const auto& [coefficient, text] = *terms.begin();
-    return (coefficient > 0 ? 1 : coefficient < 0 ? -1 : 0) * literal_sign(text);
-  }
+  if (terms.size() == 1) return term_sign(terms.begin()->first, terms.begin()->second);
   std::vector<decimal_term> polynomial;
   for (const auto& [coefficient, text] : terms) polynomial.push_back({coefficient, {std::string(text)}});
   return decimal_sign_of_polynomial(polynomial);

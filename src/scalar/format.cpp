@@ -11,7 +11,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <memory>
 #include <string_view>
 
@@ -28,50 +27,41 @@ namespace {
 // every bound and value is printed in: positional for exponents -5 .. 20, scientific otherwise.
 std::string decimal_text(bool negative, std::string_view s, long exp10) {
   while (s.size() > 1 && s.back() == '0') s.remove_suffix(1);  // trailing zeros carry nothing
-  // value = 0.s * 10^exp10 = s[0].s[1..] * 10^(exp10-1); written into a buffer first when short, so
-  // that a text of up to 15 characters makes no heap block (std::string's own storage)
+  // value = 0.s * 10^exp10 = s[0].s[1..] * 10^(exp10-1); the text is sized first and written in
+  // place (a text of up to 15 characters makes no heap block: std::string's own storage)
   const long e = exp10 - 1;
   const auto n = static_cast<long>(s.size());
-  char small[96];
-  std::string large;
-  const bool fits = n <= 40;
-  char* p = small;
-  auto put = [&](std::string_view t) {
-    if (fits) p = std::copy(t.begin(), t.end(), p);
-    else large += t;
-  };
-  auto zeros = [&](long count) {
-    if (fits) p = std::fill_n(p, count, '0');
-    else large.append(static_cast<std::size_t>(count), '0');
-  };
+  const bool positional = e >= -5 && e < 21;
+  char exponent[24];
+  const long exponent_length = positional ? 0 : std::to_chars(exponent, exponent + sizeof exponent, e).ptr - exponent;
+  const long length = (negative ? 1 : 0) + (!positional ? n + (n > 1 ? 1 : 0) + 1 + exponent_length
+                                            : e < 0          ? 2 + (-e - 1) + n
+                                            : n <= e + 1     ? e + 1
+                                                             : n + 1);
+  std::string out(static_cast<std::size_t>(length), '0');
+  char* p = out.data();
+  auto put = [&](std::string_view t) { p = std::copy(t.begin(), t.end(), p); };
   if (negative) put("-");
-  if (e >= -5 && e < 21) {
-    if (e >= 0) {
-      if (n <= e + 1) {
-        put(s);
-        zeros(e + 1 - n);
-      } else {
-        put(s.substr(0, static_cast<std::size_t>(e + 1)));
-        put(".");
-        put(s.substr(static_cast<std::size_t>(e + 1)));
-      }
-    } else {
-      put("0.");
-      zeros(-e - 1);
-      put(s);
-    }
-  } else {
+  if (!positional) {
     put(s.substr(0, 1));
     if (n > 1) {
       put(".");
       put(s.substr(1));
     }
-    char buffer[24];
-    buffer[0] = 'e';
-    const auto printed = std::to_chars(buffer + 1, buffer + sizeof buffer, e);
-    put(std::string_view(buffer, static_cast<std::size_t>(printed.ptr - buffer)));
+    put("e");
+    put(std::string_view(exponent, static_cast<std::size_t>(exponent_length)));
+  } else if (e < 0) {
+    put("0.");
+    p += -e - 1;  // zeros (the text's fill)
+    put(s);
+  } else if (n <= e + 1) {
+    put(s);  // then e + 1 - n zeros (the fill)
+  } else {
+    put(s.substr(0, static_cast<std::size_t>(e + 1)));
+    put(".");
+    put(s.substr(static_cast<std::size_t>(e + 1)));
   }
-  return fits ? std::string(small, p) : large;
+  return out;
 }
 
 // --- the significant digits of a number of at most 64 bits, exactly, without mpfr_get_str ----------
@@ -111,24 +101,22 @@ bool scaled_digits(std::uint64_t m, long e, long k, std::uint64_t& q, int& remai
     remainder = 1;  // nonzero (m > 0) and below half: only asked when q is out of range anyway
     return true;
   }
-  mp_limb_t quotient[max_limbs + 1], rest[max_limbs];
+  mp_limb_t quotient[max_limbs + 1], rest[max_limbs];  // den.n limbs of rest
   mpn_tdiv_qr(quotient, rest, 0, num.d, num.n, den.d, den.n);
   const mp_size_t qn = num.n - den.n + 1;
   for (mp_size_t i = 1; i < qn; ++i)
     if (quotient[i]) return false;
   q = quotient[0];
-  // compare 2 r with den
-  mp_size_t rn = den.n;
-  while (rn > 0 && rest[rn - 1] == 0) --rn;
-  if (rn == 0) {
+  limbs twice;  // 2 r, compared with den
+  twice.n = den.n;
+  std::copy(rest, rest + den.n, twice.d);
+  while (twice.n > 0 && twice.d[twice.n - 1] == 0) --twice.n;
+  if (twice.n == 0) {
     remainder = 0;
     return true;
   }
-  mp_limb_t twice[max_limbs + 1];
-  const mp_limb_t top = mpn_lshift(twice, rest, rn, 1);
-  mp_size_t tn = rn;
-  if (top) twice[tn++] = top;
-  int c = tn != den.n ? (tn < den.n ? -1 : 1) : mpn_cmp(twice, den.d, tn);
+  twice.shift_left(1);
+  const int c = twice.compare(den);
   remainder = c < 0 ? 1 : c == 0 ? 2 : 3;
   return true;
 }
