@@ -187,7 +187,7 @@ using all_models = type_list<${models_types}>;
       set(item "template appell::cli::motion_outcome appell::cli::run_model_motion<appell::${model}_model, appell::standard_scalar_at<${index}>>(
     const appell::scene_input&, const appell::cli::motion_options&);
 template appell::cli::horizon_track appell::cli::run_model_horizon_track<appell::${model}_model, appell::standard_scalar_at<${index}>>(
-    const appell::scene_input&, const std::string&, const std::string&, bool);
+    const appell::scene_input&, const std::string&, const std::string&, bool, const appell::cli::track_settings&);
 ")
       if(model STREQUAL "system")
         set(file ${PROJECT_BINARY_DIR}/generated/motion_${model}_${index}.cpp)

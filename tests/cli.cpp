@@ -958,6 +958,10 @@ BOOST_AUTO_TEST_CASE(horizon_refuses_bad_input_and_meets_the_closed_form) {
   expect_bad_input("horizon " + scene + " --t-end 10 --scalars interval --out " + out, "--scalars");
   expect_bad_input("horizon " + scene + " --t-end 10 --scalars double,quad --out " + out, "--scalars");
   expect_bad_input("horizon " + scene + " --t-end 10", "--out");
+  // the closed form is the reference and knows the period: the reference's settings are refused
+  expect_bad_input("horizon " + scene + " --t-end 10 --reference-order 30 --out " + out, "--reference-order");
+  expect_bad_input("horizon " + scene + " --t-end 10 --reference-tol 1e-40 --out " + out, "--reference-tol");
+  expect_bad_input("horizon " + scene + " --t-end 10 --period 7 --out " + out, "--period");
   BOOST_TEST(!std::filesystem::exists(out + "/horizon.csv"));
   // Two periods in double and dd against the Jacobi-elliptic solution at 256 bits: the errors are
   // those of each precision (an integrator or a closed form off by a term would be off by far more).
@@ -977,6 +981,47 @@ BOOST_AUTO_TEST_CASE(horizon_refuses_bad_input_and_meets_the_closed_form) {
   BOOST_TEST(std::filesystem::exists(out + "/horizon.csv"));
   for (const auto& entry : std::filesystem::directory_iterator(out))
     BOOST_TEST(entry.path().filename().string()[0] != '.', "a temporary file was left: " << entry.path());
+}
+
+BOOST_AUTO_TEST_CASE(horizon_takes_the_reference_settings_and_a_period_where_the_model_knows_none) {
+  const std::string out = (work / "horizon_settings").string();
+  std::filesystem::remove_all(out);
+  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/top_on_cone.json";
+  expect_bad_input("horizon " + scene + " --t-end 1 --reference-order 61 --out " + out, "--reference-order");
+  expect_bad_input("horizon " + scene + " --t-end 1 --reference-order 1 --out " + out, "--reference-order");
+  expect_bad_input("horizon " + scene + " --t-end 1 --reference-tol 1 --out " + out, "--reference-tol");
+  expect_bad_input("horizon " + scene + " --t-end 1 --reference-tol -1e-30 --out " + out, "--reference-tol");
+  expect_bad_input("horizon " + scene + " --t-end 1 --period 0 --out " + out, "--period");
+  BOOST_TEST(!std::filesystem::exists(out + "/horizon.csv"));
+  // Example I's cone to t = 0.5 in double and dd against a reference at order 30, tolerance 1e-40:
+  // the reference takes the settings (its order in the summary, its text on stdout), and is far
+  // more accurate than dd; the table's marks are in periods of 0.1 (given).
+  const outcome r = run("horizon " + scene +
+                        " --t-end 0.5 --every 0.1 --period 0.1 --scalars double,dd --reference-order 30 "
+                        "--reference-tol 1e-40 --quiet --out " + out);
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  BOOST_TEST(r.out.find("reference: simulate in mpfr at 256 bits, order 30, tolerance 1e-40") != std::string::npos, r.out);
+  BOOST_TEST(r.out.find("digits to 1 period") != std::string::npos, r.out);
+  const std::string summary = slurp(out + "/summary.json");
+  BOOST_TEST(summary.find("\"reference_order\": 30") != std::string::npos, summary);
+  BOOST_TEST(summary.find("\"period_given\": \"0.1\"") != std::string::npos, summary);
+  std::vector<double> finals;
+  for (std::size_t at = summary.find("\"final_error\": "); at != std::string::npos;
+       at = summary.find("\"final_error\": ", at + 1))
+    finals.push_back(std::stod(summary.substr(at + 15)));
+  BOOST_TEST_REQUIRE(finals.size() == 2u, summary);
+  BOOST_TEST(finals[0] > 0);
+  BOOST_TEST(finals[0] < 1e-13, finals[0]);
+  BOOST_TEST(finals[1] < 1e-28, finals[1]);
+  const auto rows = csv_rows(out + "/horizon.csv");
+  BOOST_TEST_REQUIRE(rows.size() == 7u);  // the header, t = 0 .. 0.5
+  BOOST_TEST(rows[0][1] == "periods");
+  // the reference's states, written in full: t and the motion's state
+  const auto states = csv_rows(out + "/reference.csv");
+  BOOST_TEST_REQUIRE(states.size() == 7u);
+  BOOST_TEST(states[0][0] == "t");
+  BOOST_TEST(states[0][1] == "theta");
+  BOOST_TEST(states[1][1].size() > 70u, states[1][1]);  // 256 bits: about 77 digits
 }
 
 BOOST_AUTO_TEST_CASE(reference_along_a_trajectory_takes_the_states_of_the_motion) {

@@ -5,8 +5,8 @@
 //   - the model's closed form where it knows one (io/model_motion.hpp: Euler's free body in
 //     Jacobi elliptic functions, the heavy top's nutation), at the very time each scalar reached
 //     (its t, converted exactly), on the components it gives;
-//   - any other scene: simulate in mpfr at 256 bits (its default order, 60, tolerance 2^-257), at the same
-//     output indices.
+//   - any other scene: simulate in mpfr at 256 bits (its default order, 60, tolerance 2^-256, or
+//     --reference-order and --reference-tol), at the same output indices.
 // The error at t is max_i |x_i - ref_i| / max(1, |ref_i|).  Brouwer's law, the goal line, is the
 // round-off of a careful integrator accumulating as a random walk: eps sqrt(n(t)), n(t) the
 // number of steps taken by t (eps = 2^-bits).
@@ -45,7 +45,9 @@ std::string digits_text(double err) {
 
 std::string parse_horizon_arguments(int argc, char** argv, int first, horizon_options& o) {
   command_line c;
-  if (std::string why = read_command_line("horizon", argc, argv, first, {"--t-end", "--every", "--out", "--scalars"},
+  if (std::string why = read_command_line("horizon", argc, argv, first,
+                                          {"--t-end", "--every", "--out", "--scalars", "--reference-order",
+                                           "--reference-tol", "--period"},
                                           {"--quiet"}, 1, c);
       !why.empty())
     return why;
@@ -62,6 +64,27 @@ std::string parse_horizon_arguments(int argc, char** argv, int first, horizon_op
       if (!s.empty()) o.scalars.push_back(s);
     if (o.scalars.empty()) return "--scalars: expected a comma-separated list of point scalars";
   }
+  if (c.has("--reference-order")) {
+    unsigned n = 0;
+    if (std::string why = parse_integer("--reference-order", c.value_or("--reference-order", ""), 2, 60, n); !why.empty())
+      return why;
+    o.reference.order = static_cast<int>(n);
+  }
+  try {
+    if (c.has("--reference-tol")) {
+      o.reference_tol_text = c.value_or("--reference-tol", "");
+      o.reference.tol = positive_decimal("--reference-tol", o.reference_tol_text);
+      if (*o.reference.tol >= 1)
+        return "--reference-tol: expected a positive decimal below 1 (a relative error per step), got '" +
+               o.reference_tol_text + "'";
+    }
+    if (c.has("--period")) {
+      o.period = c.value_or("--period", "");
+      (void)positive_decimal("--period", o.period);
+    }
+  } catch (const input_error& e) {
+    return e.what();
+  }
   return "";
 }
 
@@ -76,7 +99,15 @@ int horizon(const horizon_options& given) {
   }
   const scene_input scene = read_scene_file(o.scene);
   const std::optional<motion_closed_form> closed = motion_closed_form_of(scene);  // the model's, where it has one
-  const double period = closed ? static_cast<double>(closed->period) : 0;
+  if (closed) {  // the closed form is the reference, and it knows the period
+    for (const auto& [flag, given] : {std::pair{"--reference-order", o.reference.order.has_value()},
+                                      std::pair{"--reference-tol", o.reference.tol.has_value()},
+                                      std::pair{"--period", !o.period.empty()}})
+      if (given)
+        throw input_error(std::string(flag) + ": model " + scene.model + " is judged against its " + closed->kind +
+                          ", which knows its period");
+  }
+  const double period = closed ? static_cast<double>(closed->period) : o.period.empty() ? 0 : positive_decimal("--period", o.period);
   if (o.every.empty()) o.every = to_decimal(period > 0 ? std::min(period, t_end / 10) : t_end / 1000);
   const double every = positive_decimal("--every", o.every);
   if (every > t_end) throw input_error("--every: the output step " + o.every + " is larger than the horizon " + o.t_end);
@@ -94,10 +125,12 @@ int horizon(const horizon_options& given) {
     reference_kind = closed->kind;
     compared = closed->compared;
   } else {
-    reference_kind = "simulate in mpfr at 256 bits";
     reference = with_scalar("mpfr", 256u, [&]<class T>(std::type_identity<T>) {
-      return run_horizon_track<T>(scene, o.t_end, o.every, o.quiet);
+      return run_horizon_track<T>(scene, o.t_end, o.every, o.quiet, o.reference);
     });
+    reference_kind = "simulate in mpfr at 256 bits";
+    if (o.reference.order || o.reference.tol)  // the default's text as before
+      reference_kind += ", order " + std::to_string(reference.order) + ", tolerance " + to_decimal(reference.tol);
   }
 
   // errors[k][i]: scalar k at output i
@@ -146,6 +179,17 @@ int horizon(const horizon_options& given) {
     csv << "\n";
   }
   write_whole(dir, "horizon.csv", csv.str());
+  if (!closed) {  // the reference's states, in full (exact decimals of its 256-bit values), for reuse and checks
+    std::string text = "t";
+    for (const auto& f : motion_state_fields(scene)) text += "," + f;
+    text += "\n";
+    for (std::size_t i = 0; i < reference.t.size(); ++i) {
+      text += reference.t[i];
+      for (const auto& v : reference.x[i]) text += "," + v;
+      text += "\n";
+    }
+    write_whole(dir, "reference.csv", text);
+  }
 
   // The table: digits kept at 1, 10, 100, ... periods (or tenths of the horizon without a period).
   std::vector<double> marks, counts;
@@ -189,6 +233,13 @@ int horizon(const horizon_options& given) {
                             {"t_end", o.t_end},       {"every", o.every},   {"period", period},
                             {"reference", reference_kind}, {"error", "max_i |x_i - ref_i| / max(1, |ref_i|)"},
                             {"tracks", js_tracks}};
+  if (!closed) {
+    summary["reference_order"] = reference.order;
+    summary["reference_tol"] = reference.tol;
+    summary["reference_steps"] = reference.steps;
+    summary["reference_seconds"] = reference.seconds;
+  }
+  if (!o.period.empty()) summary["period_given"] = o.period;
   write_whole(dir, "summary.json", summary.dump(2) + "\n");
 
   // The plot: each scalar's error (solid) and its Brouwer line (dashed, the same colour), with a
@@ -219,7 +270,8 @@ int horizon(const horizon_options& given) {
   std::cout << "horizon " << scene.model << " to t = " << o.t_end;
   if (period > 0) std::cout << " (" << t_end / period << " periods of " << period << ")";
   std::cout << "; reference: " << reference_kind << "\n" << table.str();
-  std::cout << "wrote " << (dir / "horizon.csv").string() << ", summary.json" << plotted << "\n";
+  std::cout << "wrote " << (dir / "horizon.csv").string() << (closed ? "" : ", reference.csv") << ", summary.json"
+            << plotted << "\n";
   return appell::exit_code(appell::exit_status::done);
 }
 

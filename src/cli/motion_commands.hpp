@@ -78,19 +78,27 @@ struct horizon_track {
   std::string scalar;
   unsigned bits = 0;
   int order = 0;
+  double tol = 0;  ///< the relative tolerance per step
   std::vector<std::string> t;
   std::vector<std::vector<std::string>> x;
   long steps = 0;
   double seconds = 0;
 };
 
-/// Runs `simulate` on the scene in scalar T (default order and tolerance) from 0 to t_end with
-/// outputs every `every` (decimals).
+/// The Taylor order and tolerance of a track (none: `simulate`'s defaults for the scalar).
+struct track_settings {
+  std::optional<int> order;
+  std::optional<double> tol;
+};
+
+/// Runs `simulate` on the scene in scalar T from 0 to t_end with outputs every `every` (decimals),
+/// at the order and tolerance of `settings` (by default simulate's for T).
 template <Scalar T>
-horizon_track run_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every, bool quiet);
+horizon_track run_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every, bool quiet,
+                                const track_settings& settings = {});
 template <class Model, Scalar T>
 horizon_track run_model_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every,
-                                      bool quiet);
+                                      bool quiet, const track_settings& settings);
 
 /// The scene fields of the model's motion state, in the order of its state (input_error naming
 /// `model` when the model does not move).
@@ -118,6 +126,12 @@ struct horizon_options {
   std::string scene, t_end, every, out;
   std::vector<std::string> scalars{"double", "long-double", "dd", "float128"};
   bool quiet = false;
+  /// --reference-order, --reference-tol: the 256-bit reference's Taylor order and tolerance
+  /// (scenes without a closed form; default simulate's in mpfr at 256 bits: 60 and 2^-256).
+  track_settings reference;
+  std::string reference_tol_text;  ///< --reference-tol as written
+  /// --period: the scene's period, where the model knows none (the table's marks, the plot's axis)
+  std::string period;
 };
 std::string parse_horizon_arguments(int argc, char** argv, int first, horizon_options& o);
 /// Runs the study on options from parse_horizon_arguments (which checked scene, --t-end, --out).

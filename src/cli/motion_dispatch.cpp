@@ -18,7 +18,7 @@ namespace appell::cli {
 #define APPELL_DETAIL_EXTERN_MOTION(Model, T, name)                                                       \
   extern template motion_outcome run_model_motion<Model, T>(const scene_input&, const motion_options&); \
   extern template horizon_track run_model_horizon_track<Model, T>(const scene_input&, const std::string&, \
-                                                                  const std::string&, bool);
+                                                                  const std::string&, bool, const track_settings&);
 #define APPELL_DETAIL_EXTERN_MODEL_MOTION(Model) APPELL_STANDARD_SCALARS(APPELL_DETAIL_EXTERN_MOTION, Model)
 APPELL_FOR_EACH_MODEL(APPELL_DETAIL_EXTERN_MODEL_MOTION)
 
@@ -59,10 +59,13 @@ motion_outcome run_motion(const scene_input& scene, const motion_options& o) {
 }
 
 template <Scalar T>
-horizon_track run_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every, bool quiet) {
+horizon_track run_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every, bool quiet,
+                                const track_settings& settings) {
   return with_moving_model<horizon_track>(
       scene, "horizon",
-      [&]<class Model>(std::type_identity<Model>) { return run_model_horizon_track<Model, T>(scene, t_end, every, quiet); },
+      [&]<class Model>(std::type_identity<Model>) {
+        return run_model_horizon_track<Model, T>(scene, t_end, every, quiet, settings);
+      },
       all_models{});
 }
 
@@ -89,7 +92,8 @@ std::optional<motion_closed_form> motion_closed_form_of(const scene_input& scene
 
 #define APPELL_DETAIL_DISPATCH(ctx, T, name)                                                   \
   template motion_outcome run_motion<T>(const scene_input&, const motion_options&);           \
-  template horizon_track run_horizon_track<T>(const scene_input&, const std::string&, const std::string&, bool);
+  template horizon_track run_horizon_track<T>(const scene_input&, const std::string&, const std::string&, bool, \
+                                              const track_settings&);
 APPELL_STANDARD_SCALARS(APPELL_DETAIL_DISPATCH, )
 
 }  // namespace appell::cli

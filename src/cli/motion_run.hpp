@@ -601,7 +601,7 @@ motion_outcome run_model_motion(const scene_input& scene, const motion_options& 
 
 template <class Model, Scalar T>
 horizon_track run_model_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every,
-                                      bool quiet) {
+                                      bool quiet, const track_settings& settings) {
   horizon_track tr;
   if constexpr (scalar_traits<T>::is_interval) {
     throw input_error("--scalars: the study runs point scalars, not " + std::string(scalar_traits<T>::name));
@@ -611,13 +611,15 @@ horizon_track run_model_horizon_track(const scene_input& scene, const std::strin
     const evaluation_scope<T> scope;
     tr.scalar = scalar_traits<T>::name;
     tr.bits = scalar_traits<T>::precision_bits();
-    tr.order = motion_detail::default_order<T>();
+    tr.order = settings.order.value_or(motion_detail::default_order<T>());
+    const double tol = settings.tol.value_or(motion_detail::default_tol<T>());
+    tr.tol = tol;
     motion_detail::progress_meter meter("horizon (" + tr.scalar + ")", from_decimal<double>(t_end), quiet);
     const auto m = Model::template prepare<T>(scene.as<typename Model::input>());
     const auto [prob, x0] = model_motion<Model>::template start<T>(m);
     const std::size_t n = motion_detail::reported_names(prob).size();
     const ode::simulate_stats st = ode::simulate(
-        prob, x0, from_decimal<T>(t_end), from_decimal<T>(every), tr.order, motion_detail::default_tol<T>(),
+        prob, x0, from_decimal<T>(t_end), from_decimal<T>(every), tr.order, tol,
         [&](const ode::sample<T>& s) {
           tr.t.push_back(lower_string(s.t));
           std::vector<std::string> v;

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <openssl/evp.h>
@@ -120,12 +121,50 @@ mpfr mp_number(mpfr_prec_t p) {
 }
 mpfr_ptr ptr(mpfr& x) { return x.backend().data(); }
 
+#if defined(__x86_64__) && defined(__GNUC__)
+/// The x87 unit at its full 64-bit significand, rounding upward, for a scope (the SSE unit, which
+/// does double arithmetic, is left as it is). An x87 operation on operands of at most 64 bits is
+/// then one correct upward rounding to 64 bits: what MPFR gives at 64 bits with MPFR_RNDU, as
+/// long as the result is neither beyond x87's exponent range (+-16382) nor below it, which a
+/// difference, maximum, quotient or power-of-2 multiple of doubles never is.
+class x87_upward {
+ public:
+  x87_upward() {
+    asm volatile("fnstcw %0" : "=m"(saved_));
+    const unsigned short upward = static_cast<unsigned short>((saved_ & ~0x0F00u) | 0x0B00u);  // PC 64 bits, RC up
+    asm volatile("fldcw %0" : : "m"(upward) : "memory");
+  }
+  ~x87_upward() { asm volatile("fldcw %0" : : "m"(saved_) : "memory"); }
+  x87_upward(const x87_upward&) = delete;
+  x87_upward& operator=(const x87_upward&) = delete;
+  /// x, as the compiler must compute it here (not moved across the mode's switches)
+  static long double opaque(long double x) {
+    asm volatile("" : "+t"(x));
+    return x;
+  }
+
+ private:
+  unsigned short saved_ = 0;
+};
+constexpr bool x87_error_bounds = std::numeric_limits<long double>::digits == 64;
+#else
+constexpr bool x87_error_bounds = false;
+#endif
+
+/// A 64-bit number as MPFR prints it (mpfr_to_decimal), from a long double of 64 bits.
+std::string decimal_of_64_bits(long double x, int digits, mpfr_rnd_t rnd) {
+  mpfr v = mp_number(64);
+  mpfr_set_ld(ptr(v), x, MPFR_RNDN);  // exact: 64 bits
+  return mpfr_to_decimal(ptr(v), digits, rnd);
+}
+
 /// The description of a quantity enclosed in [lo, hi] (MPFR numbers holding the enclosure's bounds
 /// exactly): the bounds rounded outward to decimal, the double nearest the enclosure, the error
 /// bound of that double and the tolerance for a double engine (x53: appell's own interval<double>
-/// enclosure, null when there is none).
+/// enclosure, null when there is none). `double_bounds`: lo and hi are doubles (interval<double>'s
+/// bounds), whose 64-bit error bounds the x87 unit rounds as MPFR does, without MPFR's calls.
 quantity describe_bounds(const std::string& name, mpfr_srcptr lo, mpfr_srcptr hi, const interval* x53, double scale,
-                         double amplification) {
+                         double amplification, bool double_bounds = false) {
   quantity q;
   q.name = name;
   q.lower = mpfr_to_decimal(lo, roundtrip_digits(static_cast<unsigned>(mpfr_get_prec(lo))), MPFR_RNDD);
@@ -142,6 +181,32 @@ quantity describe_bounds(const std::string& name, mpfr_srcptr lo, mpfr_srcptr hi
   char buffer[64];
   const auto printed = std::to_chars(buffer, buffer + sizeof buffer, d, std::chars_format::general, 17);  // "%.17g"
   q.nearest_double.assign(buffer, printed.ptr);
+  // The suggested tolerance on |engine - exact| for a double-precision engine,
+  // from the problem's conditioning: 16 x error_amplification x 2^-53 x the
+  // largest |component| of the same result (a vector's components are computed
+  // together: a component that is 0, or small, carries the rounding of the
+  // others, and of terms that cancel in another engine's formulation), and at
+  // least 16 times the width of appell's own interval<double> enclosure of it.
+  const double w = x53 ? std::max(boost::numeric::width(*x53), std::ldexp(std::max(amplification, 1.0) * scale, -53)) : 0;
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (x87_error_bounds && double_bounds) {
+    // The same numbers as the MPFR path below, each one upward rounding to 64 bits.
+    const double l = dlo, h = dhi;  // exact: lo and hi are doubles
+    long double e = 0, rel = 0, tol = 0;
+    {
+      const x87_upward up;
+      const long double ld = x87_upward::opaque(d), ll = x87_upward::opaque(l), lh = x87_upward::opaque(h);
+      const long double e1 = ld - ll, e2 = lh - ld;
+      e = x87_upward::opaque(e1 < e2 ? e2 : e1);
+      if (l > 0) rel = x87_upward::opaque(e / ll);
+      else if (h < 0) rel = x87_upward::opaque(e / -lh);
+      tol = x87_upward::opaque(x87_upward::opaque(w) * 16);
+    }
+    if (l > 0 || h < 0) q.rel_error_bound = decimal_of_64_bits(rel, 3, MPFR_RNDU);
+    q.tolerance = x53 ? decimal_of_64_bits(tol, 3, MPFR_RNDU) : "inf";
+    return q;
+  }
+#endif
   // |d - exact| <= max(d - lo, hi - d), rounded up; relative to min |x| over the enclosure.
   mpfr e1 = mp_number(64), e2 = mp_number(64), e = mp_number(64), dv = mp_number(53);
   mpfr_set_d(ptr(dv), d, MPFR_RNDN);
@@ -155,14 +220,7 @@ quantity describe_bounds(const std::string& name, mpfr_srcptr lo, mpfr_srcptr hi
     mpfr_div(ptr(e), ptr(e), ptr(m), MPFR_RNDU);
     q.rel_error_bound = mpfr_to_decimal(ptr(e), 3, MPFR_RNDU);
   }
-  // The suggested tolerance on |engine - exact| for a double-precision engine,
-  // from the problem's conditioning: 16 x error_amplification x 2^-53 x the
-  // largest |component| of the same result (a vector's components are computed
-  // together: a component that is 0, or small, carries the rounding of the
-  // others, and of terms that cancel in another engine's formulation), and at
-  // least 16 times the width of appell's own interval<double> enclosure of it.
   if (x53) {
-    const double w = std::max(boost::numeric::width(*x53), std::ldexp(std::max(amplification, 1.0) * scale, -53));
     mpfr tol = mp_number(64);
     mpfr_set_d(ptr(tol), w, MPFR_RNDU);
     mpfr_mul_ui(ptr(tol), ptr(tol), 16, MPFR_RNDU);
@@ -179,7 +237,7 @@ quantity describe(const std::string& name, const T& x, const interval* x53, doub
     mpfr lo = mp_number(53), hi = mp_number(53);
     mpfr_set_d(ptr(lo), x.lower(), MPFR_RNDN);
     mpfr_set_d(ptr(hi), x.upper(), MPFR_RNDN);
-    return describe_bounds(name, ptr(lo), ptr(hi), x53, scale, amplification);
+    return describe_bounds(name, ptr(lo), ptr(hi), x53, scale, amplification, true);
   } else {
     mpfr_value lo, hi;
     scalar_traits<T>::to_mpfr(x, lo, hi);
