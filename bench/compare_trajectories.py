@@ -6,7 +6,7 @@ at every row whose index is a power of ten (1, 10, 100, ... outputs; with --ever
 1, 10, 100, ... periods) as the largest up to that row, and the largest over all rows.
 Exact decimal arithmetic (Python's decimal at 120 digits): no rounding of the 80-digit values.
 
-Usage: bench/compare_trajectories.py A.csv B.csv
+Usage: bench/compare_trajectories.py A.csv B.csv [COLUMN,COLUMN,...]   (default: every shared column)
 """
 import csv
 import decimal
@@ -24,11 +24,17 @@ def rows(path):
 
 
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
     ha, ra = rows(sys.argv[1])
     hb, rb = rows(sys.argv[2])
     shared = [c for c in ha if c != "t" and c in hb]
+    if len(sys.argv) == 4:
+        wanted = sys.argv[3].split(",")
+        missing = [c for c in wanted if c not in shared]
+        if missing:
+            sys.exit("not in both files: " + ",".join(missing))
+        shared = wanted
     if not shared:
         sys.exit("no shared columns")
     ia = [ha.index(c) for c in shared]
