@@ -987,11 +987,11 @@ BOOST_AUTO_TEST_CASE(horizon_takes_the_reference_settings_and_a_period_where_the
   const std::string out = (work / "horizon_settings").string();
   std::filesystem::remove_all(out);
   const std::string scene = APPELL_SOURCE_DIR "/data/scenes/top_on_cone.json";
-  expect_bad_input("horizon " + scene + " --t-end 1 --reference-order 61 --out " + out, "--reference-order");
-  expect_bad_input("horizon " + scene + " --t-end 1 --reference-order 1 --out " + out, "--reference-order");
-  expect_bad_input("horizon " + scene + " --t-end 1 --reference-tol 1 --out " + out, "--reference-tol");
-  expect_bad_input("horizon " + scene + " --t-end 1 --reference-tol -1e-30 --out " + out, "--reference-tol");
-  expect_bad_input("horizon " + scene + " --t-end 1 --period 0 --out " + out, "--period");
+  // each flag with a value out of its range (order 2 to 60, tolerance in (0, 1), period > 0)
+  for (const auto& [flag, value] : std::vector<std::pair<std::string, std::string>>{
+           {"--reference-order", "61"}, {"--reference-order", "1"}, {"--reference-tol", "1"},
+           {"--reference-tol", "-1e-30"}, {"--period", "0"}})
+    expect_bad_input("horizon " + scene + " --t-end 1 " + flag + " " + value + " --out " + out, flag);
   BOOST_TEST(!std::filesystem::exists(out + "/horizon.csv"));
   // Example I's cone to t = 0.5 in double and dd against a reference at order 30, tolerance 1e-40:
   // the reference takes the settings (its order in the summary, its text on stdout), and is far
