@@ -13,6 +13,7 @@
 
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/format.hpp"
+#include "appell/scalar/x87_bounds.hpp"
 
 using namespace appell;
 
@@ -421,4 +422,71 @@ BOOST_AUTO_TEST_CASE(rationals_become_the_doubles_mpfr_gives) {
   BOOST_TEST_MESSAGE("doubles compared: " << compared << ", exact quotients: " << exact);
   BOOST_TEST(compared == 160000);
   BOOST_TEST(exact > 5000);
+}
+
+// The 64-bit error bounds of `appell reference` in interval (x87_bounds.hpp), bit for bit against
+// MPFR at 64 bits rounding upward: random enclosures [lo, hi] of doubles of every exponent
+// (subnormals, both signs, straddling 0, a few ulps wide or spanning binades), d one of the
+// doubles in it, w any double >= 0. A bound rounded to nearest instead would differ from MPFR's
+// on a good part of them: the test counts those and requires many.
+BOOST_AUTO_TEST_CASE(x87_error_bounds_are_mpfrs_upward_64_bit_bounds) {
+  if (!appell::x87_bounds_available()) return;  // no x87 unit: reference.cpp uses MPFR itself
+  std::mt19937_64 rng(20261130);
+  auto any_double = [&] {
+    for (;;) {
+      const std::uint64_t bits = rng();
+      double x;
+      std::memcpy(&x, &bits, sizeof x);
+      if (std::isfinite(x)) return x;
+    }
+  };
+  auto ulps_above = [](double x, std::uint64_t k) {
+    for (std::uint64_t i = 0; i < k; ++i) x = std::nextafter(x, HUGE_VAL);
+    return x;
+  };
+  mpfr_value lo64(64), hi64(64), d64(64), e1(64), e2(64), e(64), rel(64), tol(64), near(64), got(64);
+  long compared = 0, relative = 0, nearest_differs = 0;
+  for (int i = 0; i < 200000; ++i) {
+    double lo = any_double(), hi = 0;
+    switch (i % 4) {
+      case 0: hi = ulps_above(lo, rng() % 8); break;                 // a few ulps wide
+      case 1: hi = any_double(); break;                              // any two doubles
+      case 2: hi = std::ldexp(lo, static_cast<int>(rng() % 60)); break;  // binades apart (either sign)
+      default: hi = std::abs(any_double()); lo = -std::abs(lo); break;   // straddling 0
+    }
+    if (!std::isfinite(hi)) continue;
+    if (hi < lo) std::swap(lo, hi);
+    const double d = rng() % 3 == 0 ? lo : rng() % 2 ? hi : (lo == hi ? lo : ulps_above(lo, 1 + rng() % 3));
+    if (d > hi) continue;
+    const double w = std::abs(any_double());
+    const appell::error_bounds_64 b = appell::x87_error_bounds(d, lo, hi, w);
+    mpfr_set_d(lo64, lo, MPFR_RNDN);
+    mpfr_set_d(hi64, hi, MPFR_RNDN);
+    mpfr_set_d(d64, d, MPFR_RNDN);
+    mpfr_sub(e1, d64, lo64, MPFR_RNDU);
+    mpfr_sub(e2, hi64, d64, MPFR_RNDU);
+    mpfr_max(e, e1, e2, MPFR_RNDU);
+    mpfr_set_ld(got, b.absolute, MPFR_RNDN);
+    BOOST_REQUIRE_MESSAGE(mpfr_equal_p(got, e), "absolute bound of " << d << " in [" << lo << ", " << hi << "]");
+    BOOST_REQUIRE(b.has_relative == (lo > 0 || hi < 0));
+    if (b.has_relative) {
+      ++relative;
+      mpfr_set_d(rel, lo > 0 ? lo : -hi, MPFR_RNDN);
+      mpfr_div(near, e, rel, MPFR_RNDN);
+      mpfr_div(rel, e, rel, MPFR_RNDU);
+      mpfr_set_ld(got, b.relative, MPFR_RNDN);
+      BOOST_REQUIRE_MESSAGE(mpfr_equal_p(got, rel), "relative bound of " << d << " in [" << lo << ", " << hi << "]");
+      if (!mpfr_equal_p(near, rel)) ++nearest_differs;
+    }
+    mpfr_set_d(tol, w, MPFR_RNDU);
+    mpfr_mul_ui(tol, tol, 16, MPFR_RNDU);
+    mpfr_set_ld(got, b.tolerance, MPFR_RNDN);
+    BOOST_REQUIRE_MESSAGE(mpfr_equal_p(got, tol), "tolerance of " << w);
+    ++compared;
+  }
+  BOOST_TEST_MESSAGE("enclosures compared: " << compared << ", with a relative bound: " << relative
+                                             << ", where rounding to nearest would differ: " << nearest_differs);
+  BOOST_TEST(compared > 150000);
+  BOOST_TEST(relative > 50000);
+  BOOST_TEST(nearest_differs > 10000);
 }

@@ -16,7 +16,6 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <openssl/evp.h>
@@ -30,6 +29,7 @@
 #include "appell/io/scene.hpp"
 #include "appell/io/urdf.hpp"
 #include "appell/io/files.hpp"
+#include "appell/scalar/x87_bounds.hpp"
 #include "csv.hpp"
 #include "states.hpp"
 #include "write_whole.hpp"
@@ -121,36 +121,6 @@ mpfr mp_number(mpfr_prec_t p) {
 }
 mpfr_ptr ptr(mpfr& x) { return x.backend().data(); }
 
-#if defined(__x86_64__) && defined(__GNUC__)
-/// The x87 unit at its full 64-bit significand, rounding upward, for a scope (the SSE unit, which
-/// does double arithmetic, is left as it is). An x87 operation on operands of at most 64 bits is
-/// then one correct upward rounding to 64 bits: what MPFR gives at 64 bits with MPFR_RNDU, as
-/// long as the result is neither beyond x87's exponent range (+-16382) nor below it, which a
-/// difference, maximum, quotient or power-of-2 multiple of doubles never is.
-class x87_upward {
- public:
-  x87_upward() {
-    asm volatile("fnstcw %0" : "=m"(saved_));
-    const unsigned short upward = static_cast<unsigned short>((saved_ & ~0x0F00u) | 0x0B00u);  // PC 64 bits, RC up
-    asm volatile("fldcw %0" : : "m"(upward) : "memory");
-  }
-  ~x87_upward() { asm volatile("fldcw %0" : : "m"(saved_) : "memory"); }
-  x87_upward(const x87_upward&) = delete;
-  x87_upward& operator=(const x87_upward&) = delete;
-  /// x, as the compiler must compute it here (not moved across the mode's switches)
-  static long double opaque(long double x) {
-    asm volatile("" : "+t"(x));
-    return x;
-  }
-
- private:
-  unsigned short saved_ = 0;
-};
-constexpr bool x87_error_bounds = std::numeric_limits<long double>::digits == 64;
-#else
-constexpr bool x87_error_bounds = false;
-#endif
-
 /// A 64-bit number as MPFR prints it (mpfr_to_decimal), from a long double of 64 bits.
 std::string decimal_of_64_bits(long double x, int digits, mpfr_rnd_t rnd) {
   mpfr v = mp_number(64);
@@ -188,25 +158,13 @@ quantity describe_bounds(const std::string& name, mpfr_srcptr lo, mpfr_srcptr hi
   // others, and of terms that cancel in another engine's formulation), and at
   // least 16 times the width of appell's own interval<double> enclosure of it.
   const double w = x53 ? std::max(boost::numeric::width(*x53), std::ldexp(std::max(amplification, 1.0) * scale, -53)) : 0;
-#if defined(__x86_64__) && defined(__GNUC__)
-  if (x87_error_bounds && double_bounds) {
-    // The same numbers as the MPFR path below, each one upward rounding to 64 bits.
-    const double l = dlo, h = dhi;  // exact: lo and hi are doubles
-    long double e = 0, rel = 0, tol = 0;
-    {
-      const x87_upward up;
-      const long double ld = x87_upward::opaque(d), ll = x87_upward::opaque(l), lh = x87_upward::opaque(h);
-      const long double e1 = ld - ll, e2 = lh - ld;
-      e = x87_upward::opaque(e1 < e2 ? e2 : e1);
-      if (l > 0) rel = x87_upward::opaque(e / ll);
-      else if (h < 0) rel = x87_upward::opaque(e / -lh);
-      tol = x87_upward::opaque(x87_upward::opaque(w) * 16);
-    }
-    if (l > 0 || h < 0) q.rel_error_bound = decimal_of_64_bits(rel, 3, MPFR_RNDU);
-    q.tolerance = x53 ? decimal_of_64_bits(tol, 3, MPFR_RNDU) : "inf";
+  if (double_bounds && x87_bounds_available()) {
+    // The same numbers as the MPFR path below, each one upward rounding to 64 bits (x87_bounds.hpp).
+    const error_bounds_64 b = x87_error_bounds(d, dlo, dhi, w);  // dlo, dhi exact: lo and hi are doubles
+    if (b.has_relative) q.rel_error_bound = decimal_of_64_bits(b.relative, 3, MPFR_RNDU);
+    q.tolerance = x53 ? decimal_of_64_bits(b.tolerance, 3, MPFR_RNDU) : "inf";
     return q;
   }
-#endif
   // |d - exact| <= max(d - lo, hi - d), rounded up; relative to min |x| over the enclosure.
   mpfr e1 = mp_number(64), e2 = mp_number(64), e = mp_number(64), dv = mp_number(53);
   mpfr_set_d(ptr(dv), d, MPFR_RNDN);
