@@ -4,13 +4,13 @@
 # the suite there (the valgrind and install tests are left out of that build).
 # Any sanitizer report aborts the test that triggered it: CTest then fails.
 #
-#   scripts/sanitize.sh            the whole suite (about 50 minutes on 2 cores: the library
+#   scripts/sanitize.sh            the whole suite (about 40 minutes on 2 cores: the library
 #                                  is compiled a second time; run it before a release)
 #   scripts/sanitize.sh --numbers  the numbers layer only (appell_numbers: the scalars'
 #                                  functions and backends, decimal conversions, the verified
 #                                  solve) and its suites, label `numbers`, in ./build-sanitize-numbers:
 #                                  a few minutes, what CI runs (.ci/run)
-# Other arguments go to ctest.
+# --numbers, if given, comes first; the other arguments go to ctest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh
