@@ -64,26 +64,21 @@ std::string parse_horizon_arguments(int argc, char** argv, int first, horizon_op
       if (!s.empty()) o.scalars.push_back(s);
     if (o.scalars.empty()) return "--scalars: expected a comma-separated list of point scalars";
   }
-  if (c.has("--reference-order")) {
-    unsigned n = 0;
-    if (std::string why = parse_integer("--reference-order", c.value_or("--reference-order", ""), 2, 60, n); !why.empty())
+  if (c.has("--reference-order"))
+    if (std::string why = parse_taylor_order("--reference-order", c.value_or("--reference-order", ""), o.reference.order);
+        !why.empty())
       return why;
-    o.reference.order = static_cast<int>(n);
-  }
-  try {
-    if (c.has("--reference-tol")) {
-      o.reference_tol_text = c.value_or("--reference-tol", "");
-      o.reference.tol = positive_decimal("--reference-tol", o.reference_tol_text);
-      if (*o.reference.tol >= 1)
-        return "--reference-tol: expected a positive decimal below 1 (a relative error per step), got '" +
-               o.reference_tol_text + "'";
+  if (c.has("--reference-tol"))
+    if (std::string why = parse_step_tolerance("--reference-tol", c.value_or("--reference-tol", ""), o.reference.tol);
+        !why.empty())
+      return why;
+  if (c.has("--period")) {
+    o.period = c.value_or("--period", "");
+    try {
+      o.period_value = positive_decimal("--period", o.period);
+    } catch (const input_error& e) {
+      return e.what();
     }
-    if (c.has("--period")) {
-      o.period = c.value_or("--period", "");
-      (void)positive_decimal("--period", o.period);
-    }
-  } catch (const input_error& e) {
-    return e.what();
   }
   return "";
 }
@@ -107,7 +102,7 @@ int horizon(const horizon_options& given) {
         throw input_error(std::string(flag) + ": model " + scene.model + " is judged against its " + closed->kind +
                           ", which knows its period");
   }
-  const double period = closed ? static_cast<double>(closed->period) : o.period.empty() ? 0 : positive_decimal("--period", o.period);
+  const double period = closed ? static_cast<double>(closed->period) : o.period_value;  // 0: none given
   if (o.every.empty()) o.every = to_decimal(period > 0 ? std::min(period, t_end / 10) : t_end / 1000);
   const double every = positive_decimal("--every", o.every);
   if (every > t_end) throw input_error("--every: the output step " + o.every + " is larger than the horizon " + o.t_end);

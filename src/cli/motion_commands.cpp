@@ -23,6 +23,23 @@ double positive_decimal(const std::string& flag, const std::string& text) {
   return v;
 }
 
+std::string parse_taylor_order(const std::string& flag, const std::string& text, std::optional<int>& into) {
+  unsigned n = 0;
+  if (std::string why = parse_integer(flag, text, 2, 60, n); !why.empty()) return why;
+  into = static_cast<int>(n);
+  return "";
+}
+
+std::string parse_step_tolerance(const std::string& flag, const std::string& text, std::optional<double>& into) {
+  try {
+    into = positive_decimal(flag, text);
+  } catch (const input_error& e) {
+    return e.what();
+  }
+  if (*into >= 1) return flag + ": expected a positive decimal below 1 (a relative error per step), got '" + text + "'";
+  return "";
+}
+
 std::string parse_motion_arguments(int argc, char** argv, int first, motion_options& o) {
   command_line c;
   if (std::string why = read_command_line(o.command, argc, argv, first,
@@ -49,17 +66,13 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
       return "";
     };
     if (a == "--order") {
-      unsigned n = 0;
-      if (std::string why = parse_integer("--order", v, 2, 60, n); !why.empty()) return why;
-      o.order = static_cast<int>(n);
+      if (std::string why = parse_taylor_order(a, v, o.order); !why.empty()) return why;
     } else if (a == "--jobs") {
       unsigned n = 0;
       if (std::string why = parse_integer("--jobs", v, 1, 1024, n); !why.empty()) return why;
       o.jobs = static_cast<int>(n);
     } else if (a == "--tol") {
-      if (std::string why = positive(o.tol); !why.empty()) return why;
-      // A relative tolerance of 1 or more lets a step's error be as large as the state itself.
-      if (*o.tol >= 1) return "--tol: expected a positive decimal below 1 (a relative error per step), got '" + v + "'";
+      if (std::string why = parse_step_tolerance(a, v, o.tol); !why.empty()) return why;
     } else if (a == "--vary") {
       const auto eq = v.find('='), colon = v.find(':', eq == std::string::npos ? 0 : eq);
       if (eq == std::string::npos || eq == 0 || colon == std::string::npos)

@@ -113,6 +113,14 @@ std::string moving_model_names();
 /// A positive finite decimal, or input_error naming the flag.
 double positive_decimal(const std::string& flag, const std::string& text);
 
+/// A Taylor order (`--order`, `--reference-order`): an integer from 2 to 60.  Returns "" or the
+/// usage error naming the flag.
+std::string parse_taylor_order(const std::string& flag, const std::string& text, std::optional<int>& into);
+
+/// A relative tolerance per step (`--tol`, `--reference-tol`): a positive decimal below 1 (at 1
+/// or more a step's error may be as large as the state itself).  Returns "" or the usage error.
+std::string parse_step_tolerance(const std::string& flag, const std::string& text, std::optional<double>& into);
+
 /// Parses argv[first..] into o; returns "" or the usage error (naming the flag).
 std::string parse_motion_arguments(int argc, char** argv, int first, motion_options& o);
 
@@ -129,9 +137,10 @@ struct horizon_options {
   /// --reference-order, --reference-tol: the 256-bit reference's Taylor order and tolerance
   /// (scenes without a closed form; default simulate's in mpfr at 256 bits: 60 and 2^-256).
   track_settings reference;
-  std::string reference_tol_text;  ///< --reference-tol as written
-  /// --period: the scene's period, where the model knows none (the table's marks, the plot's axis)
+  /// --period: the scene's period, where the model knows none (the table's marks, the plot's
+  /// axis), as written (the summary echoes it) and its value
   std::string period;
+  double period_value = 0;
 };
 std::string parse_horizon_arguments(int argc, char** argv, int first, horizon_options& o);
 /// Runs the study on options from parse_horizon_arguments (which checked scene, --t-end, --out).
