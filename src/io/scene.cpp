@@ -100,7 +100,7 @@ double error_amplification(const scene_input& scene, const evaluation<interval>&
 double error_amplification(const scene_input& scene) {
   // interval<double>: the rounding of double arithmetic, enclosed
   try {
-    const double a = amplification_of(compute<interval>(prepare<interval>(scene)));
+    const double a = amplification_of(compute<interval>(prepare<interval>(scene), with_checks::no));
     if (std::isfinite(a)) return a;
   } catch (const std::exception&) {
   }
@@ -109,7 +109,7 @@ double error_amplification(const scene_input& scene) {
   // bits, so its widths are double's), each operation rounded outward by MPFI.
   try {
     const mp_precision_scope bits(53);
-    return amplification_of(prepare<mpfi>(scene).run());
+    return amplification_of(prepare<mpfi>(scene).run(with_checks::no));
   } catch (const std::exception&) {
     return std::numeric_limits<double>::infinity();
   }

@@ -10,6 +10,9 @@
 //     template <Scalar T> static evaluation<T> compute(const prepared<T>&);
 // compute<T> calls the model's one result function (scenes/<name>.hpp) and
 // names its results and checks; it applies no evaluation policy (appell::compute does).
+// A model whose checks cost work of their own may take the request instead,
+//     template <Scalar T> static evaluation<T> compute(const prepared<T>&, with_checks);
+// and leave them out for with_checks::no (its results unchanged, bit for bit).
 // The module's header ends with APPELL_EXTERN_MODEL(<name>_model); its .cpp
 // defines the reader and APPELL_DEFINE_MODEL_ENTRY(<name>_model); CMake
 // generates the instantiations (one unit per model x scalar) and the registry
@@ -31,7 +34,7 @@ namespace appell {
 template <class Model, Scalar T>
 struct model_functions {
   static prepared_scene<T> prepare(const model_input& in);
-  static evaluation<T> compute(const void* p);
+  static evaluation<T> compute(const void* p, with_checks checks);
 };
 
 template <class Model, Scalar T>
@@ -42,8 +45,12 @@ prepared_scene<T> model_functions<Model, T>::prepare(const model_input& in) {
 }
 
 template <class Model, Scalar T>
-evaluation<T> model_functions<Model, T>::compute(const void* p) {
-  return Model::template compute<T>(*static_cast<const typename Model::template prepared<T>*>(p));
+evaluation<T> model_functions<Model, T>::compute(const void* p, with_checks checks) {
+  const auto& prepared = *static_cast<const typename Model::template prepared<T>*>(p);
+  if constexpr (requires { Model::template compute<T>(prepared, checks); })
+    return Model::template compute<T>(prepared, checks);
+  else
+    return Model::template compute<T>(prepared);  // its checks always computed
 }
 
 namespace detail {

@@ -85,6 +85,13 @@ contact_judgement judged_contact(const std::string& name, const T& normal, const
   return {name, verdict_name(judge_contact(normal, tangential, mu ? &*mu : nullptr)), mu_text, required};
 }
 
+/// Whether an evaluation computes its checks (the identities `appell eval` prints: eq. (4), Cotton
+/// against Lagrange, ...).  `no`: a caller that uses only the results and the derived state (`appell
+/// reference`, error_amplification) lets a model leave out what only its checks need (the rolling
+/// sphere's Lagrange multipliers and eq. (4): a fifth of a reference state's instructions).  A model
+/// that takes no such flag computes them anyway (model.hpp); the results are the same either way.
+enum class with_checks : bool { no = false, yes = true };
+
 template <Scalar T>
 struct evaluation {
   std::vector<named_result<T>> results;
@@ -136,10 +143,10 @@ named_result<T> scalar_result(std::string name, const T& v) {
 template <Scalar T>
 class prepared_scene {
  public:
-  using compute_fn = evaluation<T> (*)(const void*);
+  using compute_fn = evaluation<T> (*)(const void*, with_checks);
   prepared_scene(std::shared_ptr<const void> state, compute_fn f) : state_(std::move(state)), compute_(f) {}
   /// The model's dynamics alone (no evaluation policy: use appell::compute).
-  evaluation<T> run() const { return compute_(state_.get()); }
+  evaluation<T> run(with_checks checks = with_checks::yes) const { return compute_(state_.get(), checks); }
   /// Keeps the scene's inputs alive as long as this (prepared state may point
   /// into them: a cone's compiled expressions do).
   void keep(std::shared_ptr<const model_input> inputs) { inputs_ = std::move(inputs); }
@@ -187,9 +194,9 @@ prepared_scene<T> prepare(const scene_input& scene) {
 /// A value that is not finite (an overflow, or 0/0, in T) is never returned:
 /// certification_error names it (exit 3; a wider scalar may succeed).
 template <Scalar T>
-evaluation<T> compute(const prepared_scene<T>& scene) {
+evaluation<T> compute(const prepared_scene<T>& scene, with_checks checks = with_checks::yes) {
   const evaluation_scope<T> scope;
-  evaluation<T> e = scene.run();
+  evaluation<T> e = scene.run(checks);
   for (auto* group : {&e.results, &e.checks, &e.derived})
     for (auto& r : *group)
       for (std::size_t i = 0; i < r.values.size(); ++i) {
@@ -209,11 +216,13 @@ evaluation<T> compute(const prepared_scene<T>& scene) {
 /// the point values then carry no error estimate (SCENES.md).
 double error_amplification(const scene_input& scene);
 
-/// The scene's results in scalar T (mpfr/mpfi at the current mp precision).
+/// The scene's results in scalar T (mpfr/mpfi at the current mp precision); with_checks::no: no
+/// checks (error_amplification, a check of the point types, included).
 template <Scalar T>
-evaluation<T> evaluate(const scene_input& scene) {
-  evaluation<T> e = compute<T>(prepare<T>(scene));
+evaluation<T> evaluate(const scene_input& scene, with_checks checks = with_checks::yes) {
+  evaluation<T> e = compute<T>(prepare<T>(scene), checks);
   if constexpr (!scalar_traits<T>::is_interval) {
+    if (checks == with_checks::no) return e;
     const double a = error_amplification(scene);
     if (std::isfinite(a)) e.checks.push_back(detail::scalar_result("error_amplification", T(a)));
   }
@@ -293,8 +302,8 @@ std::string format_text(const scene_input& scene, const evaluation<T>& e) {
 // generates from the list (cmake/instantiate.cmake).
 #define APPELL_SCENE_TEMPLATES(prefix, T)                                                  \
   prefix template prepared_scene<T> prepare<T>(const scene_input&);                        \
-  prefix template evaluation<T> compute<T>(const prepared_scene<T>&);                      \
-  prefix template evaluation<T> evaluate<T>(const scene_input&);                           \
+  prefix template evaluation<T> compute<T>(const prepared_scene<T>&, with_checks);         \
+  prefix template evaluation<T> evaluate<T>(const scene_input&, with_checks);              \
   prefix template std::string format_json<T>(const scene_input&, const evaluation<T>&);    \
   prefix template std::string format_text<T>(const scene_input&, const evaluation<T>&);
 #define APPELL_DETAIL_EXTERN_SCENE(ctx, T, name) APPELL_SCENE_TEMPLATES(extern, T)

@@ -108,9 +108,11 @@ struct rolling_sphere_model {
       throw input_error("state.omega: omega . n must be 0 (no pivoting), residual " + to_string(m.no_pivot));
     return m;
   }
+  /// with_checks::no: no Lagrange multipliers and no eq. (4) (rolling_sphere_motion's `checks`).
   template <Scalar T>
-  static evaluation<T> compute(const prepared<T>& m) {
-    const rolling_sphere_result<T> r = rolling_sphere_motion(m.M, m.A, m.a, m.surface, m.c, m.omega, m.F, m.tau);
+  static evaluation<T> compute(const prepared<T>& m, with_checks checks) {
+    const rolling_sphere_result<T> r = rolling_sphere_motion(m.M, m.A, m.a, m.surface, m.c, m.omega, m.F, m.tau,
+                                                             checks == with_checks::yes);
     // With a contact judged, its verdict says whether the normal force is positive, and the
     // contacts group gives the friction coefficient it requires in friction_ratio's stead.
     if (!m.contact && !certainly_positive(r.normal_force) && !certainly_negative(r.normal_force))
@@ -132,11 +134,13 @@ struct rolling_sphere_model {
       e.results.push_back(detail::scalar_result("surface_tangential_force", tangential));
       e.contacts.push_back(judged_contact("surface", r.normal_force, tangential, m.mu));
     }
-    e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
-    e.checks.push_back(detail::scalar_result("normal_force_cotton_minus_lagrange", T(r.reactions(2) - r.multipliers(2))));
-    e.checks.push_back(detail::scalar_result("pivot_couple_cotton_minus_lagrange", T(r.reactions(3) - r.multipliers(3))));
-    e.checks.push_back(detail::scalar_result("surface_residual", m.on_surface));
-    e.checks.push_back(detail::scalar_result("pivot_residual", m.no_pivot));
+    if (checks == with_checks::yes) {
+      e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
+      e.checks.push_back(detail::scalar_result("normal_force_cotton_minus_lagrange", T(r.reactions(2) - r.multipliers(2))));
+      e.checks.push_back(detail::scalar_result("pivot_couple_cotton_minus_lagrange", T(r.reactions(3) - r.multipliers(3))));
+      e.checks.push_back(detail::scalar_result("surface_residual", m.on_surface));
+      e.checks.push_back(detail::scalar_result("pivot_residual", m.no_pivot));
+    }
     e.derived.push_back(detail::vector_result("contact_point", r.contact_point));
     e.derived.push_back(detail::vector_result("normal", r.normal));
     e.derived.push_back(detail::vector_result("center_velocity", r.center_velocity));
