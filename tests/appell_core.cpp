@@ -4,11 +4,11 @@
 #define BOOST_TEST_MODULE appell_core
 #include <boost/test/unit_test.hpp>
 
-#include <cstring>
 #include <filesystem>
 #include <optional>
 #include <random>
 
+#include "appell/derivatives/jet.hpp"
 #include "appell/dynamics/speeds.hpp"
 #include "appell/io/scene.hpp"
 #include "appell/dynamics/virtual_work.hpp"
@@ -168,21 +168,12 @@ BOOST_AUTO_TEST_CASE(the_pin_reaction_is_a_force_at_the_pin_equal_to_m_aG_minus_
 // (its Lagrange multipliers and eq. (4)), a model without the flag keeps them.
 namespace {
 template <class T>
-bool same_bits(const T& a, const T& b) {
-  if constexpr (std::is_same_v<T, interval>) {
-    const double al = a.lower(), bl = b.lower(), ah = a.upper(), bh = b.upper();
-    return std::memcmp(&al, &bl, sizeof al) == 0 && std::memcmp(&ah, &bh, sizeof ah) == 0;
-  } else {
-    return std::memcmp(&a, &b, sizeof a) == 0;
-  }
-}
-template <class T>
 bool same_group(const std::vector<named_result<T>>& a, const std::vector<named_result<T>>& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i) {
     if (a[i].name != b[i].name || a[i].values.size() != b[i].values.size()) return false;
     for (std::size_t j = 0; j < a[i].values.size(); ++j)
-      if (!same_bits(a[i].values[j], b[i].values[j])) return false;
+      if (!detail::identical(a[i].values[j], b[i].values[j])) return false;  // derivatives/jet.hpp
   }
   return true;
 }
