@@ -199,7 +199,7 @@ int compare_with_and_without_checks(const scene_input& scene, const std::string&
   BOOST_TEST(same_group(with->results, without->results), file << ": results");
   BOOST_TEST(same_group(with->derived, without->derived), file << ": derived");
   BOOST_TEST(!with->checks.empty(), file);
-  if (scene.model == "rolling_sphere") BOOST_TEST(without->checks.empty(), file);
+  if (scene.model == "rolling_sphere" || scene.entry->module == "system") BOOST_TEST(without->checks.empty(), file);
   if (scene.model == "euler_body") {  // no flag: its checks all there, but the point types' error_amplification
     std::vector<named_result<T>> kept;
     for (const auto& c : with->checks)
@@ -212,18 +212,21 @@ int compare_with_and_without_checks(const scene_input& scene, const std::string&
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(evaluations_without_checks_give_the_same_results) {
-  int scenes = 0, spheres = 0, compared = 0;
+  int scenes = 0, spheres = 0, systems = 0, compared = 0;
   for (const auto& entry : std::filesystem::directory_iterator(std::string(APPELL_SOURCE_DIR) + "/data/scenes")) {
     const std::string file = entry.path().string();
     if (entry.path().extension() != ".json") continue;
     const scene_input scene = read_scene_file(file);
     ++scenes;
     if (scene.model == "rolling_sphere") ++spheres;
+    if (scene.entry->module == "system") ++systems;  // system files and URDF robots
     compared += compare_with_and_without_checks<interval>(scene, file);
     compared += compare_with_and_without_checks<double>(scene, file);
   }
-  BOOST_TEST_MESSAGE(scenes << " scenes (" << spheres << " rolling spheres), " << compared << " evaluations compared");
+  BOOST_TEST_MESSAGE(scenes << " scenes (" << spheres << " rolling spheres, " << systems << " systems or robots), " << compared
+                            << " evaluations compared");
   BOOST_TEST(scenes >= 40);
   BOOST_TEST(spheres >= 5);
+  BOOST_TEST(systems >= 10);
   BOOST_TEST(compared >= 70);
 }

@@ -80,7 +80,8 @@ struct system_model {
   /// A tree's joints: each one's wrench (forward dynamics: with the accelerations r; inverse
   /// dynamics: the efforts that give the accelerations asked for, then the wrenches).
   template <Scalar T>
-  static void add_joints(const prepared<T>& m, const vector_t<T>& udot, const vector_t<T>* efforts, evaluation<T>& e) {
+  static void add_joints(const prepared<T>& m, const vector_t<T>& udot, const vector_t<T>* efforts, evaluation<T>& e,
+                         with_checks checks) {
     const std::vector<joint_wrench_result<T>> w = joint_wrenches(m.sys, m.q, m.u, m.t, udot, efforts);
     const system_definition& d = *m.in->def;
     for (std::size_t k = 0; k < w.size(); ++k) {
@@ -90,7 +91,7 @@ struct system_model {
       e.results.push_back(detail::vector_result(j.name + "_force", w[k].force));
       e.results.push_back(detail::vector_result(j.name + "_moment", w[k].moment));
     }
-    for (std::size_t k = 0; k < w.size(); ++k) {
+    for (std::size_t k = 0; k < w.size() && checks == with_checks::yes; ++k) {
       const system_joint_definition& j = d.bodies[static_cast<std::size_t>(m.sys.links[k].body)].joint;
       if (j.type != system_joint_definition::kind::fixed)
         e.checks.push_back(detail::scalar_result(j.name + "_virtual_work", w[k].residual));
@@ -98,20 +99,23 @@ struct system_model {
   }
   /// Inverse dynamics: the efforts P - Q = M u' + b - Q (Appell's equations), per coordinate.
   template <Scalar T>
-  static evaluation<T> compute_inverse(const prepared<T>& m) {
+  static evaluation<T> compute_inverse(const prepared<T>& m, with_checks checks) {
     const expression_system<T> sys{&m.sys};
     const appell_equations<T> eq = gibbs_appell(sys, m.q, m.u, m.t);
     const vector_t<T> efforts = eq.P(m.udot) - eq.Q;
     evaluation<T> e;
-    add_joints(m, m.udot, &efforts, e);
+    add_joints(m, m.udot, &efforts, e, checks);
+    if (checks == with_checks::no) return e;
     e.checks.insert(e.checks.begin(), detail::scalar_result("virtual_work_invariant",
         virtual_work_residual(sys, eq, m.q, m.u, m.t, m.udot, vector_t<T>(vector_t<T>::Ones(sys.speeds())))));
     return e;
   }
+  /// with_checks::no: no Lagrange multipliers and no eq. (4) (system_motion's `checks`), and none
+  /// of the checks printed (the wrenches' virtual work is computed with them, and dropped).
   template <Scalar T>
-  static evaluation<T> compute(const prepared<T>& m) {
-    if (m.in->inverse_dynamics) return compute_inverse(m);
-    const system_motion_result<T> r = system_motion(m.sys, m.q, m.u, m.t);
+  static evaluation<T> compute(const prepared<T>& m, with_checks checks) {
+    if (m.in->inverse_dynamics) return compute_inverse(m, checks);
+    const system_motion_result<T> r = system_motion(m.sys, m.q, m.u, m.t, checks == with_checks::yes);
     evaluation<T> e;
     for (std::size_t j = 0; j < m.in->acceleration_names.size(); ++j)
       e.results.push_back(detail::scalar_result(m.in->acceleration_names[j], T(r.accelerations(static_cast<Eigen::Index>(j)))));
@@ -143,14 +147,16 @@ struct system_model {
         e.contacts.push_back(judged_contact(name, f[k].normal, tangential, contacts[k].mu));
       }
     }
-    if (!m.sys.links.empty()) add_joints(m, r.accelerations, static_cast<const vector_t<T>*>(nullptr), e);
-    e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
-    for (std::size_t c = 0; c < constraints.size(); ++c) {
-      const auto i = static_cast<Eigen::Index>(c);
-      e.checks.push_back(detail::scalar_result(constraints[c].name + "_cotton_minus_lagrange",
-                                               T(r.reactions(i) - r.multipliers(i))));
+    if (!m.sys.links.empty()) add_joints(m, r.accelerations, static_cast<const vector_t<T>*>(nullptr), e, checks);
+    if (checks == with_checks::yes) {
+      e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
+      for (std::size_t c = 0; c < constraints.size(); ++c) {
+        const auto i = static_cast<Eigen::Index>(c);
+        e.checks.push_back(detail::scalar_result(constraints[c].name + "_cotton_minus_lagrange",
+                                                 T(r.reactions(i) - r.multipliers(i))));
+      }
+      e.checks.insert(e.checks.end(), wrench_checks.begin(), wrench_checks.end());
     }
-    e.checks.insert(e.checks.end(), wrench_checks.begin(), wrench_checks.end());
     if (m.in->project) {  // the state certified, and how far the projection moved the given one
       using std::sqrt;
       const system_definition& d = *m.in->def;
