@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -18,6 +17,16 @@
 #include "appell/scalar/decimal.hpp"
 
 namespace appell {
+
+bool is_urdf_number(std::string_view s) {
+  // is_decimal_literal's syntax (scalar/decimal.hpp), with at most 6 exponent digits
+  if (s.size() > 200 || !is_decimal_literal(s)) return false;
+  const auto e = s.find_first_of("eE");
+  if (e == std::string_view::npos) return true;
+  std::size_t digits = s.size() - e - 1;
+  if (digits > 0 && (s[e + 1] == '+' || s[e + 1] == '-')) --digits;
+  return digits <= 6;
+}
 
 namespace {
 
@@ -28,10 +37,6 @@ std::string where(const std::string& file, const tinyxml2::XMLElement* e) {
   return s + ">";
 }
 
-bool is_decimal(const std::string& s) {
-  static const std::regex r(R"([+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]{1,6})?)");
-  return s.size() <= 200 && std::regex_match(s, r);
-}
 
 std::string attribute(const std::string& file, const tinyxml2::XMLElement* e, const char* name) {
   const char* v = e->Attribute(name);
@@ -43,7 +48,7 @@ std::string number(const std::string& file, const tinyxml2::XMLElement* e, const
   std::string v = attribute(file, e, name);
   const auto b = v.find_first_not_of(" \t\r\n"), l = v.find_last_not_of(" \t\r\n");
   v = b == std::string::npos ? "" : v.substr(b, l - b + 1);
-  if (!is_decimal(v))
+  if (!is_urdf_number(v))
     throw input_error(where(file, e) + ": " + name + "=\"" + printable(v) + "\" is not a decimal number");
   return v;
 }
@@ -60,7 +65,7 @@ std::array<std::string, 3> triple(const std::string& file, const tinyxml2::XMLEl
     throw input_error(where(file, e) + ": " + name + "=\"" + printable(v) + "\" is not three numbers");
   std::array<std::string, 3> out;
   for (std::size_t i = 0; i < 3; ++i) {
-    if (!is_decimal(parts[i]))
+    if (!is_urdf_number(parts[i]))
       throw input_error(where(file, e) + ": " + name + "=\"" + printable(v) + "\": '" + printable(parts[i]) +
                         "' is not a decimal number");
     out[i] = parts[i];

@@ -10,6 +10,7 @@
 #include <array>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "appell/io/files.hpp"
@@ -46,6 +47,12 @@ struct urdf_limits {
   static constexpr std::size_t bytes = json_limits::bytes;
   static constexpr std::size_t links = 65;  ///< 64 joints and the root link (the system model holds 64 bodies)
 };
+
+/// Whether a URDF attribute's text is a number appell takes: at most 200 characters,
+/// [+-]? (digits [. digits?] | . digits) ([eE] [+-]? 1 to 6 digits)?  (The language of the
+/// regular expression the reader used before; tests/joints.cpp holds it to std::regex on random
+/// texts.)
+bool is_urdf_number(std::string_view s);
 
 /// Parses URDF text; input_error naming the element (and its line) on anything it cannot take:
 /// not XML, not a robot, an unknown joint type, a joint whose axis is 0, a link with two

@@ -159,12 +159,57 @@ void check_bodies(const state_at_256_bits& at) {
   }
 }
 
-/// A tree's mass matrix positive definite (Cholesky with every pivot certainly positive).
+namespace {
+interval enclosure_in_doubles(const mpfi& x) {
+  mpfr_value lo, hi;
+  scalar_traits<mpfi>::to_mpfr(x, lo, hi);
+  return interval(mpfr_get_d(lo, MPFR_RNDD), mpfr_get_d(hi, MPFR_RNDU));
+}
+
+/// The mass matrix at the state proved positive definite in interval<double>: M's enclosure (the
+/// system compiled in interval, at enclosures of the 256-bit state) has a Cholesky factorization
+/// with every pivot certainly positive, which proves every symmetric matrix in the enclosure
+/// positive definite, the exact M among them.  False where it cannot tell (a singular or nearly
+/// singular M, or a state beyond double's range): then the check at 256 bits decides and names the
+/// joint.  A tenth of the 256-bit check's work, which was half of a robot's state in
+/// `appell reference` (docs/reference-values.md).
+bool tree_mass_matrix_proved_in_doubles(const state_at_256_bits& at) {
+  try {
+    const auto& [d, sys256, q256, u256, t256, bv, cv, A, a, w0] = at;
+    const evaluation_scope<interval> scope;
+    const compiled_system<interval> sys(d);
+    vector_t<interval> q(q256.size()), u(u256.size());
+    for (Eigen::Index i = 0; i < q.size(); ++i) q(i) = enclosure_in_doubles(q256(i));
+    for (Eigen::Index i = 0; i < u.size(); ++i) u(i) = enclosure_in_doubles(u256(i));
+    const appell_equations<interval> eq = gibbs_appell(expression_system<interval>{&sys}, q, u, enclosure_in_doubles(t256));
+    const int n = d.vars.speeds;
+    matrix_t<interval> L = matrix_t<interval>::Zero(n, n);
+    for (int k = 0; k < n; ++k) {
+      interval pivot = eq.M(k, k);
+      for (int j = 0; j < k; ++j) pivot -= sqr(L(k, j));
+      if (!certainly_positive(pivot)) return false;
+      L(k, k) = sqrt(pivot);
+      for (int i = k + 1; i < n; ++i) {
+        interval x = eq.M(i, k);
+        for (int j = 0; j < k; ++j) x -= L(i, j) * L(k, j);
+        L(i, k) = x / L(k, k);
+      }
+    }
+    scope.verify();
+    return true;
+  } catch (const std::exception&) {  // out of double's range, a tape undefined in doubles: 256 bits decide
+    return false;
+  }
+}
+}  // namespace
+
+/// A tree's mass matrix positive definite (Cholesky with every pivot certainly positive): proved
+/// in interval<double> where it can be, at 256 bits otherwise.
 void check_tree_mass_matrix(const state_at_256_bits& at) {
   [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv, A, a, w0] = at;
   // A tree's mass matrix positive definite: each joint moves some mass or inertia that the
   // joints before it do not (a link without inertial data at the end of a chain makes it singular).
-  if (!d.link_order.empty()) {
+  if (!d.link_order.empty() && !tree_mass_matrix_proved_in_doubles(at)) {
     const appell_equations<mpfi> eq = gibbs_appell(expression_system<mpfi>{&sys}, q, u, t);
     const int n = d.vars.speeds;
     matrix_t<mpfi> L = matrix_t<mpfi>::Zero(n, n);
