@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -201,7 +202,17 @@ urdf_robot parse_urdf(const std::string& text, const std::string& file) {
 }
 
 urdf_robot read_urdf_file(const std::string& path) {
-  return parse_urdf(read_text_file(path, urdf_limits::bytes, "the URDF file"), path);
+  // The last file parsed on this thread, kept: `appell reference` reads a "urdf" scene again for
+  // every state (the same text parses to the same robot; a refused text is not kept).
+  thread_local std::string last_path, last_text;
+  thread_local std::optional<urdf_robot> last_robot;
+  std::string text = read_text_file(path, urdf_limits::bytes, "the URDF file");
+  if (last_robot && text == last_text && path == last_path) return *last_robot;
+  urdf_robot robot = parse_urdf(text, path);
+  last_robot = robot;
+  last_text = std::move(text);
+  last_path = path;
+  return robot;
 }
 
 std::map<std::string, std::string> urdf_joint_names(const urdf_robot& robot) {

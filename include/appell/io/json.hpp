@@ -77,6 +77,8 @@ class object_reader {
   /// Throws input_error naming the first key that was never read.
   void finish() const;
   std::string path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  /// The object read (its members are marked read only through the accessors above).
+  const json_value& value() const { return *v_; }
 
  private:
   const json_value& required(const std::string& key);

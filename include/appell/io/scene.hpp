@@ -201,7 +201,8 @@ evaluation<T> compute(const prepared_scene<T>& scene, with_checks checks = with_
     for (auto& r : *group)
       for (std::size_t i = 0; i < r.values.size(); ++i) {
         scope.finish(r.values[i]);
-        require_finite(r.values[i], r.name + (r.is_vector ? "[" + std::to_string(i) + "]" : std::string()));
+        if (!is_finite(r.values[i]))  // the name made only for the message
+          require_finite(r.values[i], r.name + (r.is_vector ? "[" + std::to_string(i) + "]" : std::string()));
       }
   return e;
 }

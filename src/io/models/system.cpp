@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cctype>
 #include <functional>
+#include <optional>
 #include <set>
 
 namespace appell {
@@ -131,6 +132,10 @@ struct reading {
   std::vector<std::string> coordinates{}, speeds{};
   std::vector<std::pair<std::string, std::string>> parameter_texts{};  ///< name, text
   std::vector<std::string> link_parents{};  ///< per body: its joint's parent as written ("" the ground)
+  /// The definition read before for this scene's definition (definition_memo below); then the
+  /// builder is empty and the state's phases read this one.
+  std::shared_ptr<const system_definition> known{};
+  const system_definition& definition() const { return known ? *known : b.def; }
 };
 
 /// "rz(psi) rx(theta) rz(phi)": elementary rotations, left to right.
@@ -770,7 +775,7 @@ void read_solve_speeds(reading& R) {
 void read_state(reading& R) {
   object_reader& scene = R.scene;
   system_input& in = R.in;
-  system_definition& def = R.b.def;
+  const system_definition& def = R.definition();
   auto& coordinates = R.coordinates;
   auto& speeds = R.speeds;
   // The state.
@@ -815,7 +820,7 @@ void read_state(reading& R) {
 void read_linearization(reading& R) {
   object_reader& scene = R.scene;
   system_input& in = R.in;
-  system_definition& def = R.b.def;
+  const system_definition& def = R.definition();
   auto& coordinates = R.coordinates;
   auto& speeds = R.speeds;
   // The linearization (optional): about the state with "about" applied.  Only `linearize` reads
@@ -934,7 +939,7 @@ void read_linearization(reading& R) {
 /// Every result's name distinct.
 void check_result_names(reading& R) {
   system_input& in = R.in;
-  system_definition& def = R.b.def;
+  const system_definition& def = R.definition();
   {  // the result names must be distinct
     std::set<std::string> results(in.acceleration_names.begin(), in.acceleration_names.end());
     for (const auto& k : def.constraints)
@@ -962,24 +967,112 @@ void check_result_names(reading& R) {
 
 }  // namespace system_reading
 
+namespace {
+
+// --- the definition read once for many states -------------------------------------------------
+//
+// `appell reference` reads a scene again for every state, and a system file's definition (its
+// expressions parsed and differentiated, its links settled at 256 bits) was most of a robot's
+// state.  The last definition read on this thread is kept with the members of the scene it was
+// read from; a scene whose members other than the state's are the same JSON takes it, and only
+// the state's phases run.  The same input then reads to the same system_input (its definition
+// shared), the same refusals included: a definition is kept only once its whole scene was
+// accepted (finish() included, which the callers run next anyway), and every member it read
+// is marked read again.
+
+/// The top-level members the state's phases read (read_state, read_linearization).
+bool state_member(const std::string& key) {
+  return key == "state" || key == "accelerations" || key == "project" || key == "linearize";
+}
+
+bool same_json(const json_value& a, const json_value& b) {
+  if (a.type != b.type || a.boolean != b.boolean || a.text != b.text || a.items.size() != b.items.size() ||
+      a.members.size() != b.members.size())
+    return false;
+  for (std::size_t i = 0; i < a.items.size(); ++i)
+    if (!same_json(a.items[i], b.items[i])) return false;
+  for (std::size_t i = 0; i < a.members.size(); ++i)
+    if (a.members[i].key != b.members[i].key || !same_json(a.members[i].value, b.members[i].value)) return false;
+  return true;
+}
+
+/// The scene's members but the state's, in order.
+json_value definition_members(const json_value& scene) {
+  json_value d;
+  d.type = json_value::kind::object;
+  for (const auto& m : scene.members)
+    if (!state_member(m.key)) d.members.push_back(m);
+  return d;
+}
+
+bool same_definition(const json_value& scene, const json_value& definition) {
+  std::size_t j = 0;
+  for (const auto& m : scene.members) {
+    if (state_member(m.key)) continue;
+    if (j == definition.members.size() || definition.members[j].key != m.key ||
+        !same_json(m.value, definition.members[j].value))
+      return false;
+    ++j;
+  }
+  return j == definition.members.size();
+}
+
+struct definition_memo {
+  json_value members;  ///< the scene's members but the state's
+  system_input in;     ///< as the phases before the state left it
+  std::vector<std::string> coordinates, speeds;
+  std::vector<std::pair<std::string, std::string>> parameter_texts;
+  std::vector<std::string> link_parents;
+  std::shared_ptr<const system_definition> definition;  ///< settled
+};
+
+thread_local std::optional<definition_memo> last_definition;
+
+}  // namespace
+
 system_input system_model::read(object_reader& scene) {
   using namespace system_reading;
   reading R{scene};
-  read_names(R);
-  read_parameters(R);
-  read_kinematics(R);
-  read_gravity(R);
-  read_bodies(R);
-  read_constraints(R);
-  read_wrenches(R);
-  read_contacts(R);
-  read_solve_speeds(R);
+  const json_value& root = scene.value();
+  std::optional<definition_memo> read_now;
+  if (last_definition && same_definition(root, last_definition->members)) {
+    const definition_memo& m = *last_definition;
+    for (const auto& member : root.members)
+      if (!state_member(member.key)) (void)scene.raw(member.key);
+    R.in = m.in;
+    R.coordinates = m.coordinates;
+    R.speeds = m.speeds;
+    R.parameter_texts = m.parameter_texts;
+    R.link_parents = m.link_parents;
+    R.known = m.definition;
+  } else {
+    read_names(R);
+    read_parameters(R);
+    read_kinematics(R);
+    read_gravity(R);
+    read_bodies(R);
+    read_constraints(R);
+    read_wrenches(R);
+    read_contacts(R);
+    read_solve_speeds(R);
+    read_now = definition_memo{definition_members(root), R.in, R.coordinates, R.speeds, R.parameter_texts,
+                               R.link_parents, nullptr};
+  }
   read_state(R);
   read_linearization(R);
   check_result_names(R);
-  settle_link_axes(R.b.def);
-  R.in.def = std::make_shared<system_definition>(std::move(R.b.def));
+  if (R.known) {
+    R.in.def = R.known;
+  } else {
+    settle_link_axes(R.b.def);
+    R.in.def = std::make_shared<system_definition>(std::move(R.b.def));
+  }
   check_at_state(R.in);
+  if (read_now) {
+    scene.finish();  // what the callers check next: a definition is kept only from an accepted scene
+    read_now->definition = R.in.def;
+    last_definition = std::move(read_now);
+  }
   return std::move(R.in);
 }
 
