@@ -7,6 +7,7 @@
 #include "system_reading.hpp"
 
 #include <algorithm>
+#include <memory>
 
 namespace appell::system_reading {
 
@@ -160,6 +161,27 @@ void check_bodies(const state_at_256_bits& at) {
 }
 
 namespace {
+/// The system compiled in T (at the working precision, for mpfi) for a definition, kept on this
+/// thread for the next state of the same definition (a definition read once serves the states of
+/// `appell reference`: system.cpp): the same tapes and constants, compiled once.
+template <class T>
+const compiled_system<T>& compiled_for(const std::shared_ptr<const system_definition>& def) {
+  struct kept {
+    std::weak_ptr<const system_definition> def;
+    unsigned bits = 0;
+    std::unique_ptr<const compiled_system<T>> sys;
+  };
+  thread_local kept k;
+  const unsigned bits = mp_precision_bits();
+  if (!k.sys || k.def.lock() != def || k.bits != bits) {
+    auto sys = std::make_unique<const compiled_system<T>>(*def);
+    k.sys = std::move(sys);
+    k.def = def;
+    k.bits = bits;
+  }
+  return *k.sys;
+}
+
 interval enclosure_in_doubles(const mpfi& x) {
   mpfr_value lo, hi;
   scalar_traits<mpfi>::to_mpfr(x, lo, hi);
@@ -173,11 +195,11 @@ interval enclosure_in_doubles(const mpfi& x) {
 /// singular M, or a state beyond double's range): then the check at 256 bits decides and names the
 /// joint.  A tenth of the 256-bit check's work, which was half of a robot's state in
 /// `appell reference` (docs/reference-values.md).
-bool tree_mass_matrix_proved_in_doubles(const state_at_256_bits& at) {
+bool tree_mass_matrix_proved_in_doubles(const state_at_256_bits& at, const std::shared_ptr<const system_definition>& def) {
   try {
     const auto& [d, sys256, q256, u256, t256, bv, cv, A, a, w0] = at;
     const evaluation_scope<interval> scope;
-    const compiled_system<interval> sys(d);
+    const compiled_system<interval>& sys = compiled_for<interval>(def);
     vector_t<interval> q(q256.size()), u(u256.size());
     for (Eigen::Index i = 0; i < q.size(); ++i) q(i) = enclosure_in_doubles(q256(i));
     for (Eigen::Index i = 0; i < u.size(); ++i) u(i) = enclosure_in_doubles(u256(i));
@@ -205,11 +227,11 @@ bool tree_mass_matrix_proved_in_doubles(const state_at_256_bits& at) {
 
 /// A tree's mass matrix positive definite (Cholesky with every pivot certainly positive): proved
 /// in interval<double> where it can be, at 256 bits otherwise.
-void check_tree_mass_matrix(const state_at_256_bits& at) {
+void check_tree_mass_matrix(const state_at_256_bits& at, const std::shared_ptr<const system_definition>& def) {
   [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv, A, a, w0] = at;
   // A tree's mass matrix positive definite: each joint moves some mass or inertia that the
   // joints before it do not (a link without inertial data at the end of a chain makes it singular).
-  if (!d.link_order.empty() && !tree_mass_matrix_proved_in_doubles(at)) {
+  if (!d.link_order.empty() && !tree_mass_matrix_proved_in_doubles(at, def)) {
     const appell_equations<mpfi> eq = gibbs_appell(expression_system<mpfi>{&sys}, q, u, t);
     const int n = d.vars.speeds;
     matrix_t<mpfi> L = matrix_t<mpfi>::Zero(n, n);
@@ -373,7 +395,7 @@ void check_at_state(system_input& in) {
   // At the state, at 256 bits.
   try {
     mp_precision_scope scope(256);
-    const compiled_system<mpfi> sys(*shared);
+    const compiled_system<mpfi>& sys = compiled_for<mpfi>(shared);
     const system_definition& d = *shared;
     vector_t<mpfi> q(d.vars.coordinates), u(d.vars.speeds);
     for (int i = 0; i < d.vars.coordinates; ++i) q(i) = value<mpfi>(in.q[static_cast<std::size_t>(i)]);
@@ -414,7 +436,7 @@ void check_at_state(system_input& in) {
     }
     const state_at_256_bits at{d, sys, q, u, t, bv, cv, A, a, w0};
     check_bodies(at);
-    check_tree_mass_matrix(at);
+    check_tree_mass_matrix(at, shared);
     check_constraints_at_state(at);
     check_wrenches_fixed(at);
     check_contacts_at_state(at);
