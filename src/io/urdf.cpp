@@ -201,19 +201,25 @@ urdf_robot parse_urdf(const std::string& text, const std::string& file) {
   return robot;
 }
 
-urdf_robot read_urdf_file(const std::string& path) {
-  // The last file parsed on this thread, kept: `appell reference` reads a "urdf" scene again for
-  // every state (the same text parses to the same robot; a refused text is not kept).
-  thread_local std::string last_path, last_text;
-  thread_local std::optional<urdf_robot> last_robot;
+namespace {
+/// The last URDF file parsed on this thread, kept: `appell reference` reads a "urdf" scene again for
+/// every state (the same text parses to the same robot; a refused text is not kept).
+struct parsed_urdf_file {
+  std::string path, text;
+  urdf_robot robot;
+};
+thread_local std::optional<parsed_urdf_file> last_urdf_file;
+
+const parsed_urdf_file& parsed_urdf(const std::string& path) {
   std::string text = read_text_file(path, urdf_limits::bytes, "the URDF file");
-  if (last_robot && text == last_text && path == last_path) return *last_robot;
+  if (last_urdf_file && text == last_urdf_file->text && path == last_urdf_file->path) return *last_urdf_file;
   urdf_robot robot = parse_urdf(text, path);
-  last_robot = robot;
-  last_text = std::move(text);
-  last_path = path;
-  return robot;
+  last_urdf_file = parsed_urdf_file{path, std::move(text), std::move(robot)};
+  return *last_urdf_file;
 }
+}  // namespace
+
+urdf_robot read_urdf_file(const std::string& path) { return parsed_urdf(path).robot; }
 
 std::map<std::string, std::string> urdf_joint_names(const urdf_robot& robot) {
   static const std::set<std::string> reserved{"pi", "t", "sin", "cos", "tan", "exp", "log", "sqrt", "rx", "ry", "rz"};
@@ -318,14 +324,15 @@ namespace {
 
 /// The scene model "urdf": {"model": "urdf", "file": F, "base": "fixed", "gravity": [3],
 /// "state": {joint: {"q": x, "q_dot": y}}, "torques": {joint: x} | "accelerations": {joint: x}}.
-std::string urdf_scene_text(object_reader& scene, std::string& file) {
+/// The scene's robot (its parsed file, kept: parsed_urdf) and options, checked; `file` as written.
+const parsed_urdf_file& read_urdf_scene_options(object_reader& scene, std::string& file, urdf_scene_options& o) {
   file = scene.string("file");
   std::filesystem::path path(file);
   if (path.is_relative() && !scene_directory().empty()) path = std::filesystem::path(scene_directory()) / path;
-  const urdf_robot robot = read_urdf_file(path.string());
+  const parsed_urdf_file& parsed = parsed_urdf(path.string());
+  const urdf_robot& robot = parsed.robot;
   if (scene.has("base") && scene.string("base") != "fixed")
     throw input_error(scene.path("base") + ": only \"fixed\" is supported (the root link is the ground)");
-  urdf_scene_options o;
   const std::vector<decimal_field> g = scene.numbers("gravity", 3);
   for (std::size_t i = 0; i < 3; ++i) o.gravity[i] = g[i].text;
   std::set<std::string> moving;
@@ -365,13 +372,17 @@ std::string urdf_scene_text(object_reader& scene, std::string& file) {
       for (const auto& j : moving)
         if (!o.accelerations.count(j)) throw input_error("accelerations: joint \"" + printable(j) + "\" is missing");
   }
-  return urdf_to_system(robot, o);
+  return parsed;
+}
+
+std::string urdf_scene_text(object_reader& scene, std::string& file) {
+  urdf_scene_options o;
+  return urdf_to_system(read_urdf_scene_options(scene, file, o).robot, o);
 }
 
 /// The system file `text` read (what `appell convert` prints, appell reads); input_error
 /// naming `file` and the field otherwise.
-system_input read_as_system(const std::string& text, const std::string& file) {
-  const json_value doc = parse_json(text);
+system_input read_as_system(const json_value& doc, const std::string& file) {
   object_reader r(doc, "");
   (void)r.string("model");
   try {
@@ -383,10 +394,61 @@ system_input read_as_system(const std::string& text, const std::string& file) {
   }
 }
 
+system_input read_as_system(const std::string& text, const std::string& file) {
+  return read_as_system(parse_json(text), file);
+}
+
+/// The "state" member urdf_to_system writes (its coordinates and their rates, joint by joint, as
+/// strings), as parse_json reads it back.
+json_value system_state_member(const urdf_robot& robot, const urdf_scene_options& o) {
+  const std::map<std::string, std::string> names = urdf_joint_names(robot);
+  json_value state;
+  state.type = json_value::kind::object;
+  auto add = [&](const std::string& key, const std::string& text) {
+    json_value v;
+    v.type = json_value::kind::string;
+    v.text = text;
+    state.members.push_back({key, std::move(v)});
+  };
+  for (const auto& j : robot.joints) {
+    if (j.type == "fixed") continue;
+    const std::string& n = names.at(j.name);
+    const auto it = o.state.find(j.name);
+    add(n, it == o.state.end() ? std::string("0") : it->second.first);
+    add(n + "_dot", it == o.state.end() ? std::string("0") : it->second.second);
+  }
+  return state;
+}
+
+/// The system document of the last "urdf" scene read on this thread: a scene of the same URDF
+/// text and the same options but the state takes it with its "state" member replaced, instead of
+/// writing the system file's text and parsing it again (a third of a robot's reference state).
+struct kept_system_document {
+  std::string path, urdf_text;
+  urdf_scene_options options;  ///< its state not compared
+  json_value document;
+};
+thread_local std::optional<kept_system_document> last_system_document;
+
+bool same_but_state(const urdf_scene_options& a, const urdf_scene_options& b) {
+  return a.gravity == b.gravity && a.efforts == b.efforts && a.accelerations == b.accelerations &&
+         a.with_state == b.with_state;
+}
+
 std::shared_ptr<const model_input> read_urdf_scene(object_reader& scene) {
   std::string file;
-  const std::string text = urdf_scene_text(scene, file);
-  return std::make_shared<system_input>(read_as_system(text, file));
+  urdf_scene_options o;
+  const parsed_urdf_file& parsed = read_urdf_scene_options(scene, file, o);
+  kept_system_document* kept = last_system_document ? &*last_system_document : nullptr;
+  if (kept && kept->path == parsed.path && kept->urdf_text == parsed.text && same_but_state(kept->options, o)) {
+    for (auto& m : kept->document.members)
+      if (m.key == "state") m.value = system_state_member(parsed.robot, o);
+    return std::make_shared<system_input>(read_as_system(kept->document, file));
+  }
+  json_value document = parse_json(urdf_to_system(parsed.robot, o));
+  std::shared_ptr<const model_input> in = std::make_shared<system_input>(read_as_system(document, file));
+  last_system_document = kept_system_document{parsed.path, parsed.text, o, std::move(document)};
+  return in;
 }
 
 }  // namespace
