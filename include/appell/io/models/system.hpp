@@ -64,12 +64,33 @@ struct system_model {
     T t;
     vector_t<T> udot;  ///< inverse dynamics: the accelerations given
   };
+  /// The system compiled in T for the input's definition: a copy of the last one compiled on this
+  /// thread for the same definition at the same working precision (a definition read once serves
+  /// the states of `appell reference`: src/io/models/system.cpp), else compiled.  The copy is the
+  /// same tapes and constants (a compiled term is an index into its tape).
+  template <Scalar T>
+  static compiled_system<T> compiled(const input& in) {
+    struct kept {
+      std::weak_ptr<const system_definition> def;
+      unsigned bits = 0;
+      std::optional<compiled_system<T>> sys;
+    };
+    thread_local kept k;
+    const unsigned bits = mp_precision_bits();
+    if (!k.sys || k.def.lock() != in.def || k.bits != bits) {
+      compiled_system<T> sys(*in.def);
+      k.sys = std::move(sys);
+      k.def = in.def;
+      k.bits = bits;
+    }
+    return *k.sys;
+  }
   template <Scalar T>
   static prepared<T> prepare(const input& in) {
     vector_t<T> q(static_cast<Eigen::Index>(in.q.size())), u(static_cast<Eigen::Index>(in.u.size()));
     for (std::size_t i = 0; i < in.q.size(); ++i) q(static_cast<Eigen::Index>(i)) = value<T>(in.q[i]);
     for (std::size_t j = 0; j < in.u.size(); ++j) u(static_cast<Eigen::Index>(j)) = value<T>(in.u[j]);
-    prepared<T> p{&in, compiled_system<T>(*in.def), q, u, value<T>(in.t), vector_t<T>()};
+    prepared<T> p{&in, compiled<T>(in), q, u, value<T>(in.t), vector_t<T>()};
     if (in.inverse_dynamics) {
       p.udot.resize(static_cast<Eigen::Index>(in.udot.size()));
       for (std::size_t j = 0; j < in.udot.size(); ++j) p.udot(static_cast<Eigen::Index>(j)) = value<T>(in.udot[j]);
