@@ -5,7 +5,7 @@ packages=(g++ make cmake libeigen3-dev libboost-dev libboost-test-dev libgmp-dev
           libmpfr-dev libmpfi-dev libqd-dev nlohmann-json3-dev gnuplot-nox libbenchmark-dev
           valgrind libsimbody-dev libboost-mpi-dev libopenmpi-dev openmpi-bin libssl-dev libtinyxml2-dev dart-doc
           libdart-dev libdart-utils-urdf-dev liborocos-kdl-dev libkdl-parser-dev libmujoco-dev
-          libbullet-dev liburdfdom-dev pkg-config)
+          libbullet-dev liburdfdom-dev pkg-config ccache)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
