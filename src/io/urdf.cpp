@@ -242,6 +242,23 @@ std::map<std::string, std::string> urdf_joint_names(const urdf_robot& robot) {
   return out;
 }
 
+namespace {
+/// The entries of the system file's "state" member, in its order: each moving joint's coordinate
+/// and its rate (the options' decimal texts, "0" for a joint the options leave out).  Both
+/// writers of that member (urdf_to_system, system_state_member) take them from here.
+template <class F>
+void for_each_state_entry(const urdf_robot& robot, const std::map<std::string, std::string>& names,
+                          const urdf_scene_options& o, F&& f) {
+  for (const auto& j : robot.joints) {
+    if (j.type == "fixed") continue;
+    const std::string& n = names.at(j.name);
+    const auto it = o.state.find(j.name);
+    f(n, it == o.state.end() ? std::string("0") : it->second.first);
+    f(n + "_dot", it == o.state.end() ? std::string("0") : it->second.second);
+  }
+}
+}  // namespace
+
 std::string urdf_to_system(const urdf_robot& robot, const urdf_scene_options& o) {
   using json = nlohmann::ordered_json;
   const std::map<std::string, std::string> names = urdf_joint_names(robot);
@@ -285,13 +302,7 @@ std::string urdf_to_system(const urdf_robot& robot, const urdf_scene_options& o)
   }
   doc["bodies"] = bodies;
   json state = json::object();
-  for (const auto& j : robot.joints) {
-    if (j.type == "fixed") continue;
-    const std::string& n = names.at(j.name);
-    const auto it = o.state.find(j.name);
-    state[n] = it == o.state.end() ? std::string("0") : it->second.first;
-    state[n + "_dot"] = it == o.state.end() ? std::string("0") : it->second.second;
-  }
+  for_each_state_entry(robot, names, o, [&](const std::string& key, const std::string& text) { state[key] = text; });
   doc["state"] = state;
   if (!o.accelerations.empty()) {
     json acc = json::object();
@@ -399,24 +410,17 @@ system_input read_as_system(const std::string& text, const std::string& file) {
 }
 
 /// The "state" member urdf_to_system writes (its coordinates and their rates, joint by joint, as
-/// strings), as parse_json reads it back.
-json_value system_state_member(const urdf_robot& robot, const urdf_scene_options& o) {
-  const std::map<std::string, std::string> names = urdf_joint_names(robot);
+/// strings), as parse_json reads it back; `names` is urdf_joint_names(robot).
+json_value system_state_member(const urdf_robot& robot, const std::map<std::string, std::string>& names,
+                               const urdf_scene_options& o) {
   json_value state;
   state.type = json_value::kind::object;
-  auto add = [&](const std::string& key, const std::string& text) {
+  for_each_state_entry(robot, names, o, [&](const std::string& key, const std::string& text) {
     json_value v;
     v.type = json_value::kind::string;
     v.text = text;
     state.members.push_back({key, std::move(v)});
-  };
-  for (const auto& j : robot.joints) {
-    if (j.type == "fixed") continue;
-    const std::string& n = names.at(j.name);
-    const auto it = o.state.find(j.name);
-    add(n, it == o.state.end() ? std::string("0") : it->second.first);
-    add(n + "_dot", it == o.state.end() ? std::string("0") : it->second.second);
-  }
+  });
   return state;
 }
 
@@ -427,6 +431,7 @@ struct kept_system_document {
   std::string path, urdf_text;
   urdf_scene_options options;  ///< its state not compared
   json_value document;
+  std::map<std::string, std::string> names;  ///< urdf_joint_names of the robot
 };
 thread_local std::optional<kept_system_document> last_system_document;
 
@@ -442,12 +447,12 @@ std::shared_ptr<const model_input> read_urdf_scene(object_reader& scene) {
   kept_system_document* kept = last_system_document ? &*last_system_document : nullptr;
   if (kept && kept->path == parsed.path && kept->urdf_text == parsed.text && same_but_state(kept->options, o)) {
     for (auto& m : kept->document.members)
-      if (m.key == "state") m.value = system_state_member(parsed.robot, o);
+      if (m.key == "state") m.value = system_state_member(parsed.robot, kept->names, o);
     return std::make_shared<system_input>(read_as_system(kept->document, file));
   }
   json_value document = parse_json(urdf_to_system(parsed.robot, o));
   std::shared_ptr<const model_input> in = std::make_shared<system_input>(read_as_system(document, file));
-  last_system_document = kept_system_document{parsed.path, parsed.text, o, std::move(document)};
+  last_system_document = kept_system_document{parsed.path, parsed.text, o, std::move(document), urdf_joint_names(parsed.robot)};
   return in;
 }
 
