@@ -6,6 +6,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <deque>
+#include <mpfr.h>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -71,6 +72,11 @@ pieces_outcome run_pieces(const piece_runner& run, const piece_network& net, con
   for (int i = 0; i < threads; ++i)
     pool.emplace_back([&] {
       std::fesetround(FE_TONEAREST);  // a thread's floating-point mode is its own: start from the default
+      // MPFR keeps caches and a pool of integers per thread (the models' 256-bit checks, mpfr and
+      // mpfi pieces fill them); its manual asks a thread to free them before it ends.
+      struct mpfr_thread_caches {
+        ~mpfr_thread_caches() { mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE); }
+      } caches;
       for (;;) {
         std::string path;
         {
