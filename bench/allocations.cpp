@@ -9,12 +9,25 @@
 //   scene  scalar  allocations  bytes
 // Run: build/bench/appell_bench_allocations [SCENE.json ...]   (default: those ten)
 // Not a timing: the counts are exact and the same from run to run.
+// Where they come from: build/bench/appell_bench_allocations --sites SCENE.json SCALAR [DEPTH]
+// prints each distinct chain of DEPTH callers (default 3) above malloc with its count, most
+// first: the profile that says which function to give storage of its own next (issue "speed
+// without the heap", point 1).  Frames inlined into their caller do not appear; names come from
+// the program's dynamic symbols (linked with -rdynamic).
+#include <cxxabi.h>
+#include <dlfcn.h>
+#include <execinfo.h>
+
+#include <algorithm>
 #include <cstddef>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/scene.hpp"
 
 // glibc's own allocator under the names it exports for this purpose ("Replacing malloc", the
@@ -30,11 +43,37 @@ void __libc_free(void*);
 namespace {
 thread_local bool counting = false;
 thread_local long allocations = 0, bytes = 0;
+// --sites: the return addresses above each counted call, kept in a fixed array (no allocation
+// while counting); `inside` keeps backtrace's own first allocation out.
+constexpr int max_frames = 16, max_records = 1 << 16;
+struct record {
+  void* frames[max_frames];
+  int n;
+};
+bool recording = false, inside = false;
+record records[max_records];
+int recorded = 0;
 void count(std::size_t n) {
   if (counting) {
     ++allocations;
     bytes += static_cast<long>(n);
+    if (recording && !inside && recorded < max_records) {
+      inside = true;
+      records[recorded].n = backtrace(records[recorded].frames, max_frames);
+      ++recorded;
+      inside = false;
+    }
   }
+}
+std::string frame_name(void* address) {
+  Dl_info info;
+  if (!dladdr(address, &info) || !info.dli_sname) return "?";
+  int status = 0;
+  char* demangled = abi::__cxa_demangle(info.dli_sname, nullptr, nullptr, &status);
+  std::string name = status == 0 && demangled ? demangled : info.dli_sname;
+  std::free(demangled);
+  if (name.size() > 150) name = name.substr(0, 147) + "...";
+  return name;
 }
 }  // namespace
 
@@ -56,14 +95,54 @@ void free(void* p) noexcept { __libc_free(p); }
 
 using namespace appell;
 
+/// --sites: one compute<T>() of SCENE in SCALAR, its allocations grouped by their callers.
+int sites(const std::string& file, const std::string& scalar, int depth) {
+  void* warm[2];
+  (void)backtrace(warm, 2);  // loads what backtrace needs before counting
+  const scene_input scene = read_scene_file(file);
+  const bool mp = scalar == "mpfr" || scalar == "mpfi";
+  with_scalar(scalar, mp ? std::optional<unsigned>(256) : std::nullopt, [&]<class T>(std::type_identity<T>) {
+    const prepared_scene<T> prepared = prepare<T>(scene);
+    (void)compute<T>(prepared);
+    allocations = bytes = 0;
+    recording = counting = true;
+    const evaluation<T> e = compute<T>(prepared);
+    recording = counting = false;
+    return e.results.size();
+  });
+  std::map<std::vector<std::string>, int> chains;
+  for (int i = 0; i < recorded; ++i) {
+    std::vector<std::string> chain;
+    // frames 0 and 1: count() and the replaced malloc; then the allocator's own callers
+    for (int k = 2; k < records[i].n && static_cast<int>(chain.size()) < depth; ++k) {
+      std::string name = frame_name(records[i].frames[k]);
+      const bool allocator = name.find("operator new") != std::string::npos || name.find("allocate") != std::string::npos ||
+                             name.find("aligned_malloc") != std::string::npos || name == "?";
+      if (!allocator || !chain.empty()) chain.push_back(std::move(name));
+    }
+    ++chains[chain];
+  }
+  std::vector<std::pair<int, std::vector<std::string>>> sorted;
+  for (auto& [chain, n] : chains) sorted.emplace_back(n, chain);
+  std::stable_sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::printf("%s in %s: %ld allocations, %ld bytes, in one compute\n", file.c_str(), scalar.c_str(), allocations, bytes);
+  for (const auto& [n, chain] : sorted) {
+    std::printf("%6d  %s\n", n, chain.empty() ? "?" : chain[0].c_str());
+    for (std::size_t k = 1; k < chain.size(); ++k) std::printf("          <- %s\n", chain[k].c_str());
+  }
+  return 0;
+}
+
 int main(int argc, char** argv) {
+  if (argc >= 4 && std::string(argv[1]) == "--sites")
+    return sites(argv[2], argv[3], argc >= 5 ? std::max(1, std::atoi(argv[4])) : 3);
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) files.emplace_back(argv[i]);
   if (files.empty())
     for (const char* f : {"euler_body.json", "rolling_sphere_plane.json", "rolling_sphere_bowl.json", "top_on_cone.json",
                           "heavy_top.json", "system_euler_body.json", "system_rolling_sphere_bowl.json",
                           "system_top_on_cone.json", "system_whipple_bicycle.json", "urdf_kr5.json"})
-      files.push_back(std::string(APPELL_SOURCE_DIR "/data/scenes/") + f);
+      files.push_back(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + f);
   std::printf("%-34s %-12s %12s %12s\n", "scene", "scalar", "allocations", "bytes");
   for (const std::string& file : files) {
     const scene_input scene = read_scene_file(file);

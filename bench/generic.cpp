@@ -21,6 +21,7 @@
 #include <random>
 #include <set>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/models/euler_body.hpp"
 #include "appell/io/models/rolling_sphere.hpp"
 #include "appell/io/models/top_on_cone.hpp"
@@ -36,7 +37,7 @@ const char* const scenes[] = {"euler_body.json", "rolling_sphere_plane.json", "r
                               "top_on_cone.json"};
 const char* const scalars[] = {"double", "interval"};
 
-scene_input load(const std::string& file) { return read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file); }
+scene_input load(const std::string& file) { return read_scene_file(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file); }
 
 /// Runs `f(prepared model inputs)` for the scene's model in T.
 template <Scalar T, class F>

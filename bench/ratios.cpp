@@ -16,6 +16,7 @@
 #include <map>
 #include <set>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/scene.hpp"
 #include "median_reporter.hpp"
 
@@ -30,7 +31,7 @@ const char* const scenes[] = {"euler_body.json",           "top_on_cone.json",  
 
 void bench_scene(benchmark::State& state, const std::string& scalar, std::optional<unsigned> bits, const char* file) {
   with_scalar(scalar, bits, [&]<class T>(std::type_identity<T>) {
-    const scene_input scene = read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
+    const scene_input scene = read_scene_file(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file);
     const prepared_scene<T> prepared = prepare<T>(scene);
     for (auto _ : state) benchmark::DoNotOptimize(compute<T>(prepared));
     return 0;

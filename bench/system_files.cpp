@@ -11,6 +11,7 @@
 #include <iomanip>
 #include <iostream>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/models/system.hpp"
 #include "appell/io/scene.hpp"
 #include "median_reporter.hpp"
@@ -28,7 +29,7 @@ const std::pair<const char*, const char*> pairs[] = {
 const char* const scalars[] = {"double", "interval"};
 
 void bench(benchmark::State& state, std::string scalar, std::string file) {
-  const scene_input scene = read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
+  const scene_input scene = read_scene_file(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file);
   with_scalar(scalar, std::nullopt, [&]<class T>(std::type_identity<T>) {
     const prepared_scene<T> prepared = prepare<T>(scene);
     for (auto _ : state) benchmark::DoNotOptimize(compute<T>(prepared));
@@ -38,7 +39,7 @@ void bench(benchmark::State& state, std::string scalar, std::string file) {
 
 // linearize_scene<T> of the bicycle: the matrices, 11 spectra and the critical speeds.
 void bench_linearize(benchmark::State& state, std::string scalar, std::optional<unsigned> bits) {
-  const scene_input scene = read_scene_file(APPELL_SOURCE_DIR "/data/scenes/system_whipple_bicycle.json");
+  const scene_input scene = read_scene_file(APPELL_SOURCE_DIR + "/data/scenes/system_whipple_bicycle.json");
   const system_input& in = scene.as<system_input>();
   with_scalar(scalar, bits, [&]<class T>(std::type_identity<T>) {
     for (auto _ : state) benchmark::DoNotOptimize(linearize_scene<T>(in));

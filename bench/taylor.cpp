@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/models/rolling_sphere.hpp"
 #include "appell/io/models/top_on_cone.hpp"
 #include "appell/io/scene.hpp"
@@ -23,7 +24,7 @@ using namespace appell;
 namespace {
 
 scene_input scene_file(const std::string& file) {
-  return read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
+  return read_scene_file(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file);
 }
 
 template <class P, class S>

@@ -13,6 +13,7 @@
 #include <iomanip>
 #include <iostream>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/scene.hpp"
 #include "median_reporter.hpp"
 
@@ -64,7 +65,7 @@ void bench_chain(benchmark::State& state, std::string scalar, int n) {
 }
 
 void bench(benchmark::State& state, std::string scalar, std::optional<unsigned> bits, std::string file) {
-  const scene_input scene = read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
+  const scene_input scene = read_scene_file(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file);
   with_scalar(scalar, bits, [&]<class T>(std::type_identity<T>) {
     const prepared_scene<T> prepared = prepare<T>(scene);
     for (auto _ : state) benchmark::DoNotOptimize(compute<T>(prepared));

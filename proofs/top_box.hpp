@@ -7,6 +7,7 @@
 
 #include <functional>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/models/top_on_cone.hpp"
 
 namespace appell::proof {
@@ -20,7 +21,7 @@ struct top_box_result {
 };
 
 inline void for_each_sub_box(int splits, const std::function<void(const top_box_result&)>& visit) {
-  const scene_input s = read_scene_file(APPELL_SOURCE_DIR "/data/scenes/top_on_cone.json");
+  const scene_input s = read_scene_file(APPELL_SOURCE_DIR + "/data/scenes/top_on_cone.json");
   const auto& in = s.as<top_on_cone_input>();
   using T = interval;
   const heavy_top<T> top{value<T>(in.A), value<T>(in.C), value<T>(in.mass), value<T>(in.l), value<T>(in.gravity)};

@@ -16,6 +16,7 @@
 #include <random>
 #include <sstream>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "proof.hpp"
 #include "top_box.hpp"
 #include "top_rational.hpp"
@@ -73,7 +74,7 @@ int main() {
     exact += ok;
   }
   v.note("part 1: " + std::to_string(exact) + "/400 rational states, all four identities exact");
-  const scene_input s = read_scene_file(APPELL_SOURCE_DIR "/data/scenes/top_on_cone.json");
+  const scene_input s = read_scene_file(APPELL_SOURCE_DIR + "/data/scenes/top_on_cone.json");
   const auto& in = s.as<top_on_cone_input>();
   using T = interval;
   const T Ai = value<T>(in.A), Ci = value<T>(in.C), mi = value<T>(in.mass), li = value<T>(in.l), gi = value<T>(in.gravity);

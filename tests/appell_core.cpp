@@ -8,6 +8,7 @@
 #include <optional>
 #include <random>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/derivatives/jet.hpp"
 #include "appell/dynamics/speeds.hpp"
 #include "appell/io/scene.hpp"

@@ -18,6 +18,7 @@
 #include <sstream>
 #include <string>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/json.hpp"
 #include "appell/ode/closed_forms.hpp"
 #include "appell/scalar/standard_scalars.hpp"
@@ -53,7 +54,7 @@ std::string scene_file(const std::string& name, const std::string& json) {
   return path.string();
 }
 
-const std::string good_scene = APPELL_SOURCE_DIR "/data/scenes/euler_body.json";
+const std::string good_scene = APPELL_SOURCE_DIR + "/data/scenes/euler_body.json";
 
 std::string euler(const std::string& inertia, const std::string& torque, const std::string& state) {
   return "{\"model\": \"euler_body\", \"inertia\": " + inertia + ", \"torque\": " + torque +
@@ -164,7 +165,7 @@ const std::string good_top = "\"A\": \"0.08\", \"C\": \"0.02\", \"mass\": \"1.5\
 BOOST_AUTO_TEST_CASE(top_on_cone_in_every_scalar) {
   for (const char* file : {"top_on_cone.json", "top_on_cone_constant.json", "top_on_cone_steep.json"})
     for (const char* s : {"double", "long-double", "dd", "float128", "mpfr", "interval", "mpfi"}) {
-      const outcome o = run(std::string("eval " APPELL_SOURCE_DIR "/data/scenes/") + file + " --scalar " + s);
+      const outcome o = run(std::string("eval " + APPELL_SOURCE_DIR + "/data/scenes/") + file + " --scalar " + s);
       BOOST_TEST(o.status == 0, file << " " << s << ": " << o.err);
       for (const char* key : {"theta_ddot", "phi_ddot", "psi_ddot", "\"H\"", "couple", "virtual_work_invariant",
                               "cotton_minus_lagrange"})
@@ -204,7 +205,7 @@ BOOST_AUTO_TEST_CASE(rolling_sphere_in_every_scalar) {
   for (const char* file : {"rolling_sphere_plane.json", "rolling_sphere_globe.json", "rolling_sphere_bowl.json",
                            "rolling_sphere_pipe.json", "rolling_sphere_tube.json"})
     for (const char* s : {"double", "long-double", "dd", "float128", "mpfr", "interval", "mpfi"}) {
-      const outcome o = run(std::string("eval " APPELL_SOURCE_DIR "/data/scenes/") + file + " --scalar " + s);
+      const outcome o = run(std::string("eval " + APPELL_SOURCE_DIR + "/data/scenes/") + file + " --scalar " + s);
       BOOST_TEST(o.status == 0, file << " " << s << ": " << o.err);
       for (const char* key : {"center_ddot", "omega_dot", "contact_force", "normal_force", "tangential_force",
                               "pivot_couple", "friction_ratio", "virtual_work_invariant"})
@@ -251,7 +252,7 @@ BOOST_AUTO_TEST_CASE(bad_command_lines_exit_2_with_one_line) {
                                       "simulate " + good_scene + " --scalar mpfr --t-end 1 --out " + (work / "bits").string(),
                                       "reference " + good_scene + " --scalar mpfi --n 1 --out " + (work / "bits").string()})
       expect_bad_input(command + " --bits '" + std::string(bits) + "'", "--bits");
-  expect_bad_input("eval " + std::string(APPELL_SOURCE_DIR "/data/scenes"), "is a directory");
+  expect_bad_input("eval " + std::string(APPELL_SOURCE_DIR + "/data/scenes"), "is a directory");
   expect_bad_input("eval /dev/null", "/dev/null: empty");
   // reference reads its scene under eval's size guard: /dev/zero is refused, not read forever
   expect_bad_input("reference /dev/zero --states /dev/zero --out " + (work / "zero").string(), "larger than the limit");
@@ -280,7 +281,7 @@ BOOST_AUTO_TEST_CASE(bad_command_lines_exit_2_with_one_line) {
 // appell linearize: every scalar, JSON that parses, the weave speed inside the interval
 // enclosure; bad scenes and command lines exit 2 with one line.
 BOOST_AUTO_TEST_CASE(linearize_the_bicycle_in_every_scalar) {
-  const std::string bike = APPELL_SOURCE_DIR "/data/scenes/system_whipple_bicycle.json";
+  const std::string bike = APPELL_SOURCE_DIR + "/data/scenes/system_whipple_bicycle.json";
   for (const char* scalar : {"double", "long-double", "dd", "float128", "mpfr", "interval", "mpfi"}) {
     const outcome o = run("linearize " + bike + " --scalar " + scalar);
     BOOST_TEST_REQUIRE(o.status == 0, scalar << ": exit " << o.status << " " << o.err);
@@ -296,7 +297,7 @@ BOOST_AUTO_TEST_CASE(linearize_the_bicycle_in_every_scalar) {
   BOOST_TEST(text.out.find("weave-like): v = [4.29238253") != std::string::npos, text.out);
   BOOST_TEST(text.out.find("capsize-like): v = [6.02426201") != std::string::npos, text.out);
   expect_bad_input("linearize " + good_scene, "linearize needs a system file");
-  expect_bad_input("linearize " + std::string(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk.json"),
+  expect_bad_input("linearize " + std::string(APPELL_SOURCE_DIR + "/data/scenes/system_rolling_disk.json"),
                    "no \"linearize\" section");
   expect_bad_input("linearize " + bike + " --format xml", "--format");
   expect_bad_input("linearize " + bike + " --scalar double --bits 64", "--bits");
@@ -513,7 +514,7 @@ BOOST_AUTO_TEST_CASE(reference_takes_engine_inputs_as_binary64_and_marks_refused
                                        "ok,0,0.7,0.3,1.5,1.2,40\n"
                                        "vertical,0,0,0,1,1,1\n"
                                        "ok2,0.1,1.2,0,-2,0.5,20\n");
-  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/heavy_top.json";
+  const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/heavy_top.json";
   const std::string out = (work / "ref_top").string();
   const outcome o = run("reference " + scene + " --states " + states + " --scalar mpfi --out " + out + " --inputs binary64");
   BOOST_TEST(o.status == 3, o.err);  // one state refused: the run goes on, the status says so
@@ -586,7 +587,7 @@ BOOST_AUTO_TEST_CASE(reference_and_score_refuse_bad_files_naming_line_and_column
 }
 
 BOOST_AUTO_TEST_CASE(reference_draws_states_in_a_box_reproducibly) {
-  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/heavy_top.json";
+  const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/heavy_top.json";
   const std::string box = "\"theta=0.2:2.9,phi_dot=-60:60,psi_dot=-5:5\"";
   const std::string a = (work / "box_a").string(), b = (work / "box_b").string(), c = (work / "box_c").string();
   BOOST_TEST_REQUIRE(run("reference " + scene + " --box " + box + " --n 300 --seed 9 --out " + a).status == 0);
@@ -637,7 +638,7 @@ BOOST_AUTO_TEST_CASE(eval_and_reference_echo_the_derived_state) {
   };
   // The bowl: c = (0.54, 0, -0.72), |c| = 0.9, inside: n = -c/|c| = (-0.6, 0, 0.8), a = 0.1:
   // contact point c - a n = (0.6, 0, -0.8); omega = (0, 2, 0): v_G = omega x a n = (0.16, 0, 0.12).
-  const outcome bowl = run(std::string("eval ") + APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_bowl.json --scalar interval");
+  const outcome bowl = run(std::string("eval ") + APPELL_SOURCE_DIR + "/data/scenes/rolling_sphere_bowl.json --scalar interval");
   BOOST_TEST_REQUIRE(bowl.status == 0, bowl.err);
   const json_value b = parse_json(bowl.out);
   const json_value* derived = b.find("derived");
@@ -650,7 +651,7 @@ BOOST_AUTO_TEST_CASE(eval_and_reference_echo_the_derived_state) {
                  names[k] << "[" << i << "]");
   // The cone psi = 0.5 theta + 0.1 sin(2 theta) at theta = 0.7, theta' = 1.2:
   // psi = 0.35 + 0.1 sin 1.4, psi' = (0.5 + 0.2 cos 1.4) 1.2, here at 320 bits.
-  const outcome cone = run(std::string("eval ") + APPELL_SOURCE_DIR "/data/scenes/top_on_cone.json --scalar mpfi --bits 113");
+  const outcome cone = run(std::string("eval ") + APPELL_SOURCE_DIR + "/data/scenes/top_on_cone.json --scalar mpfi --bits 113");
   BOOST_TEST_REQUIRE(cone.status == 0, cone.err);
   const json_value c = parse_json(cone.out);
   mpfr_value x(320), psi(320), psid(320);
@@ -678,7 +679,7 @@ BOOST_AUTO_TEST_CASE(eval_and_reference_echo_the_derived_state) {
   // reference echoes them under "derived" in its JSON Lines (and as rows of its CSV)
   const std::string out = (work / "ref_derived").string();
   const std::string states = text_file("bowl_states.csv", "center[0],center[1],center[2],omega[0],omega[1],omega[2]\n0.54,0,-0.72,0,2,0\n");
-  BOOST_TEST_REQUIRE(run(std::string("reference ") + APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_bowl.json --states " + states +
+  BOOST_TEST_REQUIRE(run(std::string("reference ") + APPELL_SOURCE_DIR + "/data/scenes/rolling_sphere_bowl.json --states " + states +
                          " --scalar mpfi --out " + out).status == 0);
   const json_value line = parse_json(slurp(out + "/reference.jsonl"));
   BOOST_TEST(line.find("derived")->find("contact_point[0]") != nullptr);
@@ -832,7 +833,7 @@ BOOST_AUTO_TEST_CASE(reference_projects_system_states_onto_the_constraints) {
 
 BOOST_AUTO_TEST_CASE(simulate_and_enclose_refuse_bad_input_naming_the_flag) {
   const std::string out = (work / "motion_bad").string();
-  const std::string top = APPELL_SOURCE_DIR "/data/scenes/heavy_top.json";
+  const std::string top = APPELL_SOURCE_DIR + "/data/scenes/heavy_top.json";
   expect_bad_input("simulate " + good_scene + " --t-end -1 --out " + out, "--t-end");
   expect_bad_input("simulate " + good_scene + " --t-end 0 --out " + out, "--t-end");
   expect_bad_input("simulate " + good_scene + " --t-end ten --out " + out, "--t-end");
@@ -908,7 +909,7 @@ BOOST_AUTO_TEST_CASE(simulate_and_enclose_write_their_files_whole) {
   // Whole or not at all: a run killed on its way (SIGKILL after 1 s, long before its end) into
   // the same folder leaves the files of the run before it byte for byte as they were.
   const std::string steps = slurp(enc + "/steps.csv"), done = slurp(enc + "/summary.json");
-  const int killed = std::system(("timeout -s KILL 1 " APPELL_BINARY " enclose " APPELL_SOURCE_DIR
+  const int killed = std::system(("timeout -s KILL 1 " + APPELL_BINARY + " enclose " + APPELL_SOURCE_DIR +
                                   "/data/scenes/heavy_top.json --t-end 100000 --quiet --out " + enc + " >/dev/null 2>&1").c_str());
   BOOST_TEST((WIFEXITED(killed) && WEXITSTATUS(killed) == 137), "the run was not killed: " << killed);
   BOOST_TEST(slurp(enc + "/steps.csv") == steps);
@@ -937,7 +938,7 @@ BOOST_AUTO_TEST_CASE(every_plot_is_written_whole_or_said_missing) {
   BOOST_TEST(is_png(with + "/drift.png"), b.out);
   no_temporary(with);
   std::filesystem::create_directories(without);
-  const std::string cmd = "env PATH=" + without + " " APPELL_BINARY " enclose " + good_scene + " --t-end 1 --quiet --out " +
+  const std::string cmd = "env PATH=" + without + " " + APPELL_BINARY + " enclose " + good_scene + " --t-end 1 --quiet --out " +
                           without + " >" + without + "/../plot_stdout 2>&1";
   const int raw = std::system(cmd.c_str());
   BOOST_TEST((WIFEXITED(raw) && WEXITSTATUS(raw) == 0));
@@ -951,7 +952,7 @@ BOOST_AUTO_TEST_CASE(every_plot_is_written_whole_or_said_missing) {
 BOOST_AUTO_TEST_CASE(horizon_refuses_bad_input_and_meets_the_closed_form) {
   const std::string out = (work / "horizon").string();
   std::filesystem::remove_all(out);  // a run before this one wrote there
-  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/euler_body_horizon.json";
+  const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/euler_body_horizon.json";
   expect_bad_input("horizon " + scene + " --t-end -1 --out " + out, "--t-end");
   expect_bad_input("horizon " + scene + " --out " + out, "--t-end");
   expect_bad_input("horizon " + scene + " --t-end 10 --every 11 --out " + out, "--every");
@@ -986,7 +987,7 @@ BOOST_AUTO_TEST_CASE(horizon_refuses_bad_input_and_meets_the_closed_form) {
 BOOST_AUTO_TEST_CASE(horizon_takes_the_reference_settings_and_a_period_where_the_model_knows_none) {
   const std::string out = (work / "horizon_settings").string();
   std::filesystem::remove_all(out);
-  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/top_on_cone.json";
+  const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/top_on_cone.json";
   // each flag with a value out of its range (order 2 to 60, tolerance in (0, 1), period > 0)
   for (const auto& [flag, value] : std::vector<std::pair<std::string, std::string>>{
            {"--reference-order", "61"}, {"--reference-order", "1"}, {"--reference-tol", "1"},
@@ -1030,7 +1031,7 @@ BOOST_AUTO_TEST_CASE(reference_along_a_trajectory_takes_the_states_of_the_motion
   // within 1e-15 at every t.
   const std::string out = (work / "ref_trajectory").string();
   std::filesystem::remove_all(out);
-  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/euler_body_horizon.json";
+  const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/euler_body_horizon.json";
   const outcome r = run("reference " + scene + " --trajectory 10 --every 1 --scalar mpfi --bits 113 --out " + out);
   BOOST_TEST_REQUIRE(r.status == 0, r.err);
   const appell::ode::euler_free_body_solution<long double> truth(1.0L, 2.0L, 3.0L, 1.0L, 1.0L);
@@ -1052,7 +1053,7 @@ BOOST_AUTO_TEST_CASE(reference_along_a_trajectory_takes_the_states_of_the_motion
   }
   BOOST_TEST(n == 11);
   // A constrained system without solve_speeds: its states could not name the speeds they leave out.
-  expect_bad_input("reference " + std::string(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk.json") +
+  expect_bad_input("reference " + std::string(APPELL_SOURCE_DIR + "/data/scenes/system_rolling_disk.json") +
                        " --trajectory 2 --every 0.5 --out " + out, "solve_speeds");
   expect_bad_input("reference " + scene + " --trajectory 2 --out " + out, "--every");
   expect_bad_input("reference " + scene + " --trajectory 2 --every 3 --out " + out, "--every");
@@ -1102,8 +1103,8 @@ BOOST_AUTO_TEST_CASE(system_files_move_as_their_dedicated_models) {
        {{"theta", "theta"}, {"phi", "phi"}, {"theta_dot", "theta_dot"}, {"phi_dot", "phi_dot"}}}};
   for (const auto& p : pairs) {
     const std::string a = (work / ("pair_model_" + p.model)).string(), b = (work / ("pair_system_" + p.system)).string();
-    const outcome ra = run("enclose " APPELL_SOURCE_DIR "/data/scenes/" + p.model + " --t-end " + p.T + " --quiet --out " + a);
-    const outcome rb = run("enclose " APPELL_SOURCE_DIR "/data/scenes/" + p.system + " --t-end " + p.T + " --quiet --out " + b);
+    const outcome ra = run("enclose " + APPELL_SOURCE_DIR + "/data/scenes/" + p.model + " --t-end " + p.T + " --quiet --out " + a);
+    const outcome rb = run("enclose " + APPELL_SOURCE_DIR + "/data/scenes/" + p.system + " --t-end " + p.T + " --quiet --out " + b);
     BOOST_TEST_REQUIRE(ra.status == 0, ra.err);
     BOOST_TEST_REQUIRE(rb.status == 0, rb.err);
     const auto ea = last_step(a), eb = last_step(b);
@@ -1115,7 +1116,7 @@ BOOST_AUTO_TEST_CASE(system_files_move_as_their_dedicated_models) {
                          << eb.at(cb + "_lo") << ", " << eb.at(cb + "_hi") << "]");
     }
   }
-  std::string mutated = slurp(APPELL_SOURCE_DIR "/data/scenes/system_heavy_top.json");
+  std::string mutated = slurp(APPELL_SOURCE_DIR + "/data/scenes/system_heavy_top.json");
   mutated.replace(mutated.find("\"l\": \"0.2\""), 10, "\"l\": \"0.21\"");
   // the state's x, y, z follow l: the pivot's constraints are refused unless projected
   mutated.replace(mutated.find("\"state\": {"), 10, "\"project\": \"1\", \"state\": {");
@@ -1127,7 +1128,7 @@ BOOST_AUTO_TEST_CASE(system_files_move_as_their_dedicated_models) {
 }
 
 BOOST_AUTO_TEST_CASE(a_system_file_moves_with_its_reactions_and_invariants) {
-  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/system_chaplygin_sleigh.json";
+  const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/system_chaplygin_sleigh.json";
   const std::string e = (work / "sleigh_enclose").string(), s = (work / "sleigh_simulate").string();
   std::filesystem::remove_all(e);
   std::filesystem::remove_all(s);
@@ -1145,7 +1146,7 @@ BOOST_AUTO_TEST_CASE(a_system_file_moves_with_its_reactions_and_invariants) {
   const std::string summary = slurp(s + "/summary.json");
   BOOST_TEST(summary.find("\"energy\"") != std::string::npos);
   // a holonomic constraint's drift is reported as the largest |residual| (the bead's wire)
-  const outcome rw = run("simulate " APPELL_SOURCE_DIR "/data/scenes/system_bead_on_rotating_wire.json --t-end 1 --quiet --out " + s + "_wire");
+  const outcome rw = run("simulate " + APPELL_SOURCE_DIR + "/data/scenes/system_bead_on_rotating_wire.json --t-end 1 --quiet --out " + s + "_wire");
   BOOST_TEST_REQUIRE(rw.status == 0, rw.err);
   const std::string ws = slurp(s + "_wire/summary.json");
   BOOST_TEST(ws.find("\"wire_residual\"") != std::string::npos);
@@ -1187,7 +1188,7 @@ BOOST_AUTO_TEST_CASE(long_runs_are_bounded_in_their_steps_and_in_time) {
   // with that reason and its files.
   const std::string out = (work / "plane_1e300").string();
   std::filesystem::remove_all(out);
-  const outcome r = run("enclose " APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_plane.json --scalar mpfi --bits 64 --t-end 1e300 --quiet --out " + out);
+  const outcome r = run("enclose " + APPELL_SOURCE_DIR + "/data/scenes/rolling_sphere_plane.json --scalar mpfi --bits 64 --t-end 1e300 --quiet --out " + out);
   BOOST_TEST(r.status == 3, r.out << r.err);
   const std::string summary = slurp(out + "/summary.json");
   BOOST_TEST(summary.find("\"reason\": \"width blow-up at t = ") != std::string::npos, summary);
@@ -1195,7 +1196,7 @@ BOOST_AUTO_TEST_CASE(long_runs_are_bounded_in_their_steps_and_in_time) {
   // In interval<double> the state leaves double's range on the way: exit 3, its reason, its files.
   const std::string out_d = (work / "plane_1e300_interval").string();
   std::filesystem::remove_all(out_d);
-  const outcome rd = run("enclose " APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_plane.json --t-end 1e300 --quiet --out " + out_d);
+  const outcome rd = run("enclose " + APPELL_SOURCE_DIR + "/data/scenes/rolling_sphere_plane.json --t-end 1e300 --quiet --out " + out_d);
   BOOST_TEST(rd.status == 3, rd.out << rd.err);
   BOOST_TEST(rd.out.find("INCOMPLETE") != std::string::npos, rd.out);
   BOOST_TEST(csv_rows(out_d + "/steps.csv").size() > 2u);
@@ -1206,7 +1207,7 @@ BOOST_AUTO_TEST_CASE(long_runs_are_bounded_in_their_steps_and_in_time) {
     // simulate without --quiet: from 1 s on, the progress line estimates the time left
     const bool quiet = command == "enclose";
     const std::string limit = quiet ? "0.5" : "1.7";
-    const outcome m = run(command + " " APPELL_SOURCE_DIR "/data/scenes/heavy_top.json --t-end 100000 --max-seconds " + limit +
+    const outcome m = run(command + " " + APPELL_SOURCE_DIR + "/data/scenes/heavy_top.json --t-end 100000 --max-seconds " + limit +
                           (quiet ? " --quiet" : "") + " --out " + dir);
     BOOST_TEST(m.status == 3, command << ": exit " << m.status << " " << m.err);
     const std::string ms = slurp(dir + "/summary.json");
@@ -1214,7 +1215,7 @@ BOOST_AUTO_TEST_CASE(long_runs_are_bounded_in_their_steps_and_in_time) {
     BOOST_TEST(ms.find("--max-seconds " + limit + " reached at t = ") != std::string::npos, command << ": " << ms);
     if (!quiet) BOOST_TEST(m.err.find(" left") != std::string::npos, command << ": no estimate of the time left: " << m.err);
     BOOST_TEST(csv_rows(dir + (command == "simulate" ? "/trajectory.csv" : "/steps.csv")).size() > 1u);
-    expect_bad_input(command + " " APPELL_SOURCE_DIR "/data/scenes/heavy_top.json --t-end 1 --max-seconds -1 --out " + dir,
+    expect_bad_input(command + " " + APPELL_SOURCE_DIR + "/data/scenes/heavy_top.json --t-end 1 --max-seconds -1 --out " + dir,
                      "--max-seconds");
   }
 }
@@ -1222,7 +1223,7 @@ BOOST_AUTO_TEST_CASE(long_runs_are_bounded_in_their_steps_and_in_time) {
 BOOST_AUTO_TEST_CASE(no_command_prints_a_number_that_is_not_one) {
   // linearize: a reference speed that is not 0 but is 0 in the scalar (it underflows) is bad
   // input naming the field; in mpfr its exponent range holds it and the report is finite.
-  std::string bicycle = slurp(APPELL_SOURCE_DIR "/data/scenes/system_whipple_bicycle.json");
+  std::string bicycle = slurp(APPELL_SOURCE_DIR + "/data/scenes/system_whipple_bicycle.json");
   const std::string five = R"js("xP_dot": "5")js";
   const std::size_t at = bicycle.find(five, bicycle.find("\"about\""));
   BOOST_TEST_REQUIRE(at != std::string::npos);
@@ -1236,7 +1237,7 @@ BOOST_AUTO_TEST_CASE(no_command_prints_a_number_that_is_not_one) {
   BOOST_TEST(wide.out.find("inf") == std::string::npos);
   // error_amplification of a point result near 1e999999 (in mpfr's range, not double's): measured
   // in mpfi at 53 bits, a finite number, never inf
-  std::string top = slurp(APPELL_SOURCE_DIR "/data/scenes/system_heavy_top.json");
+  std::string top = slurp(APPELL_SOURCE_DIR + "/data/scenes/system_heavy_top.json");
   const std::size_t g = top.find("\"g\": \"");
   BOOST_TEST_REQUIRE(g != std::string::npos);
   top.replace(g, top.find('"', g + 6) - g + 1, R"js("g": "1e999999")js");

@@ -36,6 +36,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/models/rolling_sphere_motion.hpp"
 #include "appell/io/models/system_motion.hpp"
 #include "appell/io/scene.hpp"
@@ -55,7 +56,7 @@ std::string slurp(const std::string& path) {
   s << f.rdbuf();
   return s.str();
 }
-std::string scene_text(const std::string& file) { return slurp(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file); }
+std::string scene_text(const std::string& file) { return slurp(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file); }
 std::string replaced(std::string s, const std::string& from, const std::string& to) {
   const auto at = s.find(from);
   BOOST_TEST_REQUIRE(at != std::string::npos, "'" << from << "' not in the scene");
@@ -314,7 +315,7 @@ BOOST_AUTO_TEST_CASE(a_sphere_in_a_bowl_is_pushed_by_the_closed_form_of_its_stat
 }
 
 BOOST_AUTO_TEST_CASE(the_rolling_disk_is_pushed_by_its_weight_and_its_fall) {
-  const scene_input scene = read_scene_file(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk_friction.json");
+  const scene_input scene = read_scene_file(APPELL_SOURCE_DIR + "/data/scenes/system_rolling_disk_friction.json");
   const truth_t m(2), g("9.81");
   {
     const mp_precision_scope bits(256);
@@ -559,7 +560,7 @@ std::string pieces_without_seconds(const std::filesystem::path& dir) {
 
 BOOST_AUTO_TEST_CASE(validity_splits_the_initial_spin_at_the_closed_form_s_boundary) {
   const auto dir = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts" / "validity";
-  const int status = validity_run(APPELL_SOURCE_DIR "/data/scenes/system_sphere_in_bowl_contact.json",
+  const int status = validity_run(APPELL_SOURCE_DIR + "/data/scenes/system_sphere_in_bowl_contact.json",
                                   "--vary wy=23:27.5 --t-end 0.8 --resolution 0.25", dir);
   BOOST_TEST_REQUIRE(status == 0, slurp((dir / "stdout").string()));
   check_validity_against_the_closed_form(dir, truth_t("23"), truth_t("27.5"), truth_t("0.25"), critical_spin());
@@ -652,7 +653,7 @@ BOOST_AUTO_TEST_CASE(validity_over_a_model_parameter_splits_at_the_closed_form_s
   // decreases in g and in a; the contact holds on [0, T] below the parameter where it is T.
   const auto base = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts";
   const truth_t T("0.6");
-  const std::string system = APPELL_SOURCE_DIR "/data/scenes/system_sphere_in_bowl_lift_off.json";
+  const std::string system = APPELL_SOURCE_DIR + "/data/scenes/system_sphere_in_bowl_lift_off.json";
   const truth_t g_star = lifting_off_at(T, truth_t(6), truth_t(9), [](const truth_t& g) {
     loop_truth L;
     L.g = g;
@@ -661,7 +662,7 @@ BOOST_AUTO_TEST_CASE(validity_over_a_model_parameter_splits_at_the_closed_form_s
   BOOST_TEST_REQUIRE(validity_run(system, "--vary g=6:9 --t-end 0.6 --resolution 0.25", base / "validity_g") == 0,
                      slurp((base / "validity_g" / "stdout").string()));
   check_validity_against_the_closed_form(base / "validity_g", truth_t(6), truth_t(9), truth_t("0.25"), g_star);
-  const std::string built_in = APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_bowl_lift_off.json";
+  const std::string built_in = APPELL_SOURCE_DIR + "/data/scenes/rolling_sphere_bowl_lift_off.json";
   const truth_t a_star = lifting_off_at(T, truth_t("0.076"), truth_t("0.092"), [](const truth_t& a) {
     loop_truth L;
     L.r = 1 - a;
@@ -671,7 +672,7 @@ BOOST_AUTO_TEST_CASE(validity_over_a_model_parameter_splits_at_the_closed_form_s
   BOOST_TEST_REQUIRE(validity_run(built_in, "--vary sphere.radius=0.076:0.092 --t-end 0.6 --resolution 0.0008", base / "validity_radius") == 0,
                      slurp((base / "validity_radius" / "stdout").string()));
   check_validity_against_the_closed_form(base / "validity_radius", truth_t("0.076"), truth_t("0.092"), truth_t("0.0008"), a_star);
-  const std::string system_scene = APPELL_SOURCE_DIR "/data/scenes/system_sphere_in_bowl_contact.json";
+  const std::string system_scene = APPELL_SOURCE_DIR + "/data/scenes/system_sphere_in_bowl_contact.json";
   // Refused, exit 2 naming why: a parameter defined from others, a radius reaching the bowl's or
   // not positive, a name that is neither a state component nor a parameter, a parameter that a
   // holonomic constraint involves (the disk's radius in z = a cos theta).
@@ -682,7 +683,7 @@ BOOST_AUTO_TEST_CASE(validity_over_a_model_parameter_splits_at_the_closed_form_s
       {system_scene, "parameters.A=0.001:0.002", "defined from the parameter"},
       {built_in, "sphere.mass=1:2", "nor a parameter of the model"},
       {built_in, "parameters.sphere.radius=0.05:0.06", "nor a parameter of the model"},
-      {APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk_friction.json", "a=0.2:0.4", "enters the holonomic constraint ground"}};
+      {APPELL_SOURCE_DIR + "/data/scenes/system_rolling_disk_friction.json", "a=0.2:0.4", "enters the holonomic constraint ground"}};
   for (const auto& [scene, vary, why] : refused) {
     const auto dir = base / "refused_parameter";
     BOOST_TEST(validity_run(scene, "--vary " + vary + " --t-end 0.1", dir) == 2, vary);
@@ -728,12 +729,12 @@ BOOST_AUTO_TEST_CASE(the_mu_flag_judges_every_contact_with_its_value) {
     BOOST_TEST(c["mu"] == mu);
   }
   const auto base = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts";
-  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_bowl_contact.json";
+  const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/rolling_sphere_bowl_contact.json";
   const std::vector<std::pair<std::string, std::string>> refused = {
       {"validity " + scene + " --vary omega_y=40:45 --t-end 0.1 --mu -0.1", "--mu: expected a decimal >= 0"},
       {"validity " + scene + " --vary omega_y=40:45 --t-end 0.1 --mu 1e", "--mu: expected a decimal >= 0"},
       {"validity " + scene + " --vary mu=0:0.4 --t-end 0.1 --mu 0.3", "--mu: fixes mu"},
-      {"enclose " APPELL_SOURCE_DIR "/data/scenes/euler_body.json --t-end 0.1 --mu 0.3", "--mu: the scene has no contacts"},
+      {"enclose " + APPELL_SOURCE_DIR + "/data/scenes/euler_body.json --t-end 0.1 --mu 0.3", "--mu: the scene has no contacts"},
       {"simulate " + scene + " --t-end 0.1 --mu 0.3", "--mu: applies to enclose and validity"}};
   for (const auto& [args, why] : refused) {
     const std::string cmd = std::string(APPELL_BINARY) + " " + args + " --out " + (base / "refused_mu").string() + " >" +
@@ -751,7 +752,7 @@ BOOST_AUTO_TEST_CASE(validity_of_the_built_in_sphere_gives_the_same_pieces_on_on
   // contact holds on [0, T] iff mu > mu*. The pieces, their verdicts and bounds byte for byte the
   // same whatever the threads.
   const truth_t mu_star = largest_friction_ratio_up_to(truth_t("0.3"));
-  const std::string scene = APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_bowl_contact.json";
+  const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/rolling_sphere_bowl_contact.json";
   const std::string args = "--vary mu=0:0.4 --t-end 0.3 --resolution 0.01";
   const auto base = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts";
   for (const std::string jobs : {"1", "3"}) {
@@ -898,7 +899,7 @@ BOOST_AUTO_TEST_CASE(bad_contacts_are_refused_naming_the_field) {
   // without a body, every constraint must be a point_velocity one at one point
   refused(replaced(plane, "\"body\": \"sphere\", \"point\": [\"x\", \"y\", \"z - a\"], ", ""), "point_velocity");
   // --locate and --until-contact-fails belong to enclose
-  const std::string cmd = std::string(APPELL_BINARY) + " simulate " APPELL_SOURCE_DIR
+  const std::string cmd = std::string(APPELL_BINARY) + " simulate " + APPELL_SOURCE_DIR +
                           "/data/scenes/system_rolling_sphere_plane_contact.json --t-end 1 --locate 1e-3 --out /tmp/x >/dev/null 2>&1";
   const int raw = std::system(cmd.c_str());
   BOOST_TEST(WEXITSTATUS(raw) == 2);

@@ -10,6 +10,7 @@
 
 #include <random>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/models/euler_body.hpp"
 
 using namespace appell;
@@ -126,7 +127,7 @@ void check_scene(const scene_input& scene, double c_factor, long& checked) {
 template <class T>
 long check_all(double c_factor) {
   long checked = 0;
-  check_scene<T>(read_scene_file(APPELL_SOURCE_DIR "/data/scenes/euler_body.json"), c_factor, checked);
+  check_scene<T>(read_scene_file(APPELL_SOURCE_DIR + "/data/scenes/euler_body.json"), c_factor, checked);
   std::mt19937_64 rng(3);
   for (int c = 0; c < 300; ++c) {
     // Random positive moments satisfying the triangle inequality, random state and torque.
@@ -172,7 +173,7 @@ BOOST_AUTO_TEST_CASE(interval_types_contain_the_exact_value) {
 }
 
 BOOST_AUTO_TEST_CASE(shipped_scene_widths) {
-  const scene_input s = read_scene_file(APPELL_SOURCE_DIR "/data/scenes/euler_body.json");
+  const scene_input s = read_scene_file(APPELL_SOURCE_DIR + "/data/scenes/euler_body.json");
   const auto ei = evaluate<interval>(s).result("omega_dot");
   for (int i = 0; i < 3; ++i) {
     const double rel = width(ei.values[static_cast<std::size_t>(i)]) /

@@ -21,6 +21,7 @@
 #include <boost/multiprecision/mpfr.hpp>
 #include <random>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "independent/top_on_pivot.hpp"
 #include "appell/io/models/heavy_top.hpp"
 #include "appell/io/models/system.hpp"
@@ -121,7 +122,7 @@ std::vector<top_case> cases() {
 
 std::vector<scene_input> scenes() {
   std::vector<scene_input> out;
-  out.push_back(read_scene_file(APPELL_SOURCE_DIR "/data/scenes/heavy_top.json"));
+  out.push_back(read_scene_file(APPELL_SOURCE_DIR + "/data/scenes/heavy_top.json"));
   for (const top_case& k : cases()) out.push_back(read_scene(parse_json(heavy_top_json(k))));
   return out;
 }

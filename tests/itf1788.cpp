@@ -47,6 +47,7 @@
 #include <string>
 #include <vector>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/functions.hpp"
 #include "appell/scalar/interval.hpp"

@@ -21,6 +21,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/models/system.hpp"
 #include "appell/io/scene.hpp"
 #include "appell/io/urdf.hpp"
@@ -32,7 +33,7 @@ using testing::ref_t;  // 400 bits
 
 namespace {
 
-std::string data(const std::string& f) { return std::string(APPELL_SOURCE_DIR "/data/") + f; }
+std::string data(const std::string& f) { return std::string(APPELL_SOURCE_DIR + "/data/") + f; }
 
 scene_input from_text(const std::string& text) { return read_scene(parse_json(text)); }
 
@@ -441,7 +442,7 @@ BOOST_AUTO_TEST_CASE(bad_urdf_input_is_refused_naming_the_element) {
     const auto at = s.find(from);
     BOOST_REQUIRE(at != std::string::npos);
     s.replace(at, from.size(), to);
-    const std::string file = std::string(APPELL_SOURCE_DIR "/data/scenes/.bad_") + std::to_string(::getpid()) + ".json";
+    const std::string file = std::string(APPELL_SOURCE_DIR + "/data/scenes/.bad_") + std::to_string(::getpid()) + ".json";
     std::ofstream(file) << s;
     std::string message;
     try {

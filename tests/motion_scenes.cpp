@@ -20,6 +20,7 @@
 #include <boost/multiprecision/mpfr.hpp>
 #include <random>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/models/rolling_sphere.hpp"
 #include "appell/io/models/top_on_cone.hpp"
 #include "appell/io/scene.hpp"
@@ -40,7 +41,7 @@ truth_t truth(const rational_t& q) { return truth_t(numerator(q)) / truth_t(deno
 
 scene_input scene_of(const std::string& json) { return read_scene(parse_json(json)); }
 scene_input scene_file(const std::string& file) {
-  return read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
+  return read_scene_file(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file);
 }
 
 template <Scalar T>

@@ -22,6 +22,7 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 
 namespace {
 
@@ -143,7 +144,7 @@ void finite_everywhere(const json& j, const std::string& key, std::vector<std::s
 BOOST_AUTO_TEST_CASE(mutated_system_files_keep_the_exit_contract) {
   std::filesystem::create_directories(work);
   std::vector<std::filesystem::path> scenes;
-  for (const auto& e : std::filesystem::directory_iterator(APPELL_SOURCE_DIR "/data/scenes"))
+  for (const auto& e : std::filesystem::directory_iterator(APPELL_SOURCE_DIR + "/data/scenes"))
     if (e.path().filename().string().rfind("system_", 0) == 0) scenes.push_back(e.path());
   std::sort(scenes.begin(), scenes.end());
   BOOST_REQUIRE(scenes.size() >= 10u);

@@ -11,6 +11,7 @@
 
 #include <random>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/models/rolling_sphere.hpp"
 #include "appell/scalar/rational.hpp"
 #include "independent/sphere_newton_euler.hpp"
@@ -270,7 +271,7 @@ BOOST_AUTO_TEST_CASE(textbook_incline_bowl_and_cylinder) {
   BOOST_TEST(possibly_zero(rest.tangential_force()));
   // Inside a vertical cylinder: the wall's normal force is the centripetal one,
   // M v^2 / rho, whatever the spin (v = horizontal speed of G).
-  const auto tube = evaluate<T>(read_scene_file(APPELL_SOURCE_DIR "/data/scenes/rolling_sphere_tube.json"));
+  const auto tube = evaluate<T>(read_scene_file(APPELL_SOURCE_DIR + "/data/scenes/rolling_sphere_tube.json"));
   // omega = (0, -2, 30), n = (-1, 0, 0): v_G = a omega x n = (0, -3, -0.2); M v_h^2 / rho = 9 / 0.4
   BOOST_TEST(overlaps(tube.result("contact_force").values[0], T(-22.5)));
 }

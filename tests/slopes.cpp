@@ -11,6 +11,7 @@
 
 #include <random>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/models/rolling_sphere.hpp"
 #include "appell/io/models/top_on_cone.hpp"
 #include "appell/io/scene.hpp"
@@ -27,7 +28,7 @@ mpfr lower_m(const interval& x) { return mpfr(x.lower()); }  // exact: a double 
 mpfr upper_m(const interval& x) { return mpfr(x.upper()); }
 
 scene_input scene_file(const std::string& file) {
-  return read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
+  return read_scene_file(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file);
 }
 
 struct tally {

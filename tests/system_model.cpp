@@ -17,6 +17,7 @@
 #include <iterator>
 #include <random>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/files.hpp"
 #include "appell/io/models/system.hpp"
 #include "appell/io/scene.hpp"
@@ -28,7 +29,7 @@ using testing::bounds_of;
 
 namespace {
 
-scene_input load(const std::string& file) { return read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file); }
+scene_input load(const std::string& file) { return read_scene_file(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file); }
 
 
 /// A system result and the dedicated model's result (name, index) it must equal.
@@ -425,7 +426,7 @@ disk_case random_disk(const std::string& file_text) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(a_rolling_disk_encloses_newton_euler) {
-  std::ifstream f(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk.json");
+  std::ifstream f(APPELL_SOURCE_DIR + "/data/scenes/system_rolling_disk.json");
   const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   long values = 0, misses = 0;
   for (int k = 0; k < 200; ++k) {
@@ -473,7 +474,7 @@ std::string engine17(const ref_t& x) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(engine_states_of_the_disk_are_certified_at_their_projection) {
-  std::ifstream f(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk.json");
+  std::ifstream f(APPELL_SOURCE_DIR + "/data/scenes/system_rolling_disk.json");
   const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   long values = 0, misses = 0, too_far = 0;
   ref_t largest_move = 0;
@@ -577,7 +578,7 @@ BOOST_AUTO_TEST_CASE(engine_states_of_the_disk_are_certified_at_their_projection
 namespace {
 using M2 = Eigen::Matrix<ref_t, 2, 2>;
 std::string bicycle_text() {
-  std::ifstream f(APPELL_SOURCE_DIR "/data/scenes/system_whipple_bicycle.json");
+  std::ifstream f(APPELL_SOURCE_DIR + "/data/scenes/system_whipple_bicycle.json");
   return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
 }
 std::string with_value(std::string s, const std::string& key, const std::string& value) {
@@ -943,7 +944,7 @@ BOOST_AUTO_TEST_CASE(a_projected_state_is_linearized_at_its_projection) {
 }
 
 BOOST_AUTO_TEST_CASE(point_velocity_and_solve_speeds_give_the_hand_written_disk) {
-  std::ifstream f(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk.json");
+  std::ifstream f(APPELL_SOURCE_DIR + "/data/scenes/system_rolling_disk.json");
   const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   const std::string contact = R"~(["x - a*sin(psi)*sin(theta)", "y + a*cos(psi)*sin(theta)", "z - a*cos(theta)"])~";
   std::string pv = text;
@@ -988,7 +989,7 @@ BOOST_AUTO_TEST_CASE(point_velocity_and_solve_speeds_give_the_hand_written_disk)
 namespace {
 /// The rolling disk with the wrench of its three constraints at the contact point.
 std::string disk_with_wrench() {
-  std::ifstream f(APPELL_SOURCE_DIR "/data/scenes/system_rolling_disk_contact.json");
+  std::ifstream f(APPELL_SOURCE_DIR + "/data/scenes/system_rolling_disk_contact.json");
   return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
 }
 }  // namespace
@@ -1099,7 +1100,7 @@ BOOST_AUTO_TEST_CASE(a_contact_wrench_is_newtons_second_law_for_the_rolling_disk
   expect_refused(replace(bead, R"~("body": "disk", "constraints")~", R"~("body": "bead", "constraints")~"),
                  "a wrench needs a body with an orientation");
   // the top on its cone turns about a fixed point: 3 speeds cannot fix a force and a couple
-  std::ifstream f(APPELL_SOURCE_DIR "/data/scenes/system_top_on_cone.json");
+  std::ifstream f(APPELL_SOURCE_DIR + "/data/scenes/system_top_on_cone.json");
   const std::string top((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   expect_refused(replace(top, R"~( "state":)~",
                          R"~( "wrenches": {"pin": {"body": "top", "constraints": ["cone"], "point": ["0", "0", "0"]}}, "state":)~"),
@@ -1109,7 +1110,7 @@ BOOST_AUTO_TEST_CASE(a_contact_wrench_is_newtons_second_law_for_the_rolling_disk
 // --- orientation as a matrix ---------------------------------------------------
 namespace {
 std::string scene_text(const std::string& file) {
-  std::ifstream f(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
+  std::ifstream f(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file);
   return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
 }
 // rz(psi) rx(theta) rz(phi) multiplied out, row by row
@@ -1243,7 +1244,7 @@ BOOST_AUTO_TEST_CASE(a_definition_read_before_gives_what_a_fresh_reading_gives) 
   for (const char* file : {"system_whipple_bicycle.json", "system_top_on_cone.json", "system_rolling_sphere_bowl.json",
                            "system_rolling_disk_contact.json", "urdf_kr5.json", "urdf_wam_inverse.json",
                            "system_euler_body.json"}) {
-    const std::string path = std::string(APPELL_SOURCE_DIR "/data/scenes/") + file;
+    const std::string path = std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file;
     std::ifstream in(path);
     const json_value scene = parse_json({std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()});
     const std::string directory = std::filesystem::path(path).parent_path().string();

@@ -30,6 +30,7 @@
 #include <boost/multiprecision/mpfr.hpp>
 #include <sstream>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/models/system_motion.hpp"
 #include "appell/io/scene.hpp"
 #include "appell/ode/enclose.hpp"
@@ -47,7 +48,7 @@ double hi_of(const interval& x) { return x.upper(); }
 
 scene_input scene_of(const std::string& json) { return read_scene(parse_json(json)); }
 scene_input scene_file(const std::string& file) {
-  return read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
+  return read_scene_file(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file);
 }
 std::string decimal(const truth_t& x) { return x.str(95, std::ios_base::scientific); }
 

@@ -9,6 +9,7 @@
 
 #include <random>
 
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/models/top_on_cone.hpp"
 #include "independent/top_lagrange.hpp"
 
@@ -74,7 +75,7 @@ scene_input make_scene(const std::string& A, const std::string& C, const std::st
 std::vector<std::pair<scene_input, const cone_case*>> scenes() {
   std::vector<std::pair<scene_input, const cone_case*>> out;
   for (const char* file : {"top_on_cone.json", "top_on_cone_constant.json", "top_on_cone_steep.json"}) {
-    scene_input s = read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
+    scene_input s = read_scene_file(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file);
     const auto& in = s.as<top_on_cone_input>();
     for (const auto& c : cones)
       if (c.text == in.cone_text) out.emplace_back(s, &c);
@@ -198,7 +199,7 @@ void direct_call_matches_eval(const scene_input& scene) {
 
 BOOST_AUTO_TEST_CASE(a_direct_library_call_gives_the_bounds_of_appell_eval) {
   for (const char* file : {"top_on_cone.json", "top_on_cone_constant.json", "top_on_cone_steep.json"}) {
-    const scene_input s = read_scene_file(std::string(APPELL_SOURCE_DIR "/data/scenes/") + file);
+    const scene_input s = read_scene_file(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file);
     direct_call_matches_eval<interval>(s);
     for (unsigned bits : {53u, 113u, 256u}) {
       const mp_precision_scope scope(bits);
@@ -228,7 +229,7 @@ BOOST_AUTO_TEST_CASE(a_constant_cone_gives_the_textbook_answer) {
 
 BOOST_AUTO_TEST_CASE(cotton_with_library_built_speeds_equals_cotton_with_the_papers_speeds) {
   // The same reactions when the library adapts the speeds to A u = a itself.
-  const scene_input s = read_scene_file(APPELL_SOURCE_DIR "/data/scenes/top_on_cone.json");
+  const scene_input s = read_scene_file(APPELL_SOURCE_DIR + "/data/scenes/top_on_cone.json");
   const auto& in = s.as<top_on_cone_input>();
   using T = interval;
   const heavy_top<T> top{value<T>(in.A), value<T>(in.C), value<T>(in.mass), value<T>(in.l), value<T>(in.gravity)};
