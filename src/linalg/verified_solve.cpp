@@ -22,13 +22,19 @@
 namespace appell::detail {
 
 std::optional<vector_t<interval>> small_interval_solve(const matrix_t<interval>& A, const vector_t<interval>& b) {
+  vector_t<interval> x;
+  if (!small_interval_solve_into(A, b, x)) return std::nullopt;
+  return x;
+}
+
+bool small_interval_solve_into(const matrix_t<interval>& A, const vector_t<interval>& b, vector_t<interval>& x) {
   constexpr int M = static_cast<int>(small_system_max);
   using DM = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, M, M>;
   using DV = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, M, 1>;
   using IM = Eigen::Matrix<interval, Eigen::Dynamic, Eigen::Dynamic, 0, M, M>;
   using IV = Eigen::Matrix<interval, Eigen::Dynamic, 1, 0, M, 1>;
   const Eigen::Index n = A.rows();
-  if (n == 0 || n > small_system_max) return std::nullopt;
+  if (n == 0 || n > small_system_max) return false;
   DM Am(n, n);
   DV bm(n);
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -37,9 +43,9 @@ std::optional<vector_t<interval>> small_interval_solve(const matrix_t<interval>&
   }
   const Eigen::PartialPivLU<DM> lu(Am);
   for (Eigen::Index i = 0; i < n; ++i)
-    if (!(std::abs(lu.matrixLU()(i, i)) > 0)) return std::nullopt;
+    if (!(std::abs(lu.matrixLU()(i, i)) > 0)) return false;
   const DM R = lu.inverse();
-  if (!R.allFinite()) return std::nullopt;
+  if (!R.allFinite()) return false;
   DV xt = R * bm;
   xt += R * (bm - Am * xt);  // one refinement step, as residual_or_krawczyk_solve
   IV xI(n), residual(n);
@@ -52,10 +58,10 @@ std::optional<vector_t<interval>> small_interval_solve(const matrix_t<interval>&
   IM C;
   identity_minus_product_into(R, A, C);
   const std::optional<IV> e = residual_enclosure(R, C, residual);
-  if (!e) return std::nullopt;
-  vector_t<interval> x(n);
+  if (!e) return false;
+  x.resize(n);  // of its size already: no allocation
   for (Eigen::Index i = 0; i < n; ++i) x(i) = xI(i) + (*e)(i);
-  return x;
+  return true;
 }
 
 std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const vector_t<mpfi>& b) {

@@ -245,6 +245,10 @@ namespace detail {
 /// without going back to malloc.  An evaluation on jets makes and drops thousands of short-lived
 /// series (measured: malloc and free took 30% of an enclosure's time).  A block freed in another
 /// thread joins that thread's lists; each thread's blocks go back to the system at its exit.
+/// Jets that outlive their thread's pool (held in another thread_local object, such as a
+/// scratch pool of linalg/scratch.hpp, destroyed after it) take and give back their blocks
+/// through the system's allocator: jet_pool_gone says so, and is itself trivially destroyed.
+inline thread_local bool jet_pool_gone = false;
 class jet_block_pool {
  public:
   static constexpr int classes = 26;
@@ -254,6 +258,7 @@ class jet_block_pool {
   ~jet_block_pool() {
     for (auto& list : free_)
       for (void* p : list) ::operator delete(p);
+    jet_pool_gone = true;
   }
   void* get(std::size_t bytes) {
     const int c = size_class(bytes);
@@ -284,8 +289,14 @@ struct jet_allocator {
   jet_allocator() = default;
   template <class U>
   jet_allocator(const jet_allocator<U>&) {}  // NOLINT
-  T* allocate(std::size_t n) { return static_cast<T*>(jet_pool().get(n * sizeof(T))); }
-  void deallocate(T* p, std::size_t n) { jet_pool().put(p, n * sizeof(T)); }
+  T* allocate(std::size_t n) {
+    if (jet_pool_gone) return static_cast<T*>(::operator new(n * sizeof(T)));
+    return static_cast<T*>(jet_pool().get(n * sizeof(T)));
+  }
+  void deallocate(T* p, std::size_t n) {
+    if (jet_pool_gone) return ::operator delete(p);  // a pool block or one taken since: both from operator new
+    jet_pool().put(p, n * sizeof(T));
+  }
   friend bool operator==(const jet_allocator&, const jet_allocator&) { return true; }
   friend bool operator!=(const jet_allocator&, const jet_allocator&) { return false; }
 };

@@ -35,6 +35,7 @@
 #include "appell/derivatives/dual.hpp"
 #include "appell/derivatives/dual_solve.hpp"
 #include "appell/linalg/solve.hpp"
+#include "appell/linalg/scratch.hpp"
 
 namespace appell {
 
@@ -152,15 +153,24 @@ vec3<T> derivative(const vec3<multi_dual<T, N>>& x, int slot) {
 /// the corresponding single-dual pass (differentiate_kinematics_by_columns),
 /// and the values are those of the plain evaluation: the results are the same
 /// numbers, bit for bit (tests/generic_path.cpp).  N >= k + 1 takes one evaluation.
+/// Into `out`, whose storage is reused (a J of the same size is not allocated again).
 template <int N, class T, class Sys>
-std::vector<body_kinematics<T>> differentiate_kinematics_in_slots(const Sys& sys, const vector_t<T>& q,
-                                                                  const vector_t<T>& u, const T& t, int cols = -1) {
+void differentiate_kinematics_in_slots_into(const Sys& sys, const vector_t<T>& q, const vector_t<T>& u, const T& t,
+                                            std::vector<body_kinematics<T>>& out, int cols = -1) {
   using D = multi_dual<T, N>;
   const int k = cols < 0 ? sys.speeds() : cols;  // the columns of J differentiated: speeds 0 .. k - 1
-  const vector_t<T> qd = sys.template qdot<T>(q, u, t);
-  std::vector<body_kinematics<T>> out;
-  std::vector<body_state<D>> d;
-  vector_t<D> qs(q.size()), us(u.size());
+  struct site;  // this function's pools (linalg/scratch.hpp: an Eigen object keeps one size)
+  const scratch<vector_t<T>, site> qd_held;
+  if constexpr (requires { sys.template qdot_into<T>(q, u, t, *qd_held); })
+    sys.template qdot_into<T>(q, u, t, *qd_held);
+  else
+    *qd_held = sys.template qdot<T>(q, u, t);
+  const vector_t<T>& qd = *qd_held;
+  const scratch<std::vector<body_state<D>>, site> d_held;
+  const scratch<vector_t<D>, site> qs_held, us_held;
+  std::vector<body_state<D>>& d = *d_held;
+  vector_t<D>&qs = *qs_held, &us = *us_held;
+  qs.resize(q.size()), us.resize(u.size());
   for (int first = 0; first <= k; first += N) {  // directions first .. first + N - 1
     const bool has_c = k - first < N;              // direction k falls in this evaluation
     const auto c_slot = static_cast<std::size_t>(k - first);
@@ -196,6 +206,12 @@ std::vector<body_kinematics<T>> differentiate_kinematics_in_slots(const Sys& sys
       }
     }
   }
+}
+template <int N, class T, class Sys>
+std::vector<body_kinematics<T>> differentiate_kinematics_in_slots(const Sys& sys, const vector_t<T>& q,
+                                                                  const vector_t<T>& u, const T& t, int cols = -1) {
+  std::vector<body_kinematics<T>> out;
+  differentiate_kinematics_in_slots_into<N>(sys, q, u, t, out, cols);
   return out;
 }
 }  // namespace detail
@@ -243,16 +259,23 @@ std::vector<body_kinematics<T>> differentiate_kinematics_by_columns(const Sys& s
 /// differentiation: one evaluation on multi_dual<T, max_speeds + 1> for a system
 /// that declares max_speeds, otherwise evaluations 8 directions at a time.
 template <Scalar T, class Sys>
-std::vector<body_kinematics<T>> differentiate_kinematics(const Sys& sys, const vector_t<T>& q,
-                                                         const vector_t<T>& u, const T& t) {
+void differentiate_kinematics_into(const Sys& sys, const vector_t<T>& q, const vector_t<T>& u, const T& t,
+                                   std::vector<body_kinematics<T>>& out) {
   if constexpr (bounded_speeds<Sys>) {
     if (sys.speeds() > Sys::max_speeds)
       throw std::logic_error("a system has more speeds than its max_speeds (" + std::to_string(sys.speeds()) + " > " +
                              std::to_string(Sys::max_speeds) + ")");
-    return detail::differentiate_kinematics_in_slots<Sys::max_speeds + 1>(sys, q, u, t);
+    detail::differentiate_kinematics_in_slots_into<Sys::max_speeds + 1>(sys, q, u, t, out);
   } else {
-    return detail::differentiate_kinematics_in_slots<8>(sys, q, u, t);
+    detail::differentiate_kinematics_in_slots_into<8>(sys, q, u, t, out);
   }
+}
+template <Scalar T, class Sys>
+std::vector<body_kinematics<T>> differentiate_kinematics(const Sys& sys, const vector_t<T>& q,
+                                                         const vector_t<T>& u, const T& t) {
+  std::vector<body_kinematics<T>> out;
+  differentiate_kinematics_into(sys, q, u, t, out);
+  return out;
 }
 
 /// Appell's equations M u' + b = Q at one state.
@@ -273,6 +296,13 @@ struct appell_equations {
   }
   /// The accelerations u' = M^-1 (Q - b) (verified for interval types).
   vector_t<T> accelerations() const { return solve_spd(M, vector_t<T>(Q - b)); }
+  /// The same into udot (solve_spd_into: no allocation for point types once the sizes are known).
+  void accelerations_into(vector_t<T>& udot) const {
+    struct site;
+    const scratch<vector_t<T>, site> rhs;
+    *rhs = Q - b;  // into its storage: no temporary
+    solve_spd_into<site>(M, *rhs, udot);
+  }
 };
 
 /// Assembles M, b, Q from the differentiated kinematics.  A speed that does
@@ -280,9 +310,13 @@ struct appell_equations {
 /// that body's terms: it is skipped (a link of a chain moves with the speeds
 /// of the joints before it only, so a chain's M costs N^3 / 6 products, not N^3 / 2).
 template <Scalar T>
-appell_equations<T> assemble(const std::vector<body_kinematics<T>>& bodies, int k) {
-  appell_equations<T> e{matrix_t<T>::Zero(k, k), vector_t<T>::Zero(k), vector_t<T>::Zero(k)};
-  std::vector<int> active;
+void assemble_into(const std::vector<body_kinematics<T>>& bodies, int k, appell_equations<T>& e) {
+  e.M.setZero(k, k);  // of the same size as before: no allocation
+  e.b.setZero(k);
+  e.Q.setZero(k);
+  struct site;
+  const scratch<std::vector<int>, site> active_held;  // borrowed (linalg/scratch.hpp)
+  std::vector<int>& active = *active_held;
   active.reserve(static_cast<std::size_t>(k));
   for (const auto& B : bodies) {
     active.clear();
@@ -309,13 +343,28 @@ appell_equations<T> assemble(const std::vector<body_kinematics<T>>& bodies, int 
       e.Q(i) += dot(jvi, s.force) + dot(jwi, s.couple);
     }
   }
+}
+template <Scalar T>
+appell_equations<T> assemble(const std::vector<body_kinematics<T>>& bodies, int k) {
+  appell_equations<T> e;
+  assemble_into(bodies, k, e);
   return e;
 }
 
 /// Appell's equations of a system at (q, u, t).
 template <Scalar T, class Sys>
+void gibbs_appell_into(const Sys& sys, const vector_t<T>& q, const vector_t<T>& u, const T& t, appell_equations<T>& e) {
+  struct site;
+  const scratch<std::vector<body_kinematics<T>>, site> kinematics;  // borrowed (linalg/scratch.hpp)
+  differentiate_kinematics_into(sys, q, u, t, *kinematics);
+  assemble_into(*kinematics, sys.speeds(), e);
+}
+/// The same returned (gibbs_appell_into: into matrices that are reused).
+template <Scalar T, class Sys>
 appell_equations<T> gibbs_appell(const Sys& sys, const vector_t<T>& q, const vector_t<T>& u, const T& t) {
-  return assemble(differentiate_kinematics(sys, q, u, t), sys.speeds());
+  appell_equations<T> e;
+  gibbs_appell_into(sys, q, u, t, e);
+  return e;
 }
 
 /// The first `cols` rows and columns of Appell's equations at (q, u, t): M's leading block, and
@@ -328,7 +377,10 @@ template <int Slots, Scalar T, class Sys>
 appell_equations<T> gibbs_appell_leading(const Sys& sys, const vector_t<T>& q, const vector_t<T>& u, const T& t,
                                          int cols) {
   if (cols < 0 || cols > sys.speeds()) throw std::invalid_argument("gibbs_appell_leading: cols out of range");
-  return assemble(detail::differentiate_kinematics_in_slots<Slots>(sys, q, u, t, cols), cols);
+  struct site;
+  const scratch<std::vector<body_kinematics<T>>, site> kinematics;
+  detail::differentiate_kinematics_in_slots_into<Slots>(sys, q, u, t, *kinematics, cols);
+  return assemble(*kinematics, cols);
 }
 
 }  // namespace appell

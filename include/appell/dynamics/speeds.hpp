@@ -16,6 +16,7 @@
 #include <numeric>
 
 #include "appell/dynamics/gibbs_appell.hpp"
+#include "appell/linalg/scratch.hpp"
 
 namespace appell {
 
@@ -37,11 +38,35 @@ struct with_speeds : detail::speeds_bound<Base> {
   int speeds() const { return k; }
   template <class S>
   vector_t<S> qdot(const vector_t<S>& q, const vector_t<S>& v, const S& t) const {
-    return base->template qdot<S>(q, change.template apply<S>(q, v, t), t);
+    const scratch<vector_t<S>, with_speeds> u;
+    apply_change(q, v, t, *u);
+    return base->template qdot<S>(q, *u, t);
+  }
+  /// q' into qd, where the base system offers qdot_into (no vector made: linalg/scratch.hpp).
+  template <class S>
+  void qdot_into(const vector_t<S>& q, const vector_t<S>& v, const S& t, vector_t<S>& qd) const
+    requires requires(const Base& b, const vector_t<S>& x, const S& time, vector_t<S>& r) {
+      b.template qdot_into<S>(x, x, time, r);
+    }
+  {
+    const scratch<vector_t<S>, with_speeds> u;
+    apply_change(q, v, t, *u);
+    base->template qdot_into<S>(q, *u, t, qd);
   }
   template <class S>
   void bodies(const vector_t<S>& q, const vector_t<S>& v, const S& t, std::vector<body_state<S>>& out) const {
-    base->template bodies<S>(q, change.template apply<S>(q, v, t), t, out);
+    const scratch<vector_t<S>, with_speeds> u;  // borrowed: no vector per call (linalg/scratch.hpp)
+    apply_change(q, v, t, *u);
+    base->template bodies<S>(q, *u, t, out);
+  }
+
+ private:
+  template <class S>
+  void apply_change(const vector_t<S>& q, const vector_t<S>& v, const S& t, vector_t<S>& u) const {
+    if constexpr (requires { change.template apply_into<S>(q, v, t, u); })
+      change.template apply_into<S>(q, v, t, u);
+    else
+      u = change.template apply<S>(q, v, t);
   }
 };
 
@@ -78,18 +103,27 @@ struct adapted_change {
 
   template <class S>
   vector_t<S> apply(const vector_t<S>& q, const vector_t<S>& v, const S& t) const {
+    vector_t<S> u;
+    apply_into(q, v, t, u);
+    return u;
+  }
+  /// The same into u; the working matrices borrowed (linalg/scratch.hpp).
+  template <class S>
+  void apply_into(const vector_t<S>& q, const vector_t<S>& v, const S& t, vector_t<S>& u) const {
     const int s = con.count(), k = static_cast<int>(free_columns.size()), n = k + s;
-    matrix_t<S> A(s, n);
-    vector_t<S> a(s);
+    struct site;  // this function's pools (linalg/scratch.hpp: an Eigen object keeps one size)
+    const scratch<matrix_t<S>, site> A_held, Ab_held;
+    const scratch<vector_t<S>, site> a_held, rhs_held;
+    matrix_t<S>&A = *A_held, &Ab = *Ab_held;
+    vector_t<S>&a = *a_held, &rhs = *rhs_held;
+    A.resize(s, n), a.resize(s), Ab.resize(s, s), rhs.resize(s);
     con.template eval<S>(q, t, A, a);
-    vector_t<S> u(n);
+    u.resize(n);
     for (int i = 0; i < k; ++i) u(free_columns[i]) = v(i);
     // A_b u_b = v_c + a - A_f u_f, by elimination in the order fixed at the state.
     // Entries that are exactly 0 (or pivots exactly 1) are skipped: constraint
     // matrices are sparse (the rolling sphere's A_b is the identity), and the
     // skipped operations would give the same values (0 * x = 0, x / 1 = x).
-    matrix_t<S> Ab(s, s);
-    vector_t<S> rhs(s);
     for (int r = 0; r < s; ++r) {
       S x = v(k + r) + a(r);
       for (int i = 0; i < k; ++i)
@@ -110,7 +144,6 @@ struct adapted_change {
         if (!structurally_zero(Ab(p, c))) x -= Ab(p, c) * u(bound_columns[c]);
       u(bound_columns[p]) = structurally_one(Ab(p, p)) ? x : S(x / Ab(p, p));
     }
-    return u;
   }
 };
 
@@ -131,19 +164,28 @@ adapted_change<Constraint> adapt_speeds_keeping(const Constraint& con, int n, st
 /// first; with `free_columns` given, among the other columns only (they are
 /// then the free speeds, in that order; the elimination of adapted_change needs
 /// the bound columns in pivot order).
+namespace detail {
+/// adapt_speeds' choice into the lists `bound` and `free` (their storage reused).
 template <Scalar T, class Constraint>
-adapted_change<Constraint> adapt_speeds(const Constraint& con, const vector_t<T>& q, const T& t, int n,
-                                        const std::vector<int>* free_columns = nullptr) {
+void choose_speeds(const Constraint& con, const vector_t<T>& q, const T& t, int n, const std::vector<int>* free_columns,
+                   std::vector<int>& bound, std::vector<int>& free) {
   const int s = con.count();
-  matrix_t<T> A(s, n);
-  vector_t<T> a(s);
+  // working storage borrowed (linalg/scratch.hpp); out's column lists reused
+  struct site;
+  const scratch<matrix_t<T>, site> A_held;
+  const scratch<vector_t<T>, site> a_held;
+  const scratch<Eigen::MatrixXd, site> Am_held;
+  const scratch<std::vector<bool>, site> used_held;
+  matrix_t<T>& A = *A_held;
+  vector_t<T>& a = *a_held;
+  Eigen::MatrixXd& Am = *Am_held;
+  std::vector<bool>& used = *used_held;
+  A.resize(s, n), a.resize(s), Am.resize(s, n);
   con.template eval<T>(q, t, A, a);
-  Eigen::MatrixXd Am(s, n);
   for (int i = 0; i < s; ++i)
     for (int j = 0; j < n; ++j) Am(i, j) = approx_double(A(i, j));
-  std::vector<int> bound, order(static_cast<std::size_t>(n));
-  std::iota(order.begin(), order.end(), 0);
-  std::vector<bool> used(static_cast<std::size_t>(n), false);
+  bound.clear();
+  used.assign(static_cast<std::size_t>(n), false);
   if (free_columns)
     for (int j : *free_columns) used[static_cast<std::size_t>(j)] = true;
   for (int r = 0; r < s; ++r) {  // Gaussian elimination with full column choice, on doubles
@@ -162,11 +204,50 @@ adapted_change<Constraint> adapt_speeds(const Constraint& con, const vector_t<T>
       Am.row(r2) -= f * Am.row(r);
     }
   }
-  if (free_columns) return {con, *free_columns, bound};
-  std::vector<int> free;
+  if (free_columns) {
+    free.assign(free_columns->begin(), free_columns->end());
+    return;
+  }
+  free.clear();
   for (int j = 0; j < n; ++j)
     if (!used[static_cast<std::size_t>(j)]) free.push_back(j);
-  return {con, free, bound};
 }
+}  // namespace detail
+template <Scalar T, class Constraint>
+adapted_change<Constraint> adapt_speeds(const Constraint& con, const vector_t<T>& q, const T& t, int n,
+                                        const std::vector<int>* free_columns = nullptr) {
+  std::vector<int> bound, free;
+  detail::choose_speeds<T>(con, q, t, n, free_columns, bound, free);
+  return {con, std::move(free), std::move(bound)};
+}
+/// The same into `out` (an assignable Constraint), its column lists reused.
+template <Scalar T, class Constraint>
+void adapt_speeds_into(const Constraint& con, const vector_t<T>& q, const T& t, int n, adapted_change<Constraint>& out,
+                       const std::vector<int>* free_columns = nullptr) {
+  detail::choose_speeds<T>(con, q, t, n, free_columns, out.bound_columns, out.free_columns);
+  out.con = con;
+}
+
+namespace detail {
+/// A change of speeds by reference: change_speeds(sys, change_ref{&change}, n) is the system in
+/// the new speeds without a copy of the change (an adapted_change's column lists).
+template <class Change>
+struct change_ref {
+  const Change* change;
+  template <class S>
+  vector_t<S> apply(const vector_t<S>& q, const vector_t<S>& v, const S& t) const {
+    return change->template apply<S>(q, v, t);
+  }
+  template <class S>
+  void apply_into(const vector_t<S>& q, const vector_t<S>& v, const S& t, vector_t<S>& u) const {
+    if constexpr (requires { change->template apply_into<S>(q, v, t, u); })
+      change->template apply_into<S>(q, v, t, u);
+    else
+      u = change->template apply<S>(q, v, t);
+  }
+};
+template <class Change>
+change_ref(const Change*) -> change_ref<Change>;
+}  // namespace detail
 
 }  // namespace appell

@@ -21,11 +21,22 @@ T inertia_virtual_work(const Sys& sys, const vector_t<T>& q, const vector_t<T>& 
   // accelerations), slot 1 with (0, du, 0) (the displacements); the values are
   // the plain evaluation's.
   using D = multi_dual<T, 2>;
-  const vector_t<T> qd = sys.template qdot<T>(q, u, t);
-  vector_t<D> qs(q.size()), us(u.size());
+  // working storage borrowed (linalg/scratch.hpp)
+  struct site;
+  const scratch<vector_t<T>, site> qd_held;
+  const scratch<vector_t<D>, site> qs_held, us_held;
+  const scratch<std::vector<body_state<D>>, site> bodies_held;
+  if constexpr (requires { sys.template qdot_into<T>(q, u, t, *qd_held); })
+    sys.template qdot_into<T>(q, u, t, *qd_held);
+  else
+    *qd_held = sys.template qdot<T>(q, u, t);
+  const vector_t<T>& qd = *qd_held;
+  vector_t<D>&qs = *qs_held, &us = *us_held;
+  std::vector<body_state<D>>& bodies = *bodies_held;
+  qs.resize(q.size()), us.resize(u.size());
+  bodies.clear();
   for (Eigen::Index i = 0; i < q.size(); ++i) qs(i) = D(q(i), {qd(i), T(0)});
   for (Eigen::Index i = 0; i < u.size(); ++i) us(i) = D(u(i), {udot(i), du(i)});
-  std::vector<body_state<D>> bodies;
   sys.template bodies<D>(qs, us, D(t, {T(1), T(0)}), bodies);
   T work = T(0);
   for (const body_state<D>& b : bodies) {
@@ -43,9 +54,14 @@ T inertia_virtual_work(const Sys& sys, const vector_t<T>& q, const vector_t<T>& 
 template <Scalar T, class Sys>
 T virtual_work_residual(const Sys& sys, const appell_equations<T>& eq, const vector_t<T>& q,
                         const vector_t<T>& u, const T& t, const vector_t<T>& udot, const vector_t<T>& du) {
-  const vector_t<T> P = eq.P(udot);
+  // P = M u' + b, row by row as eq.P computes it (detail::product's sums), without the vector
   T pdu = T(0);
-  for (Eigen::Index i = 0; i < du.size(); ++i) pdu += P(i) * du(i);
+  for (Eigen::Index i = 0; i < du.size(); ++i) {
+    T sum = eq.M(i, 0) * udot(0);
+    for (Eigen::Index k = 1; k < eq.M.cols(); ++k) sum += eq.M(i, k) * udot(k);
+    const T P = sum + eq.b(i);
+    pdu += P * du(i);
+  }
   return pdu - inertia_virtual_work(sys, q, u, t, udot, du);
 }
 

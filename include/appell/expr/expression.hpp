@@ -154,10 +154,14 @@ template <class S>
 S expression::apply(op kind, const S& a, const S& b, const long* integer, const std::string& where) {
   using T = base_scalar_t<S>;
   using std::sin, std::cos, std::tan, std::exp, std::log, std::sqrt;
-  auto domain = [&](bool certainly_bad, bool possibly_bad, const std::string& what, const T& at) {
-    if (certainly_bad) throw input_error(where + ": " + what + " at the state (" + detail::describe(at) + ")");
+  // `what` a C string, its message built only when it is thrown: an evaluation makes no string
+  // per division, root or angle (tests/allocations.cpp counts the heap's calls)
+  auto domain = [&](bool certainly_bad, bool possibly_bad, const char* what, const T& at, const char* prefix = "") {
+    if (certainly_bad)
+      throw input_error(where + ": " + prefix + what + " at the state (" + detail::describe(at) + ")");
     if (possibly_bad)
-      throw certification_error(where + ": cannot exclude " + what + " at the state (" + detail::describe(at) + ")");
+      throw certification_error(where + ": cannot exclude " + prefix + what + " at the state (" +
+                                detail::describe(at) + ")");
   };
   // sin, cos, tan of |y| > 2^40 rad: no physical angle, and an argument
   // reduction that costs time in the exponent (MPFR, MPFI) or loses every digit (QD)
@@ -166,7 +170,7 @@ S expression::apply(op kind, const S& a, const S& b, const long* integer, const 
     const T limit(1099511627776.0);  // 2^40, exact in every scalar
     domain(certainly_positive(T(d - limit)) || certainly_negative(T(d + limit)),
            !(certainly_nonpositive(T(d - limit)) && certainly_nonnegative(T(d + limit))),
-           std::string(fn) + " of an angle beyond 2^40 rad", d);
+           " of an angle beyond 2^40 rad", d, fn);
   };
   switch (kind) {
     case op::add: return a + b;

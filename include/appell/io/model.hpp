@@ -12,7 +12,10 @@
 // names its results and checks; it applies no evaluation policy (appell::compute does).
 // A model whose checks cost work of their own may take the request instead,
 //     template <Scalar T> static evaluation<T> compute(const prepared<T>&, with_checks);
-// and leave them out for with_checks::no (its results unchanged, bit for bit).
+// and leave them out for with_checks::no (its results unchanged, bit for bit).  A model may
+// also write over an earlier evaluation, reusing its storage (appell::compute_into),
+//     template <Scalar T> static void compute_into(const prepared<T>&, evaluation<T>&, with_checks);
+// (evaluation_writer); the others' evaluations are assigned.
 // The module's header ends with APPELL_EXTERN_MODEL(<name>_model); its .cpp
 // defines the reader and APPELL_DEFINE_MODEL_ENTRY(<name>_model); CMake
 // generates the instantiations (one unit per model x scalar) and the registry
@@ -34,7 +37,7 @@ namespace appell {
 template <class Model, Scalar T>
 struct model_functions {
   static prepared_scene<T> prepare(const model_input& in);
-  static evaluation<T> compute(const void* p, with_checks checks);
+  static void compute(const void* p, evaluation<T>& e, with_checks checks);
 };
 
 template <class Model, Scalar T>
@@ -45,12 +48,14 @@ prepared_scene<T> model_functions<Model, T>::prepare(const model_input& in) {
 }
 
 template <class Model, Scalar T>
-evaluation<T> model_functions<Model, T>::compute(const void* p, with_checks checks) {
+void model_functions<Model, T>::compute(const void* p, evaluation<T>& e, with_checks checks) {
   const auto& prepared = *static_cast<const typename Model::template prepared<T>*>(p);
-  if constexpr (requires { Model::template compute<T>(prepared, checks); })
-    return Model::template compute<T>(prepared, checks);
+  if constexpr (requires { Model::template compute_into<T>(prepared, e, checks); })
+    Model::template compute_into<T>(prepared, e, checks);
+  else if constexpr (requires { Model::template compute<T>(prepared, checks); })
+    e = Model::template compute<T>(prepared, checks);
   else
-    return Model::template compute<T>(prepared);  // its checks always computed
+    e = Model::template compute<T>(prepared);  // its checks always computed
 }
 
 namespace detail {

@@ -16,6 +16,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <tuple>
 #include <vector>
 
@@ -138,15 +139,65 @@ named_result<T> scalar_result(std::string name, const T& v) {
 }
 }  // namespace detail
 
+/// Writes an evaluation's values over those of the evaluation it is given (compute_into: the same
+/// scene evaluated again), in the order they come: each name and value into the storage of the
+/// one at its place, so that an evaluation of the same scene takes nothing from the heap for
+/// them.  finish() drops what the earlier evaluation had beyond.
+template <Scalar T>
+class evaluation_writer {
+ public:
+  enum group_id { results, checks, derived };
+  explicit evaluation_writer(evaluation<T>& e) : e_(e) {}
+  /// name + suffix = v (name and suffix concatenated in place, never as a temporary string).
+  void scalar(group_id g, std::string_view name, const char* suffix, const T& v) {
+    named_result<T>& r = next(g, name, suffix, false);
+    r.values.resize(1);
+    r.values[0] = v;
+  }
+  void vector(group_id g, std::string_view name, const char* suffix, const vec3<T>& v) {
+    named_result<T>& r = next(g, name, suffix, true);
+    r.values.resize(3);
+    for (int i = 0; i < 3; ++i) r.values[static_cast<std::size_t>(i)] = v(i);
+  }
+  /// The evaluation's contacts' judgements, written whole (they hold strings of the values).
+  std::vector<contact_judgement>& contacts() { return e_.contacts; }
+  void finish() {
+    for (int g = 0; g < 3; ++g) group(static_cast<group_id>(g)).resize(written_[g]);
+  }
+
+ private:
+  std::vector<named_result<T>>& group(group_id g) {
+    return g == results ? e_.results : g == checks ? e_.checks : e_.derived;
+  }
+  named_result<T>& next(group_id g, std::string_view name, const char* suffix, bool is_vector) {
+    std::vector<named_result<T>>& v = group(g);
+    std::size_t& n = written_[g];
+    if (n == v.size()) v.emplace_back();
+    named_result<T>& r = v[n++];
+    r.name.assign(name);
+    r.name.append(suffix);
+    r.is_vector = is_vector;
+    return r;
+  }
+  evaluation<T>& e_;
+  std::size_t written_[3] = {0, 0, 0};
+};
+
 /// A scene's inputs converted to T and checked, ready to be computed any
 /// number of times (the timing loops of `tradeoff` and the benchmark).
 template <Scalar T>
 class prepared_scene {
  public:
-  using compute_fn = evaluation<T> (*)(const void*, with_checks);
+  using compute_fn = void (*)(const void*, evaluation<T>&, with_checks);
   prepared_scene(std::shared_ptr<const void> state, compute_fn f) : state_(std::move(state)), compute_(f) {}
   /// The model's dynamics alone (no evaluation policy: use appell::compute).
-  evaluation<T> run(with_checks checks = with_checks::yes) const { return compute_(state_.get(), checks); }
+  evaluation<T> run(with_checks checks = with_checks::yes) const {
+    evaluation<T> e;
+    compute_(state_.get(), e, checks);
+    return e;
+  }
+  /// The same into e, written over an earlier evaluation of this scene (its storage reused).
+  void run_into(evaluation<T>& e, with_checks checks = with_checks::yes) const { compute_(state_.get(), e, checks); }
   /// Keeps the scene's inputs alive as long as this (prepared state may point
   /// into them: a cone's compiled expressions do).
   void keep(std::shared_ptr<const model_input> inputs) { inputs_ = std::move(inputs); }
@@ -193,10 +244,13 @@ prepared_scene<T> prepare(const scene_input& scene) {
 /// (interval: one upward-rounding scope; mpfi: guard bits, results rounded outward).
 /// A value that is not finite (an overflow, or 0/0, in T) is never returned:
 /// certification_error names it (exit 3; a wider scalar may succeed).
+/// compute_into writes the evaluation over `e`, an earlier evaluation of the same scene or an
+/// empty one, reusing its storage (a warm evaluation of a system file takes nothing from the
+/// heap for its names and values); `e` is unspecified after an exception.
 template <Scalar T>
-evaluation<T> compute(const prepared_scene<T>& scene, with_checks checks = with_checks::yes) {
+void compute_into(const prepared_scene<T>& scene, evaluation<T>& e, with_checks checks = with_checks::yes) {
   const evaluation_scope<T> scope;
-  evaluation<T> e = scene.run(checks);
+  scene.run_into(e, checks);
   for (auto* group : {&e.results, &e.checks, &e.derived})
     for (auto& r : *group)
       for (std::size_t i = 0; i < r.values.size(); ++i) {
@@ -204,6 +258,11 @@ evaluation<T> compute(const prepared_scene<T>& scene, with_checks checks = with_
         if (!is_finite(r.values[i]))  // the name made only for the message
           require_finite(r.values[i], r.name + (r.is_vector ? "[" + std::to_string(i) + "]" : std::string()));
       }
+}
+template <Scalar T>
+evaluation<T> compute(const prepared_scene<T>& scene, with_checks checks = with_checks::yes) {
+  evaluation<T> e;
+  compute_into(scene, e, checks);
   return e;
 }
 
@@ -303,6 +362,7 @@ std::string format_text(const scene_input& scene, const evaluation<T>& e) {
 // generates from the list (cmake/instantiate.cmake).
 #define APPELL_SCENE_TEMPLATES(prefix, T)                                                  \
   prefix template prepared_scene<T> prepare<T>(const scene_input&);                        \
+  prefix template void compute_into<T>(const prepared_scene<T>&, evaluation<T>&, with_checks); \
   prefix template evaluation<T> compute<T>(const prepared_scene<T>&, with_checks);         \
   prefix template evaluation<T> evaluate<T>(const scene_input&, with_checks);              \
   prefix template std::string format_json<T>(const scene_input&, const evaluation<T>&);    \

@@ -28,6 +28,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "appell/linalg/scratch.hpp"
 #include "appell/scalar/eigen.hpp"
 #include "appell/scalar/policy.hpp"
 
@@ -116,11 +117,25 @@ template <class DM>
 /// interval ones.
 /// DM: a double matrix type, IMA/IMC: interval matrix types (heap or
 /// fixed-capacity storage).
+/// A dynamic DM's five matrices are borrowed (linalg/scratch.hpp), a fixed-capacity one's are on
+/// the stack; the same operations either way.
 template <class DM, class IMA, class IMC>
 void identity_minus_product_into(const DM& R, const IMA& A, IMC& C) {
   const Eigen::Index n = A.rows();
-  DM Am(n, n), Ar(n, n);
-  DM up(n, n), neg_down(n, n), rad(n, n);
+  constexpr bool borrowed = DM::MaxRowsAtCompileTime == Eigen::Dynamic;
+  struct site;
+  std::optional<scratch<DM, site>> held[5];
+  DM local[borrowed ? 1 : 5];
+  auto matrix = [&](int k) -> DM& {
+    if constexpr (borrowed) {
+      held[k].emplace();
+      return *held[k].value();
+    } else {
+      return local[k];
+    }
+  };
+  DM &Am = matrix(0), &Ar = matrix(1), &up = matrix(2), &neg_down = matrix(3), &rad = matrix(4);
+  for (DM* M : {&Am, &Ar, &up, &neg_down, &rad}) M->resize(n, n);
   {
     const upward_rounding mode;
     for (Eigen::Index i = 0; i < n; ++i)
@@ -158,11 +173,17 @@ inline constexpr double max_contraction = 1.0 / 1024;
 /// (identity_minus_product), or nullopt if some row sum of |C| exceeds max_contraction.
 /// IV: an interval vector type (heap or fixed-capacity storage).
 template <class DM, class IM, class IV>
-std::optional<IV> residual_enclosure(const DM& R, const IM& C, const IV& r) {
+bool residual_enclosure_into(const DM& R, const IM& C, const IV& r, IV& z) {
   const Eigen::Index n = C.rows();
   const upward_rounding mode;  // plain double operations below round upward
   const auto opaque = [](double v) { return interval_arith::opaque(v); };
-  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, IV::MaxRowsAtCompileTime, 1> row_sum(n);
+  using sums = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, IV::MaxRowsAtCompileTime, 1>;
+  struct site;
+  std::optional<scratch<sums, site>> held;  // a dynamic IV's row sums borrowed (linalg/scratch.hpp)
+  sums local;
+  if constexpr (IV::MaxRowsAtCompileTime == Eigen::Dynamic) held.emplace();
+  sums& row_sum = held ? **held : local;
+  row_sum.resize(n);
   double beta = 0;
   for (Eigen::Index i = 0; i < n; ++i) {
     double s = 0;
@@ -170,8 +191,8 @@ std::optional<IV> residual_enclosure(const DM& R, const IM& C, const IV& r) {
     row_sum(i) = s;
     if (!(s <= beta)) beta = s;  // a NaN row sum makes beta NaN
   }
-  if (!(beta <= max_contraction)) return std::nullopt;
-  IV z(n);
+  if (!(beta <= max_contraction)) return false;
+  z.resize(n);
   double z_max = 0;
   for (Eigen::Index i = 0; i < n; ++i) {
     interval s(0);
@@ -180,7 +201,7 @@ std::optional<IV> residual_enclosure(const DM& R, const IM& C, const IV& r) {
     z(i) = s;
     z_max = std::max(z_max, std::max(-s.lower(), s.upper()));
   }
-  if (!(z_max <= std::numeric_limits<double>::max())) return std::nullopt;
+  if (!(z_max <= std::numeric_limits<double>::max())) return false;
   const double one_minus_beta_down = -opaque(opaque(beta) - 1.0);  // 1 - beta rounded down (> 0)
   const double eps = opaque(opaque(z_max) / one_minus_beta_down);  // >= ||e||_inf, rounded up
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -188,7 +209,13 @@ std::optional<IV> residual_enclosure(const DM& R, const IM& C, const IV& r) {
     z(i) += interval(-delta, delta, true);
   }
   for (Eigen::Index i = 0; i < n; ++i)
-    if (!is_finite(z(i))) return std::nullopt;
+    if (!is_finite(z(i))) return false;
+  return true;
+}
+template <class DM, class IM, class IV>
+std::optional<IV> residual_enclosure(const DM& R, const IM& C, const IV& r) {
+  IV z;
+  if (!residual_enclosure_into(R, C, r, z)) return std::nullopt;
   return z;
 }
 
@@ -199,6 +226,8 @@ std::optional<IV> residual_enclosure(const DM& R, const IM& C, const IV& r) {
 /// does not apply or the midpoint is singular (the general path then decides).
 inline constexpr Eigen::Index small_system_max = 12;
 std::optional<vector_t<interval>> small_interval_solve(const matrix_t<interval>& A, const vector_t<interval>& b);
+/// The same into x (of its size already: no allocation); false where it does not apply.
+bool small_interval_solve_into(const matrix_t<interval>& A, const vector_t<interval>& b, vector_t<interval>& x);
 /// mpfi systems by the residual bound: x~ by mpfr LU, r = b - A x~ in mpfi,
 /// the rest in double.  nullopt where it does not apply (the caller falls back).
 std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const vector_t<mpfi>& b);
@@ -329,6 +358,79 @@ vector_t<I> verified_solve(const matrix_t<I>& A, const vector_t<I>& b) {
   return detail::residual_or_krawczyk_solve(A, b, /*try_residual_bound=*/true);
 }
 
+namespace detail {
+/// residual_or_krawczyk_solve's residual bound for an interval system of more than
+/// small_system_max unknowns, every matrix borrowed (linalg/scratch.hpp): the same operations on
+/// the same types in the same order, so the same enclosure; false where the bound does not give
+/// one (verified_solve then decides: Krawczyk's iteration, or the refusal).
+template <class Site>
+bool residual_solve_into(const matrix_t<interval>& A, const vector_t<interval>& b, vector_t<interval>& x) {
+  using P = double;
+  const Eigen::Index n = A.rows();
+  const scratch<matrix_t<P>, Site> Am_held, R_held;
+  const scratch<vector_t<P>, Site> bm_held, xt_held, t_held, u_held;
+  const scratch<Eigen::PartialPivLU<matrix_t<P>>, Site> lu;
+  const scratch<vector_t<interval>, Site> xI_held, residual_held, e_held;
+  const scratch<matrix_t<interval>, Site> C_held;
+  matrix_t<P>&Am = *Am_held, &R = *R_held;
+  vector_t<P>&bm = *bm_held, &xt = *xt_held, &t = *t_held, &u = *u_held;
+  vector_t<interval>&xI = *xI_held, &residual = *residual_held, &e = *e_held;
+  Am.resize(n, n), bm.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    bm(i) = mid(b(i));
+    for (Eigen::Index j = 0; j < n; ++j) Am(i, j) = mid(A(i, j));
+  }
+  lu->compute(Am);
+  using std::abs;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (!(abs(lu->matrixLU()(i, i)) > 0)) return false;
+  // lu.inverse()'s steps (P I, then the two triangular solves in place), without the copy of the
+  // factors that assigning an Inverse expression makes
+  R = lu->solve(matrix_t<P>::Identity(n, n));
+  if (!R.allFinite()) return false;
+  xt.noalias() = R * bm;
+  // xt += R * (bm - Am * xt), as Eigen evaluates it there: Am xt, the difference, R times it,
+  // each into a vector of its own, then the sum
+  t.noalias() = Am * xt;
+  t = bm - t;
+  u.noalias() = R * t;
+  xt += u;
+  xI = xt.unaryExpr([](const P& p) { return thin<interval>(p); });
+  residual.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i) {  // b - A x~, as detail::product sums
+    interval sum = A(i, 0) * xI(0);
+    for (Eigen::Index k = 1; k < n; ++k) sum += A(i, k) * xI(k);
+    residual(i) = b(i) - sum;
+  }
+  identity_minus_product_into(R, A, *C_held);
+  if (!residual_enclosure_into(R, *C_held, residual, e)) return false;
+  x.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i) x(i) = xI(i) + e(i);
+  return true;
+}
+}  // namespace detail
+
+/// verified_solve into x: for interval systems, the residual bound into x's storage (at most
+/// small_system_max unknowns on the stack, more in borrowed storage), the same enclosure as
+/// verified_solve's; where the bound does not apply, verified_solve itself.
+template <class Site = void, Scalar I>
+  requires(scalar_traits<I>::is_interval)
+void verified_solve_into(const matrix_t<I>& A, const vector_t<I>& b, vector_t<I>& x) {
+  if constexpr (std::is_same_v<I, interval>) {
+    detail::check_square(A, b.rows());
+    const Eigen::Index n = A.rows();
+    bool finite = true;
+    for (Eigen::Index i = 0; i < n && finite; ++i) {
+      finite = is_finite(b(i));
+      for (Eigen::Index j = 0; j < n && finite; ++j) finite = is_finite(A(i, j));
+    }
+    // verified_solve's own path (residual_or_krawczyk_solve: this bound first), or its refusal
+    if (finite && n > 0 && n <= detail::small_system_max && detail::small_interval_solve_into(A, b, x)) return;
+    if (finite && n > detail::small_system_max && detail::residual_solve_into<Site>(A, b, x)) return;
+  }
+  x = verified_solve(A, b);
+}
+
 template <Scalar T>
 vector_t<T> solve(const matrix_t<T>& A, const vector_t<T>& b);
 
@@ -341,10 +443,62 @@ vector_t<T> solve_spd(const matrix_t<T>& A, const vector_t<T>& b) {
     return solve(A, b);  // exact rationals have no square root: LU is exact
   } else {
     detail::check_square(A, b.rows());
-    Eigen::LLT<matrix_t<T>> llt(A);
-    if (llt.info() != Eigen::Success)
+    struct site;
+    const scratch<Eigen::LLT<matrix_t<T>>, site> llt;  // the factor's storage reused (linalg/scratch.hpp)
+    llt->compute(A);
+    if (llt->info() != Eigen::Success)
       throw certification_error("Cholesky: the matrix is not positive definite");
-    return llt.solve(b);
+    return llt->solve(b);
+  }
+}
+
+/// The same into x (point types: the factor's and x's storage reused, no allocation when they
+/// have their sizes already; interval types: x assigned the verified solve's result).
+namespace detail {
+/// The scalars whose solves run here (the others, numbers carrying derivatives, have overloads
+/// of solve and solve_spd of their own: derivatives/, found by argument-dependent lookup).
+template <class T>
+inline constexpr bool solved_here = std::is_same_v<T, double> || std::is_same_v<T, long double> ||
+                                    std::is_same_v<T, dd> || std::is_same_v<T, float128> ||
+                                    std::is_same_v<T, mpfr> || std::is_same_v<T, interval> || std::is_same_v<T, mpfi>;
+}  // namespace detail
+
+/// Site: the caller's tag for the factor's storage (linalg/scratch.hpp: an Eigen object keeps one
+/// size, so each caller whose systems have a size of their own keeps a factor of its own).
+template <class Site = void, class T>  // T unconstrained: the derivative types go to their own overloads
+void solve_spd_into(const matrix_t<T>& A, const vector_t<T>& b, vector_t<T>& x) {
+  if constexpr (!detail::solved_here<T>) {
+    x = solve_spd(A, b);  // an overload of the type's own, or the exact types' LU
+  } else if constexpr (scalar_traits<T>::is_interval) {
+    verified_solve_into<Site>(A, b, x);
+  } else {
+    detail::check_square(A, b.rows());
+    const scratch<Eigen::LLT<matrix_t<T>>, Site> llt;
+    llt->compute(A);
+    if (llt->info() != Eigen::Success)
+      throw certification_error("Cholesky: the matrix is not positive definite");
+    x.resize(b.rows());
+    x = llt->solve(b);
+  }
+}
+
+/// The same into x (point types: the factors' and x's storage reused; interval types:
+/// verified_solve_into).
+template <class Site = void, class T>  // as solve_spd_into
+void solve_into(const matrix_t<T>& A, const vector_t<T>& b, vector_t<T>& x) {
+  if constexpr (!detail::solved_here<T>) {
+    x = solve(A, b);  // an overload of the type's own, or the exact types' LU
+  } else if constexpr (scalar_traits<T>::is_interval) {
+    verified_solve_into<Site>(A, b, x);
+  } else {
+    detail::check_square(A, b.rows());
+    const scratch<Eigen::PartialPivLU<matrix_t<T>>, Site> lu;
+    lu->compute(A);
+    using std::abs;
+    for (Eigen::Index i = 0; i < A.rows(); ++i)
+      if (!(abs(lu->matrixLU()(i, i)) > 0)) throw certification_error("LU: the matrix is singular");
+    x.resize(b.rows());
+    x = lu->solve(b);
   }
 }
 
@@ -355,11 +509,13 @@ vector_t<T> solve(const matrix_t<T>& A, const vector_t<T>& b) {
     return verified_solve(A, b);
   } else {
     detail::check_square(A, b.rows());
-    Eigen::PartialPivLU<matrix_t<T>> lu(A);
+    struct site;
+    const scratch<Eigen::PartialPivLU<matrix_t<T>>, site> lu;  // the factors' storage reused
+    lu->compute(A);
     using std::abs;
     for (Eigen::Index i = 0; i < A.rows(); ++i)
-      if (!(abs(lu.matrixLU()(i, i)) > 0)) throw certification_error("LU: the matrix is singular");
-    return lu.solve(b);
+      if (!(abs(lu->matrixLU()(i, i)) > 0)) throw certification_error("LU: the matrix is singular");
+    return lu->solve(b);
   }
 }
 

@@ -40,18 +40,37 @@ vector_t<T> cotton_speeds(const Sys& sys, const vector_t<T>& v_a, int s, const c
 }
 }  // namespace detail
 
-/// The last s speeds of `sys` are constrained to 0; v_a holds the other k.
+/// The last s speeds of `sys` are constrained to 0; v_a holds the other k.  Into r, whose
+/// storage is reused (no allocation for point types once the sizes are known).
+template <Scalar T, class Sys>
+void cotton_reactions_into(const Sys& sys, const vector_t<T>& q, const vector_t<T>& v_a, const T& t, int s,
+                           cotton_result<T>& r) {
+  const int k = static_cast<int>(v_a.size()), n = k + s;
+  if (sys.speeds() != n) throw std::invalid_argument("cotton_reactions: k + s differs from the system's speeds");
+  // working storage borrowed (linalg/scratch.hpp)
+  struct site;
+  const scratch<vector_t<T>, site> v_held, rhs_held;
+  const scratch<matrix_t<T>, site> Maa_held;
+  vector_t<T>&v = *v_held, &rhs = *rhs_held;
+  v.setZero(n);
+  v.head(k) = v_a;
+  gibbs_appell_into(sys, q, v, t, r.equations);
+  const appell_equations<T>& e = r.equations;
+  *Maa_held = e.M.topLeftCorner(k, k);
+  rhs = e.Q.head(k) - e.b.head(k);
+  solve_spd_into<site>(*Maa_held, rhs, r.free_accelerations);
+  // (13) v_c' = 0, then (14): M_ca v_a' + b_c - Q_c, M_ca v_a' by detail::product's sums
+  r.reactions.resize(s);
+  for (int i = 0; i < s; ++i) {
+    T sum = k > 0 ? T(e.M(k + i, 0) * r.free_accelerations(0)) : T(0);
+    for (int j = 1; j < k; ++j) sum += e.M(k + i, j) * r.free_accelerations(j);
+    r.reactions(i) = sum + e.b(k + i) - e.Q(k + i);
+  }
+}
 template <Scalar T, class Sys>
 cotton_result<T> cotton_reactions(const Sys& sys, const vector_t<T>& q, const vector_t<T>& v_a, const T& t, int s) {
-  const int k = static_cast<int>(v_a.size());
-  const vector_t<T> v = detail::cotton_speeds(sys, v_a, s, "cotton_reactions");
-  cotton_result<T> r{vector_t<T>(), vector_t<T>(), gibbs_appell(sys, q, v, t)};
-  const appell_equations<T>& e = r.equations;
-  const matrix_t<T> Maa = e.M.topLeftCorner(k, k);
-  r.free_accelerations = solve_spd(Maa, vector_t<T>(e.Q.head(k) - e.b.head(k)));
-  // (13) v_c' = 0, then (14)
-  const matrix_t<T> Mca = e.M.bottomLeftCorner(s, k);
-  r.reactions = detail::product(Mca, r.free_accelerations) + e.b.tail(s) - e.Q.tail(s);
+  cotton_result<T> r;
+  cotton_reactions_into(sys, q, v_a, t, s, r);
   return r;
 }
 
@@ -76,27 +95,52 @@ struct constrained_motion {
 };
 
 namespace detail {
-/// u' = d/dt u(q, v, t) with v' = (v_a', 0): one dual pass through the change of speeds.
+/// u' = d/dt u(q, v, t) with v' = (v_a', 0): one dual pass through the change of speeds, into udot.
+template <Scalar T, class Adapted, class Change>
+void original_accelerations_into(const Adapted& adapted, const Change& change, const vector_t<T>& q,
+                                 const vector_t<T>& v_a, const vector_t<T>& v_a_dot, const T& t, vector_t<T>& udot) {
+  const int n = adapted.speeds(), k = static_cast<int>(v_a.size());
+  // working storage borrowed (linalg/scratch.hpp)
+  struct site;
+  const scratch<vector_t<T>, site> v_held, vdot_held, qd_held;
+  const scratch<vector_t<dual<T>>, site> qs_held, vs_held, ud_held;
+  vector_t<T>&v = *v_held, &vdot = *vdot_held, &qd = *qd_held;
+  v.setZero(n), vdot.setZero(n);
+  v.head(k) = v_a;
+  vdot.head(k) = v_a_dot;
+  if constexpr (requires { adapted.template qdot_into<T>(q, v, t, qd); })
+    adapted.template qdot_into<T>(q, v, t, qd);
+  else
+    qd = adapted.template qdot<T>(q, v, t);
+  vector_t<dual<T>>&qs = *qs_held, &vs = *vs_held, &ud = *ud_held;  // detail::seeded's values
+  qs.resize(q.size()), vs.resize(n);
+  for (Eigen::Index i = 0; i < q.size(); ++i) qs(i) = dual<T>(q(i), qd(i));
+  for (int i = 0; i < n; ++i) vs(i) = dual<T>(v(i), vdot(i));
+  if constexpr (requires { change.template apply_into<dual<T>>(qs, vs, dual<T>(t, T(1)), ud); })
+    change.template apply_into<dual<T>>(qs, vs, dual<T>(t, T(1)), ud);
+  else
+    ud = change.template apply<dual<T>>(qs, vs, dual<T>(t, T(1)));
+  udot.resize(n);
+  for (int i = 0; i < n; ++i) udot(i) = ud(i).d;
+}
 template <Scalar T, class Adapted, class Change>
 vector_t<T> original_accelerations(const Adapted& adapted, const Change& change, const vector_t<T>& q,
                                    const vector_t<T>& v_a, const vector_t<T>& v_a_dot, const T& t) {
-  const int n = adapted.speeds(), k = static_cast<int>(v_a.size());
-  vector_t<T> v = vector_t<T>::Zero(n), vdot = vector_t<T>::Zero(n);
-  v.head(k) = v_a;
-  vdot.head(k) = v_a_dot;
-  const vector_t<T> qd = adapted.template qdot<T>(q, v, t);
-  const vector_t<dual<T>> ud = change.template apply<dual<T>>(detail::seeded<T>(q, &qd), detail::seeded<T>(v, &vdot),
-                                                              dual<T>(t, T(1)));
-  vector_t<T> udot(n);
-  for (int i = 0; i < n; ++i) udot(i) = ud(i).d;
+  vector_t<T> udot;
+  original_accelerations_into(adapted, change, q, v_a, v_a_dot, t, udot);
   return udot;
 }
 /// The free speeds v_a: u's components on the change's free columns.
 template <Scalar T, class Constraint>
-vector_t<T> free_speeds(const adapted_change<Constraint>& change, const vector_t<T>& u) {
+void free_speeds_into(const adapted_change<Constraint>& change, const vector_t<T>& u, vector_t<T>& v_a) {
   const auto k = static_cast<Eigen::Index>(change.free_columns.size());
-  vector_t<T> v_a(k);
+  v_a.resize(k);
   for (Eigen::Index i = 0; i < k; ++i) v_a(i) = u(change.free_columns[static_cast<std::size_t>(i)]);
+}
+template <Scalar T, class Constraint>
+vector_t<T> free_speeds(const adapted_change<Constraint>& change, const vector_t<T>& u) {
+  vector_t<T> v_a;
+  free_speeds_into(change, u, v_a);
   return v_a;
 }
 }  // namespace detail
@@ -106,15 +150,27 @@ vector_t<T> free_speeds(const adapted_change<Constraint>& change, const vector_t
 /// Appell equations of change_speeds(sys, change, n) at (q, (v_a, 0), t), which
 /// the method computes anyway (for checks such as eq. (4) in the adapted speeds).
 template <Scalar T, class Sys, class Constraint>
+void cotton_reactions_into(const Sys& sys, const adapted_change<Constraint>& change, const vector_t<T>& q,
+                           const vector_t<T>& u, const T& t, constrained_motion<T>& out,
+                           appell_equations<T>* adapted_equations = nullptr) {
+  const int n = sys.speeds(), s = change.con.count();
+  const auto adapted = change_speeds(sys, detail::change_ref{&change}, n);  // no copy of the change
+  struct site;
+  const scratch<vector_t<T>, site> v_a;  // borrowed (linalg/scratch.hpp)
+  const scratch<cotton_result<T>, site> c;
+  detail::free_speeds_into(change, u, *v_a);
+  cotton_reactions_into(adapted, q, *v_a, t, s, *c);
+  if (adapted_equations) *adapted_equations = c->equations;  // into its storage
+  detail::original_accelerations_into(adapted, change, q, *v_a, c->free_accelerations, t, out.accelerations);
+  out.reactions = c->reactions;
+}
+template <Scalar T, class Sys, class Constraint>
 constrained_motion<T> cotton_reactions(const Sys& sys, const adapted_change<Constraint>& change,
                                        const vector_t<T>& q, const vector_t<T>& u, const T& t,
                                        appell_equations<T>* adapted_equations = nullptr) {
-  const int n = sys.speeds(), s = change.con.count();
-  const auto adapted = change_speeds(sys, change, n);
-  const vector_t<T> v_a = detail::free_speeds(change, u);
-  const cotton_result<T> c = cotton_reactions(adapted, q, v_a, t, s);
-  if (adapted_equations) *adapted_equations = c.equations;
-  return {detail::original_accelerations(adapted, change, q, v_a, c.free_accelerations, t), c.reactions};
+  constrained_motion<T> out;
+  cotton_reactions_into(sys, change, q, u, t, out, adapted_equations);
+  return out;
 }
 
 /// cotton_reactions' u' alone, the same numbers bit for bit, without the reactions (empty): the
@@ -123,7 +179,7 @@ template <int Slots, Scalar T, class Sys, class Constraint>
 vector_t<T> cotton_free_motion(const Sys& sys, const adapted_change<Constraint>& change, const vector_t<T>& q,
                                const vector_t<T>& u, const T& t) {
   const int n = sys.speeds(), s = change.con.count();
-  const auto adapted = change_speeds(sys, change, n);
+  const auto adapted = change_speeds(sys, detail::change_ref{&change}, n);  // no copy of the change
   const vector_t<T> v_a = detail::free_speeds(change, u);
   const vector_t<T> free_acc = cotton_free_accelerations<Slots>(adapted, q, v_a, t, s);
   return detail::original_accelerations(adapted, change, q, v_a, free_acc, t);

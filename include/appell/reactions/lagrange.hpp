@@ -8,31 +8,49 @@
 // A u = a: it equals Cotton's Q'_c in the speeds adapted with v_c = A u - a.
 #pragma once
 
+#include "appell/linalg/scratch.hpp"
 #include "appell/reactions/cotton.hpp"
 
 namespace appell {
 
 template <Scalar T, class Sys, class Constraint>
-constrained_motion<T> lagrange_multipliers(const Sys& sys, const Constraint& con, const vector_t<T>& q,
-                                           const vector_t<T>& u, const T& t) {
+void lagrange_multipliers_into(const Sys& sys, const Constraint& con, const vector_t<T>& q, const vector_t<T>& u,
+                               const T& t, constrained_motion<T>& out) {
   const int n = sys.speeds(), s = con.count();
-  const appell_equations<T> e = gibbs_appell(sys, q, u, t);
-  matrix_t<T> A(s, n);
-  vector_t<T> a(s);
+  struct site;  // this function's pools (linalg/scratch.hpp: an Eigen object keeps one size)
+  const scratch<appell_equations<T>, site> e_held;
+  const appell_equations<T>& e = *e_held;
+  gibbs_appell_into(sys, q, u, t, *e_held);
+  // working storage borrowed (linalg/scratch.hpp)
+  const scratch<matrix_t<T>, site> A_held, K_held;
+  const scratch<vector_t<T>, site> a_held, h_held, rhs_held;
+  const scratch<matrix_t<dual<T>>, site> Ad_held;
+  const scratch<vector_t<dual<T>>, site> ad_held;
+  matrix_t<T>&A = *A_held, &K = *K_held;
+  vector_t<T>&a = *a_held, &h = *h_held, &rhs = *rhs_held;
+  matrix_t<dual<T>>& Ad = *Ad_held;
+  vector_t<dual<T>>& ad = *ad_held;
+  A.resize(s, n), a.resize(s), Ad.resize(s, n), ad.resize(s), h.resize(s);
   con.template eval<T>(q, t, A, a);
   // h = d/dt (A u - a) at fixed u.
-  const vector_t<T> qd = sys.template qdot<T>(q, u, t);
-  matrix_t<dual<T>> Ad(s, n);
-  vector_t<dual<T>> ad(s);
-  con.template eval<dual<T>>(detail::seeded<T>(q, &qd), dual<T>(t, T(1)), Ad, ad);
-  vector_t<T> h(s);
+  const scratch<vector_t<T>, site> qd_held;
+  const scratch<vector_t<dual<T>>, site> qs_held;
+  vector_t<T>& qd = *qd_held;
+  if constexpr (requires { sys.template qdot_into<T>(q, u, t, qd); })
+    sys.template qdot_into<T>(q, u, t, qd);
+  else
+    qd = sys.template qdot<T>(q, u, t);
+  vector_t<dual<T>>& qs = *qs_held;  // detail::seeded's values
+  qs.resize(q.size());
+  for (Eigen::Index i = 0; i < q.size(); ++i) qs(i) = dual<T>(q(i), qd(i));
+  con.template eval<dual<T>>(qs, dual<T>(t, T(1)), Ad, ad);
   for (int i = 0; i < s; ++i) {
     T x = -ad(i).d;
     for (int j = 0; j < n; ++j) x += Ad(i, j).d * u(j);
     h(i) = x;
   }
-  matrix_t<T> K = matrix_t<T>::Zero(n + s, n + s);
-  vector_t<T> rhs(n + s);
+  K.setZero(n + s, n + s);
+  rhs.resize(n + s);
   K.topLeftCorner(n, n) = e.M;
   for (int i = 0; i < s; ++i)
     for (int j = 0; j < n; ++j) {
@@ -41,8 +59,18 @@ constrained_motion<T> lagrange_multipliers(const Sys& sys, const Constraint& con
     }
   rhs.head(n) = e.Q - e.b;
   rhs.tail(s) = -h;
-  const vector_t<T> x = solve(K, rhs);
-  return {x.head(n), x.tail(s)};
+  const scratch<vector_t<T>, site> x_held;
+  const vector_t<T>& x = *x_held;
+  solve_into<site>(K, rhs, *x_held);
+  out.accelerations = x.head(n);  // into out's storage
+  out.reactions = x.tail(s);
+}
+template <Scalar T, class Sys, class Constraint>
+constrained_motion<T> lagrange_multipliers(const Sys& sys, const Constraint& con, const vector_t<T>& q,
+                                           const vector_t<T>& u, const T& t) {
+  constrained_motion<T> out;
+  lagrange_multipliers_into(sys, con, q, u, t, out);
+  return out;
 }
 
 /// A u - a at the state: the constraints' residual (0 on a consistent state).

@@ -19,13 +19,13 @@ struct contact_force_result {
 /// for a body given by rotations; for a body given by omega (affine in u),
 ///   dv_P/du_j = sum_i dG/dq_i dq'_i/du_j + domega/du_j x (P - G),  domega/du_j from the file.
 template <Scalar T, class S>
-matrix_t<S> contact_twist_jacobian(const compiled_system<T>& c, const typename compiled_system<T>::contact& k,
-                                   const S* v) {
-  if (!k.omega_body) return point_twist_jacobian<T, S>(c, k.frame, v);
+void contact_twist_jacobian_into(const compiled_system<T>& c, const typename compiled_system<T>::contact& k,
+                                 const S* v, matrix_t<S>& J) {
+  if (!k.omega_body) return point_twist_jacobian_into<T, S>(c, k.frame, v, J);
   const int n = c.def->vars.speeds;
   vec3<S> rel;
   for (int i = 0; i < 3; ++i) rel(i) = k.frame.rel[static_cast<std::size_t>(i)].at(v);
-  matrix_t<S> J = matrix_t<S>::Zero(6, n);
+  J.setZero(6, n);
   for (int x = 0; x < 3; ++x)
     for (const auto& [i, d] : k.frame.center[static_cast<std::size_t>(x)].dq) {
       const S g = d.at(v);
@@ -42,6 +42,12 @@ matrix_t<S> contact_twist_jacobian(const compiled_system<T>& c, const typename c
     const vec3<S> m = cross(w, rel);
     for (int r = 0; r < 3; ++r) J(r, j) += m(r);
   }
+}
+template <Scalar T, class S>
+matrix_t<S> contact_twist_jacobian(const compiled_system<T>& c, const typename compiled_system<T>::contact& k,
+                                   const S* v) {
+  matrix_t<S> J;
+  contact_twist_jacobian_into<T, S>(c, k, v, J);
   return J;
 }
 
@@ -52,21 +58,29 @@ matrix_t<S> contact_twist_jacobian(const compiled_system<T>& c, const typename c
 /// the normal constraint's own term taken as side Q' |d_normal| (no tangential part),
 /// exactly, so that intervals do not widen it.  S: T, or jets of T (over a whole step).
 template <Scalar T, class S = T>
-std::vector<contact_force_result<S>> contact_forces(const compiled_system<T>& c, const vector_t<S>& q, const S& t,
-                                                    const vector_t<S>& reactions) {
-  std::vector<contact_force_result<S>> out;
-  if (c.contacts.empty()) return out;
+void contact_forces_into(const compiled_system<T>& c, const vector_t<S>& q, const S& t, const vector_t<S>& reactions,
+                         std::vector<contact_force_result<S>>& out) {
+  out.clear();
+  if (c.contacts.empty()) return;
   using std::sqrt;
   const int n = c.def->vars.speeds, s = static_cast<int>(c.constraints.size());
-  const vector_t<S> u0 = vector_t<S>::Zero(n);
-  const std::vector<S> values = c.evaluate(c.constraint_tape, c.template variables<S>(q, u0, t));
-  const S* v = values.data();
-  matrix_t<S> A;
-  vector_t<S> a;
+  struct site;  // working storage borrowed (linalg/scratch.hpp)
+  const scratch<vector_t<S>, site> u0, a_held, g_held, rhs_held, w_held;
+  const scratch<std::vector<S>, site> x_held, values_held;
+  const scratch<matrix_t<S>, site> A_held, J_held, N_held;
+  const scratch<std::vector<vec3<S>>, site> d_held, m_held;
+  u0->setZero(n);
+  c.variables_into(q, *u0, t, *x_held);
+  c.evaluate_into(c.constraint_tape, *x_held, *values_held);
+  const S* v = values_held->data();
+  matrix_t<S>& A = *A_held;
+  vector_t<S>& a = *a_held;
+  bool have_A = false;
   for (std::size_t k = 0; k < c.contacts.size(); ++k) {
     const auto& ck = c.contacts[k];
     const system_contact_definition& dk = c.def->contacts[k];
-    std::vector<vec3<S>> d, m;
+    std::vector<vec3<S>>&d = *d_held, &m = *m_held;
+    d.clear(), m.clear();
     if (ck.frame.body < 0) {
       for (int r : dk.constraints) {
         vec3<S> x;
@@ -75,16 +89,20 @@ std::vector<contact_force_result<S>> contact_forces(const compiled_system<T>& c,
         m.push_back(zero_matrix<vec3<S>>());
       }
     } else {
-      if (A.size() == 0) {
+      if (!have_A) {
         A.resize(s, n);
         a.resize(s);
         expression_constraints<T>{&c}.template eval<S>(q, t, A, a);
+        have_A = true;
       }
-      const matrix_t<S> J = contact_twist_jacobian<T, S>(c, ck, v);
+      const matrix_t<S>& J = *J_held;
+      contact_twist_jacobian_into<T, S>(c, ck, v, *J_held);
       for (int r : dk.constraints) {
-        const vector_t<S> g = A.row(r).transpose();
-        const auto [N, rhs] = wrench_normal_equations(J, g);
-        const vector_t<S> w = solve_spd(N, rhs);
+        vector_t<S>& g = *g_held;
+        g = A.row(r).transpose();
+        wrench_normal_equations_into(J, g, *N_held, *rhs_held);
+        const vector_t<S>& w = *w_held;
+        solve_spd_into<site>(*N_held, *rhs_held, *w_held);
         d.push_back(vec3<S>(w(0), w(1), w(2)));
         m.push_back(vec3<S>(w(3), w(4), w(5)));
       }
@@ -115,6 +133,12 @@ std::vector<contact_force_result<S>> contact_forces(const compiled_system<T>& c,
     }
     out.push_back(std::move(res));
   }
+}
+template <Scalar T, class S = T>
+std::vector<contact_force_result<S>> contact_forces(const compiled_system<T>& c, const vector_t<S>& q, const S& t,
+                                                    const vector_t<S>& reactions) {
+  std::vector<contact_force_result<S>> out;
+  contact_forces_into(c, q, t, reactions, out);
   return out;
 }
 

@@ -40,22 +40,34 @@ struct joint_wrench_result {
 /// efforts Appell's equations give, per coordinate); null: the links' own efforts (forward
 /// dynamics: they act in the bodies' forces, and each wrench carries its joint's).
 template <Scalar T>
-std::vector<joint_wrench_result<T>> joint_wrenches(const compiled_system<T>& c, const vector_t<T>& q,
-                                                   const vector_t<T>& u, const T& t, const vector_t<T>& udot,
-                                                   const vector_t<T>* efforts = nullptr) {
+void joint_wrenches_into(const compiled_system<T>& c, const vector_t<T>& q, const vector_t<T>& u, const T& t,
+                         const vector_t<T>& udot, const vector_t<T>* efforts,
+                         std::vector<joint_wrench_result<T>>& out) {
   using K = system_joint_definition::kind;
   using link = typename compiled_system<T>::link;
   const expression_system<T> sys{&c};
-  const std::vector<body_kinematics<T>> kin = differentiate_kinematics(sys, q, u, t);
-  const std::vector<T> x = c.template variables<T>(q, u, t);
-  const std::vector<T> values = c.evaluate(c.body_tape, x);
-  const vector_t<T> qd = c.rates(x, values, c.kinematics_on_body_tape);
+  // working storage borrowed (linalg/scratch.hpp)
+  struct site;
+  const scratch<std::vector<body_kinematics<T>>, site> kin_held;
+  const scratch<std::vector<T>, site> x_held, values_held;
+  const scratch<vector_t<T>, site> qd_held;
+  const scratch<std::vector<typename compiled_system<T>::template link_state<T>>, site> states_held;
+  const scratch<std::vector<vec3<T>>, site> F_held, M_held;
+  differentiate_kinematics_into(sys, q, u, t, *kin_held);
+  const std::vector<body_kinematics<T>>& kin = *kin_held;
+  const std::vector<T>& values = *values_held;
+  c.variables_into(q, u, t, *x_held);
+  c.evaluate_into(c.body_tape, *x_held, *values_held);
+  c.rates_into(*x_held, values, c.kinematics_on_body_tape, *qd_held);
   vec3<T> g;
   for (int i = 0; i < 3; ++i) g(i) = c.gravity[static_cast<std::size_t>(i)].at(values.data());
-  const auto states = c.link_states(q, qd, g, values.data());
+  c.link_states_into(q, *qd_held, g, values.data(), *states_held);
+  const auto& states = *states_held;
   const std::size_t n = c.links.size();
-  std::vector<vec3<T>> F(n, zero_matrix<vec3<T>>()), M(n, zero_matrix<vec3<T>>());  // sum (m a - F), about L's origin
-  std::vector<joint_wrench_result<T>> out(n);
+  std::vector<vec3<T>>&F = *F_held, &M = *M_held;  // sum (m a - F), about L's origin
+  F.assign(n, zero_matrix<vec3<T>>());
+  M.assign(n, zero_matrix<vec3<T>>());
+  out.assign(n, joint_wrench_result<T>{});
   for (std::size_t k = n; k-- > 0;) {
     const link& L = c.links[k];
     const body_kinematics<T>& B = kin[static_cast<std::size_t>(L.body)];
@@ -107,6 +119,13 @@ std::vector<joint_wrench_result<T>> joint_wrenches(const compiled_system<T>& c, 
     F[p] += fp;
     M[p] += vec3<T>(c.to_parent(L, states[k], M[k]) + cross(states[k].offset, fp));
   }
+}
+template <Scalar T>
+std::vector<joint_wrench_result<T>> joint_wrenches(const compiled_system<T>& c, const vector_t<T>& q,
+                                                   const vector_t<T>& u, const T& t, const vector_t<T>& udot,
+                                                   const vector_t<T>* efforts = nullptr) {
+  std::vector<joint_wrench_result<T>> out;
+  joint_wrenches_into(c, q, u, t, udot, efforts, out);
   return out;
 }
 

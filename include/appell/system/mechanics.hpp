@@ -10,26 +10,55 @@
 
 namespace appell {
 
+namespace detail {
+// Pools of working storage (linalg/scratch.hpp), one per use whose sizes differ.
+struct variables_tag {};
+struct kinematics_tag {};
+struct body_tag {};
+struct constraint_tag {};
+struct cos_tag {};
+struct sin_tag {};
+struct rate_tag {};
+struct row_tag {};
+}  // namespace detail
+
 /// The system as the generic path sees it.
 template <Scalar T>
 struct expression_system {
   const compiled_system<T>* c;
   int speeds() const { return c->def->vars.speeds; }
+  // Working storage borrowed per call (linalg/scratch.hpp): the tapes' variables and node
+  // values, the rates, the links' states; a warm thread evaluates without the heap.
   template <class S>
   vector_t<S> qdot(const vector_t<S>& q, const vector_t<S>& u, const S& t) const {
-    const std::vector<S> x = c->template variables<S>(q, u, t);
-    return c->rates(x, c->evaluate(c->kinematics_tape, x), c->kinematics);
+    vector_t<S> qd;
+    qdot_into(q, u, t, qd);
+    return qd;
+  }
+  template <class S>
+  void qdot_into(const vector_t<S>& q, const vector_t<S>& u, const S& t, vector_t<S>& qd) const {
+    const scratch<std::vector<S>, detail::variables_tag> x;
+    const scratch<std::vector<S>, detail::kinematics_tag> values;
+    c->variables_into(q, u, t, *x);
+    c->evaluate_into(c->kinematics_tape, *x, *values);
+    c->rates_into(*x, *values, c->kinematics, qd);
   }
   template <class S>
   void bodies(const vector_t<S>& q, const vector_t<S>& u, const S& t, std::vector<body_state<S>>& out) const {
-    const std::vector<S> x = c->template variables<S>(q, u, t);
-    const std::vector<S> values = c->evaluate(c->body_tape, x);
-    const vector_t<S> qd = c->rates(x, values, c->kinematics_on_body_tape);
-    const S* v = values.data();
+    const scratch<std::vector<S>, detail::variables_tag> x;
+    const scratch<std::vector<S>, detail::body_tag> values;
+    struct site;
+    const scratch<vector_t<S>, site> qd_held;
+    c->variables_into(q, u, t, *x);
+    c->evaluate_into(c->body_tape, *x, *values);
+    c->rates_into(*x, *values, c->kinematics_on_body_tape, *qd_held);
+    const vector_t<S>& qd = *qd_held;
+    const S* v = values->data();
     vec3<S> g = vec3<S>::Zero();
     for (int i = 0; i < 3; ++i) g(i) = c->gravity[static_cast<std::size_t>(i)].at(v);
-    std::vector<typename compiled_system<T>::template link_state<S>> links;
-    if (!c->links.empty()) links = c->link_states(q, qd, g, v);
+    const scratch<std::vector<typename compiled_system<T>::template link_state<S>>> links_held;
+    auto& links = *links_held;
+    if (!c->links.empty()) c->link_states_into(q, qd, g, v, links);
     for (std::size_t bi = 0; bi < c->bodies.size(); ++bi) {
       const auto& b = c->bodies[bi];
       body_state<S> s;
@@ -110,7 +139,11 @@ struct expression_system {
       }
       // The angles' sines and cosines once; their rates along q' = qd.
       const std::size_t m = b.rotations.size();
-      std::vector<S> c(m), sn(m), rate(m);
+      const scratch<std::vector<S>, detail::cos_tag> c_held;
+      const scratch<std::vector<S>, detail::sin_tag> sn_held;
+      const scratch<std::vector<S>, detail::rate_tag> rate_held;
+      std::vector<S>&c = *c_held, &sn = *sn_held, &rate = *rate_held;
+      c.resize(m), sn.resize(m), rate.resize(m);
       for (std::size_t k = 0; k < m; ++k) {
         using std::sin, std::cos;
         const auto& [axis, angle] = b.rotations[k];
@@ -178,10 +211,14 @@ struct expression_constraints {
   int count() const { return static_cast<int>(c->constraints.size()); }
   template <class S>
   void eval(const vector_t<S>& q, const S& t, matrix_t<S>& A, vector_t<S>& a) const {
-    const vector_t<S> u0 = vector_t<S>::Zero(c->def->vars.speeds);
-    const std::vector<S> x = c->template variables<S>(q, u0, t);
-    const std::vector<S> values = c->evaluate(c->constraint_tape, x);
-    const S* v = values.data();
+    struct site;
+    const scratch<vector_t<S>, site> u0;
+    u0->setZero(c->def->vars.speeds);
+    const scratch<std::vector<S>, detail::variables_tag> x;
+    const scratch<std::vector<S>, detail::constraint_tag> values;
+    c->variables_into(q, *u0, t, *x);
+    c->evaluate_into(c->constraint_tape, *x, *values);
+    const S* v = values->data();
     A.setZero();
     for (int r = 0; r < count(); ++r) {
       const auto& k = c->constraints[static_cast<std::size_t>(r)];
@@ -213,9 +250,9 @@ namespace detail {
 /// The axes e'_m = R_1 ... R_(m-1) e_(axis m) of an orientation's elementary
 /// rotations, on the fixed axes (the angular velocity is sum_m a_m' e'_m).
 template <Scalar T, class S>
-std::vector<vec3<S>> rotation_axes(const std::vector<std::pair<int, compiled_differentiated<T>>>& rotations,
-                                   const S* v) {
-  std::vector<vec3<S>> axes;
+void rotation_axes_into(const std::vector<std::pair<int, compiled_differentiated<T>>>& rotations, const S* v,
+                        std::vector<vec3<S>>& axes) {
+  axes.clear();
   mat3<S> R = mat3<S>::Identity();
   for (const auto& [axis, angle] : rotations) {
     axes.push_back(vec3<S>(R.col(axis)));
@@ -223,6 +260,12 @@ std::vector<vec3<S>> rotation_axes(const std::vector<std::pair<int, compiled_dif
     const S a0 = angle.value.at(v);
     turn_columns(R, axis, S(cos(a0)), S(sin(a0)));
   }
+}
+template <Scalar T, class S>
+std::vector<vec3<S>> rotation_axes(const std::vector<std::pair<int, compiled_differentiated<T>>>& rotations,
+                                   const S* v) {
+  std::vector<vec3<S>> axes;
+  rotation_axes_into<T, S>(rotations, v, axes);
   return axes;
 }
 }  // namespace detail
@@ -240,9 +283,13 @@ void expression_constraints<T>::point_velocity_row(const typename compiled_syste
     const auto x = static_cast<std::size_t>(i);
     rel(i) = k.rel[x].at(v), n(i) = k.direction[x].at(v);
   }
-  const std::vector<vec3<S>> axes = detail::rotation_axes<T, S>(k.rotations, v);
+  const scratch<std::vector<vec3<S>>> axes_held;
+  detail::rotation_axes_into<T, S>(k.rotations, v, *axes_held);
+  const std::vector<vec3<S>>& axes = *axes_held;
   // n . c_i for each coordinate, and n . c_t
-  std::vector<S> nc(static_cast<std::size_t>(nq), S(0));
+  const scratch<std::vector<S>, detail::row_tag> nc_held;
+  std::vector<S>& nc = *nc_held;
+  nc.assign(static_cast<std::size_t>(nq), S(0));
   S nct = S(0);
   auto add = [&](int i, const S& scale, const vec3<S>& w) {  // i < 0: the t column
     const S d = scale * dot(n, w);

@@ -19,37 +19,61 @@ struct system_motion_result {
 /// there are constraints), the reactions, the Lagrange multipliers and eq. (4).  Without
 /// `checks` the multipliers and eq. (4) are left out (multipliers empty, virtual_work_residual
 /// 0): u' and the reactions are the same numbers, bit for bit (`appell reference` prints no check).
+/// system_motion_into writes over r, reusing its vectors.
 template <Scalar T>
-system_motion_result<T> system_motion(const compiled_system<T>& c, const vector_t<T>& q, const vector_t<T>& u,
-                                      const T& t, bool checks = true) {
+void system_motion_into(const compiled_system<T>& c, const vector_t<T>& q, const vector_t<T>& u, const T& t,
+                        bool checks, system_motion_result<T>& r) {
   const expression_system<T> sys{&c};
   const int n = sys.speeds();
-  system_motion_result<T> r;
   r.virtual_work_residual = T(0);
+  // working storage borrowed (linalg/scratch.hpp); r's own reused
+  struct site;  // this function's pools (linalg/scratch.hpp: an Eigen object keeps one size)
+  const scratch<vector_t<T>, site> ones;
+  ones->setOnes(n);
   if (c.constraints.empty()) {
-    const appell_equations<T> eq = gibbs_appell(sys, q, u, t);
-    r.accelerations = eq.accelerations();
-    if (!checks) return r;
-    r.virtual_work_residual = virtual_work_residual(sys, eq, q, u, t, r.accelerations, vector_t<T>(vector_t<T>::Ones(n)));
-    return r;
+    const scratch<appell_equations<T>, site> eq;
+    gibbs_appell_into(sys, q, u, t, *eq);
+    eq->accelerations_into(r.accelerations);
+    r.reactions.resize(0);  // empty already after the first evaluation of the scene: no allocation
+    r.multipliers.resize(0);
+    if (!checks) return;
+    r.virtual_work_residual = virtual_work_residual(sys, *eq, q, u, t, r.accelerations, *ones);
+    return;
   }
   const expression_constraints<T> con{&c};
-  const auto change = adapt_speeds<T>(con, q, t, n);
-  appell_equations<T> adapted_eq;
-  const constrained_motion<T> m = cotton_reactions(sys, change, q, u, t, checks ? &adapted_eq : nullptr);
-  r.accelerations = m.accelerations;
+  const scratch<adapted_change<expression_constraints<T>>, site> change_held;
+  adapt_speeds_into<T>(con, q, t, n, *change_held);
+  const adapted_change<expression_constraints<T>>& change = *change_held;
+  const scratch<appell_equations<T>, site> adapted_eq;
+  const scratch<constrained_motion<T>, site> m_held;
+  const constrained_motion<T>& m = *m_held;
+  cotton_reactions_into(sys, change, q, u, t, *m_held, checks ? &*adapted_eq : nullptr);
+  r.accelerations = m.accelerations;  // into r's storage
   r.reactions = m.reactions;
-  if (!checks) return r;
-  r.multipliers = lagrange_multipliers(sys, con, q, u, t).reactions;
+  if (!checks) {
+    r.multipliers.resize(0);
+    return;
+  }
+  const scratch<constrained_motion<T>, site> lagrange;
+  lagrange_multipliers_into(sys, con, q, u, t, *lagrange);
+  r.multipliers = lagrange->reactions;
   // eq. (4) in the adapted speeds (v_a, v_c): v = (u_free, 0), v' = (u_free', 0)
   const int k = static_cast<int>(change.free_columns.size());
-  vector_t<T> v = vector_t<T>::Zero(n), vdot = vector_t<T>::Zero(n);
+  const scratch<vector_t<T>, site> v_held, vdot_held;
+  vector_t<T>&v = *v_held, &vdot = *vdot_held;
+  v.setZero(n), vdot.setZero(n);
   for (int i = 0; i < k; ++i) {
     v(i) = u(change.free_columns[static_cast<std::size_t>(i)]);
     vdot(i) = m.accelerations(change.free_columns[static_cast<std::size_t>(i)]);
   }
-  r.virtual_work_residual = virtual_work_residual(change_speeds(sys, change, n), adapted_eq, q, v, t, vdot,
-                                                  vector_t<T>(vector_t<T>::Ones(n)));
+  r.virtual_work_residual = virtual_work_residual(change_speeds(sys, detail::change_ref{&change}, n), *adapted_eq, q,
+                                                  v, t, vdot, *ones);
+}
+template <Scalar T>
+system_motion_result<T> system_motion(const compiled_system<T>& c, const vector_t<T>& q, const vector_t<T>& u,
+                                      const T& t, bool checks = true) {
+  system_motion_result<T> r;
+  system_motion_into(c, q, u, t, checks, r);
   return r;
 }
 

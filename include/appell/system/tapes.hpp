@@ -2,6 +2,7 @@
 // and the parameters' values in T (compiled_system<T>; the description: definition.hpp).
 #pragma once
 
+#include "appell/linalg/scratch.hpp"
 #include "appell/dynamics/speeds.hpp"
 #include "appell/dynamics/virtual_work.hpp"
 #include "appell/system/definition.hpp"
@@ -252,8 +253,16 @@ struct compiled_system {
   /// tape's node values v (the efforts), in link order.
   template <class S>
   std::vector<link_state<S>> link_states(const vector_t<S>& q, const vector_t<S>& qd, const vec3<S>& g, const S* v) const {
+    std::vector<link_state<S>> out;
+    link_states_into(q, qd, g, v, out);
+    return out;
+  }
+  /// The same into `out` (its storage reused: linalg/scratch.hpp).
+  template <class S>
+  void link_states_into(const vector_t<S>& q, const vector_t<S>& qd, const vec3<S>& g, const S* v,
+                        std::vector<link_state<S>>& out) const {
     using K = system_joint_definition::kind;
-    std::vector<link_state<S>> out(links.size());
+    out.assign(links.size(), link_state<S>{});
     for (std::size_t k = 0; k < links.size(); ++k) {
       const link& L = links[k];
       link_state<S>& st = out[k];
@@ -301,7 +310,6 @@ struct compiled_system {
         }
       }
     }
-    return out;
   }
 
   explicit compiled_system(const system_definition& d) : def(&d) {
@@ -424,25 +432,37 @@ struct compiled_system {
   /// The variable list at (q, u, t), parameters first.
   template <class S>
   std::vector<S> variables(const vector_t<S>& q, const vector_t<S>& u, const S& t) const {
+    std::vector<S> x;
+    variables_into(q, u, t, x);
+    return x;
+  }
+  /// The same into x (its storage reused: linalg/scratch.hpp).
+  template <class S>
+  void variables_into(const vector_t<S>& q, const vector_t<S>& u, const S& t, std::vector<S>& x) const {
     const system_variables& v = def->vars;
-    std::vector<S> x(static_cast<std::size_t>(v.size()), S(0));
+    x.assign(static_cast<std::size_t>(v.size()), S(0));
     for (std::size_t i = 0; i < parameters.size(); ++i) x[i] = detail::from_base<S>(parameters[i]);
     for (int i = 0; i < v.coordinates; ++i) x[static_cast<std::size_t>(v.q(i))] = q(i);
     for (int j = 0; j < v.speeds && j < u.size(); ++j) x[static_cast<std::size_t>(v.u(j))] = u(j);
     x[static_cast<std::size_t>(v.t())] = t;
-    return x;
   }
   /// q' at the variables x (u included), the kinematics read from the node
   /// values `values` of a tape that holds them as `terms`.
   template <class S>
   vector_t<S> rates(const std::vector<S>& x, const std::vector<S>& values,
                     const std::vector<detail::compiled_term<T>>& terms) const {
+    vector_t<S> qd;
+    rates_into(x, values, terms, qd);
+    return qd;
+  }
+  template <class S>
+  void rates_into(const std::vector<S>& x, const std::vector<S>& values,
+                  const std::vector<detail::compiled_term<T>>& terms, vector_t<S>& qd) const {
     const system_variables& v = def->vars;
-    vector_t<S> qd(v.coordinates);
+    qd.resize(v.coordinates);
     for (int i = 0; i < v.coordinates; ++i)
       qd(i) = def->rates_as_speeds ? x[static_cast<std::size_t>(v.u(i))]
                                    : terms[static_cast<std::size_t>(i)].at(values.data());
-    return qd;
   }
   /// The node values of `tape` at x.
   template <class S>
@@ -450,6 +470,11 @@ struct compiled_system {
     std::vector<S> values;
     tape.eval(x.data(), values);
     return values;
+  }
+  /// The same into `values` (its storage reused).
+  template <class S>
+  void evaluate_into(const expression_tape<T>& tape, const std::vector<S>& x, std::vector<S>& values) const {
+    tape.eval(x.data(), values);
   }
 };
 

@@ -99,104 +99,135 @@ struct system_model {
     return p;
   }
   /// A tree's joints: each one's wrench (forward dynamics: with the accelerations r; inverse
-  /// dynamics: the efforts that give the accelerations asked for, then the wrenches).
+  /// dynamics: the efforts that give the accelerations asked for, then the wrenches): the results,
+  /// and where `checks`, the checks (each joint's virtual work).
   template <Scalar T>
-  static void add_joints(const prepared<T>& m, const vector_t<T>& udot, const vector_t<T>* efforts, evaluation<T>& e,
-                         with_checks checks) {
-    const std::vector<joint_wrench_result<T>> w = joint_wrenches(m.sys, m.q, m.u, m.t, udot, efforts);
+  static void add_joints(const prepared<T>& m, const vector_t<T>& udot, const vector_t<T>* efforts,
+                         evaluation_writer<T>& out, with_checks checks) {
+    using W = evaluation_writer<T>;
+    struct site;
+    const scratch<std::vector<joint_wrench_result<T>>, site> w_held;  // borrowed (linalg/scratch.hpp)
+    joint_wrenches_into(m.sys, m.q, m.u, m.t, udot, efforts, *w_held);
+    const std::vector<joint_wrench_result<T>>& w = *w_held;
     const system_definition& d = *m.in->def;
     for (std::size_t k = 0; k < w.size(); ++k) {
       const system_joint_definition& j = d.bodies[static_cast<std::size_t>(m.sys.links[k].body)].joint;
-      if (efforts && j.type != system_joint_definition::kind::fixed)
-        e.results.push_back(detail::scalar_result(j.name + "_effort", w[k].effort));
-      e.results.push_back(detail::vector_result(j.name + "_force", w[k].force));
-      e.results.push_back(detail::vector_result(j.name + "_moment", w[k].moment));
+      if (efforts && j.type != system_joint_definition::kind::fixed) out.scalar(W::results, j.name, "_effort", w[k].effort);
+      out.vector(W::results, j.name, "_force", w[k].force);
+      out.vector(W::results, j.name, "_moment", w[k].moment);
     }
     for (std::size_t k = 0; k < w.size() && checks == with_checks::yes; ++k) {
       const system_joint_definition& j = d.bodies[static_cast<std::size_t>(m.sys.links[k].body)].joint;
-      if (j.type != system_joint_definition::kind::fixed)
-        e.checks.push_back(detail::scalar_result(j.name + "_virtual_work", w[k].residual));
+      if (j.type != system_joint_definition::kind::fixed) out.scalar(W::checks, j.name, "_virtual_work", w[k].residual);
     }
   }
   /// Inverse dynamics: the efforts P - Q = M u' + b - Q (Appell's equations), per coordinate.
   template <Scalar T>
-  static evaluation<T> compute_inverse(const prepared<T>& m, with_checks checks) {
+  static void compute_inverse(const prepared<T>& m, evaluation_writer<T>& out, with_checks checks) {
     const expression_system<T> sys{&m.sys};
-    const appell_equations<T> eq = gibbs_appell(sys, m.q, m.u, m.t);
-    const vector_t<T> efforts = eq.P(m.udot) - eq.Q;
-    evaluation<T> e;
-    add_joints(m, m.udot, &efforts, e, checks);
-    if (checks == with_checks::no) return e;
-    e.checks.insert(e.checks.begin(), detail::scalar_result("virtual_work_invariant",
-        virtual_work_residual(sys, eq, m.q, m.u, m.t, m.udot, vector_t<T>(vector_t<T>::Ones(sys.speeds())))));
-    return e;
+    const int n = sys.speeds();
+    struct site;  // working storage borrowed (linalg/scratch.hpp)
+    const scratch<appell_equations<T>, site> eq_held;
+    const scratch<vector_t<T>, site> efforts_held, ones;
+    const appell_equations<T>& eq = *eq_held;
+    gibbs_appell_into(sys, m.q, m.u, m.t, *eq_held);
+    vector_t<T>& efforts = *efforts_held;
+    efforts.resize(n);
+    for (int i = 0; i < n; ++i) {  // P - Q, P = M u' + b as eq.P computes it (detail::product's sums)
+      T sum = eq.M(i, 0) * m.udot(0);
+      for (int k = 1; k < n; ++k) sum += eq.M(i, k) * m.udot(k);
+      const T P = sum + eq.b(i);
+      efforts(i) = P - eq.Q(i);
+    }
+    ones->setOnes(n);
+    if (checks == with_checks::yes)  // first among the checks, before the joints'
+      out.scalar(evaluation_writer<T>::checks, "virtual_work_invariant", "",
+                 virtual_work_residual(sys, eq, m.q, m.u, m.t, m.udot, *ones));
+    add_joints(m, m.udot, &efforts, out, checks);
   }
   /// with_checks::no: no Lagrange multipliers and no eq. (4) (system_motion's `checks`), and none
   /// of the checks printed (the wrenches' virtual work is computed with them, and dropped).
   template <Scalar T>
   static evaluation<T> compute(const prepared<T>& m, with_checks checks) {
-    if (m.in->inverse_dynamics) return compute_inverse(m, checks);
-    const system_motion_result<T> r = system_motion(m.sys, m.q, m.u, m.t, checks == with_checks::yes);
     evaluation<T> e;
+    compute_into(m, e, checks);
+    return e;
+  }
+  /// The same written over e (appell::compute_into: its names' and values' storage reused).
+  template <Scalar T>
+  static void compute_into(const prepared<T>& m, evaluation<T>& e, with_checks checks) {
+    using W = evaluation_writer<T>;
+    W out(e);
+    e.contacts.clear();
+    if (m.in->inverse_dynamics) {
+      compute_inverse(m, out, checks);
+      out.finish();
+      return;
+    }
+    const scratch<system_motion_result<T>, system_model> r_held;  // borrowed (linalg/scratch.hpp)
+    system_motion_into(m.sys, m.q, m.u, m.t, checks == with_checks::yes, *r_held);
+    const system_motion_result<T>& r = *r_held;
     for (std::size_t j = 0; j < m.in->acceleration_names.size(); ++j)
-      e.results.push_back(detail::scalar_result(m.in->acceleration_names[j], T(r.accelerations(static_cast<Eigen::Index>(j)))));
+      out.scalar(W::results, m.in->acceleration_names[j], "", r.accelerations(static_cast<Eigen::Index>(j)));
     const auto& constraints = m.in->def->constraints;
     for (std::size_t c = 0; c < constraints.size(); ++c)
-      e.results.push_back(detail::scalar_result(constraints[c].name + "_reaction", T(r.reactions(static_cast<Eigen::Index>(c)))));
+      out.scalar(W::results, constraints[c].name, "_reaction", r.reactions(static_cast<Eigen::Index>(c)));
     const auto& wrenches = m.in->def->wrenches;
-    std::vector<named_result<T>> wrench_checks;
+    struct site;
+    const scratch<std::vector<constraint_wrench_result<T>>, site> w_held;  // borrowed (linalg/scratch.hpp)
+    const std::vector<constraint_wrench_result<T>>& w = *w_held;
     if (!wrenches.empty()) {
-      const std::vector<constraint_wrench_result<T>> w = constraint_wrenches(m.sys, m.q, m.t, r.reactions);
+      constraint_wrenches_into(m.sys, m.q, m.t, r.reactions, *w_held);
       for (std::size_t k = 0; k < wrenches.size(); ++k) {
-        e.results.push_back(detail::vector_result(wrenches[k].name + "_force", w[k].force));
-        e.results.push_back(detail::vector_result(wrenches[k].name + "_moment", w[k].moment));
+        out.vector(W::results, wrenches[k].name, "_force", w[k].force);
+        out.vector(W::results, wrenches[k].name, "_moment", w[k].moment);
       }
-      for (std::size_t k = 0; k < wrenches.size(); ++k)
-        wrench_checks.push_back(detail::scalar_result(wrenches[k].name + "_virtual_work", w[k].residual));
     }
     if (!m.in->def->contacts.empty()) {  // can each contact hold? (reactions/contact.hpp)
       using std::sqrt;
       const auto& contacts = m.in->def->contacts;
-      const std::vector<contact_force_result<T>> f = contact_forces(m.sys, m.q, m.t, r.reactions);
+      const scratch<std::vector<contact_force_result<T>>, site> f_held;
+      contact_forces_into(m.sys, m.q, m.t, r.reactions, *f_held);
+      const std::vector<contact_force_result<T>>& f = *f_held;
       for (std::size_t k = 0; k < contacts.size(); ++k) {
         const std::string& name = contacts[k].name;
         const T tangential = sqrt(dot(f[k].tangential, f[k].tangential));
-        e.results.push_back(detail::scalar_result(name + "_normal_force", f[k].normal));
-        e.results.push_back(detail::vector_result(name + "_friction_force", f[k].tangential));
-        e.results.push_back(detail::scalar_result(name + "_tangential_force", tangential));
+        out.scalar(W::results, name, "_normal_force", f[k].normal);
+        out.vector(W::results, name, "_friction_force", f[k].tangential);
+        out.scalar(W::results, name, "_tangential_force", tangential);
         // required mu in the contacts group: the results' list must not depend on the values
         e.contacts.push_back(judged_contact(name, f[k].normal, tangential, contacts[k].mu));
       }
     }
-    if (!m.sys.links.empty()) add_joints(m, r.accelerations, static_cast<const vector_t<T>*>(nullptr), e, checks);
+    if (!m.sys.links.empty()) add_joints(m, r.accelerations, static_cast<const vector_t<T>*>(nullptr), out, checks);
     if (checks == with_checks::yes) {
-      e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
+      out.scalar(W::checks, "virtual_work_invariant", "", r.virtual_work_residual);
       for (std::size_t c = 0; c < constraints.size(); ++c) {
         const auto i = static_cast<Eigen::Index>(c);
-        e.checks.push_back(detail::scalar_result(constraints[c].name + "_cotton_minus_lagrange",
-                                                 T(r.reactions(i) - r.multipliers(i))));
+        out.scalar(W::checks, constraints[c].name, "_cotton_minus_lagrange", T(r.reactions(i) - r.multipliers(i)));
       }
-      e.checks.insert(e.checks.end(), wrench_checks.begin(), wrench_checks.end());
+      for (std::size_t k = 0; k < wrenches.size(); ++k)
+        out.scalar(W::checks, wrenches[k].name, "_virtual_work", w[k].residual);
     }
     if (m.in->project) {  // the state certified, and how far the projection moved the given one
       using std::sqrt;
       const system_definition& d = *m.in->def;
       T dq2(0), du2(0);
       for (int i = 0; i < d.vars.coordinates; ++i) {
-        e.derived.push_back(detail::scalar_result(d.names[static_cast<std::size_t>(d.vars.q(i))], T(m.q(i))));
+        out.scalar(W::derived, d.names[static_cast<std::size_t>(d.vars.q(i))], "", m.q(i));
         const T step = m.q(i) - value<T>(m.in->q_given[static_cast<std::size_t>(i)]);
         dq2 += step * step;
       }
       for (int j = 0; j < d.vars.speeds; ++j) {
-        e.derived.push_back(detail::scalar_result(d.names[static_cast<std::size_t>(d.vars.u(j))], T(m.u(j))));
+        out.scalar(W::derived, d.names[static_cast<std::size_t>(d.vars.u(j))], "", m.u(j));
         if (std::find(m.in->solved.begin(), m.in->solved.end(), j) != m.in->solved.end()) continue;
         const T step = m.u(j) - value<T>(m.in->u_given[static_cast<std::size_t>(j)]);
         du2 += step * step;
       }
-      e.derived.push_back(detail::scalar_result("coordinates_moved", T(sqrt(dq2))));
-      e.derived.push_back(detail::scalar_result("speeds_moved", T(sqrt(du2))));
+      out.scalar(W::derived, "coordinates_moved", "", T(sqrt(dq2)));
+      out.scalar(W::derived, "speeds_moved", "", T(sqrt(du2)));
     }
-    return e;
+    out.finish();
   }
 };
 
