@@ -21,12 +21,6 @@
 
 namespace appell::detail {
 
-std::optional<vector_t<interval>> small_interval_solve(const matrix_t<interval>& A, const vector_t<interval>& b) {
-  vector_t<interval> x;
-  if (!small_interval_solve_into(A, b, x)) return std::nullopt;
-  return x;
-}
-
 bool small_interval_solve_into(const matrix_t<interval>& A, const vector_t<interval>& b, vector_t<interval>& x) {
   constexpr int M = static_cast<int>(small_system_max);
   using DM = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, M, M>;
@@ -47,10 +41,10 @@ bool small_interval_solve_into(const matrix_t<interval>& A, const vector_t<inter
   const DM R = lu.inverse();
   if (!R.allFinite()) return false;
   DV xt = R * bm;
-  xt += R * (bm - Am * xt);  // one refinement step, as residual_or_krawczyk_solve
+  xt += R * (bm - Am * xt);  // one refinement step, as residual_solve_into
   IV xI(n), residual(n);
   for (Eigen::Index i = 0; i < n; ++i) xI(i) = thin<interval>(xt(i));
-  for (Eigen::Index i = 0; i < n; ++i) {  // b - A x~, in residual_or_krawczyk_solve's order
+  for (Eigen::Index i = 0; i < n; ++i) {  // b - A x~, in residual_solve_into's order
     interval sum = A(i, 0) * xI(0);
     for (Eigen::Index k = 1; k < n; ++k) sum += A(i, k) * xI(k);
     residual(i) = b(i) - sum;

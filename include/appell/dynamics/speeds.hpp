@@ -12,6 +12,8 @@
 // (column pivoting on the midpoint of A), and v_c = A u - a.
 #pragma once
 
+#include <initializer_list>
+
 #include <algorithm>
 #include <numeric>
 
@@ -149,15 +151,24 @@ struct adapted_change {
 
 /// Adapted speeds keeping the given components of u as the free speeds (e.g.
 /// the paper's choice, eq. 23 for the rolling sphere); the other columns of A
-/// must form a nonsingular block at the state.
+/// must form a nonsingular block at the state.  Into out, its column lists reused.
 template <class Constraint>
-adapted_change<Constraint> adapt_speeds_keeping(const Constraint& con, int n, std::vector<int> free_columns) {
-  std::vector<int> bound;
+void adapt_speeds_keeping_into(const Constraint& con, int n, std::initializer_list<int> free_columns,
+                               adapted_change<Constraint>& out) {
+  out.con = con;
+  out.free_columns.assign(free_columns);
+  out.bound_columns.clear();
   for (int j = 0; j < n; ++j)
-    if (std::find(free_columns.begin(), free_columns.end(), j) == free_columns.end()) bound.push_back(j);
-  if (static_cast<int>(bound.size()) != con.count())
+    if (std::find(free_columns.begin(), free_columns.end(), j) == free_columns.end()) out.bound_columns.push_back(j);
+  if (static_cast<int>(out.bound_columns.size()) != con.count())
     throw std::invalid_argument("adapt_speeds_keeping: n - (free speeds) must equal the number of constraints");
-  return {con, std::move(free_columns), std::move(bound)};
+}
+/// The same returned.
+template <class Constraint>
+adapted_change<Constraint> adapt_speeds_keeping(const Constraint& con, int n, std::initializer_list<int> free_columns) {
+  adapted_change<Constraint> out{con, {}, {}};
+  adapt_speeds_keeping_into(con, n, free_columns, out);
+  return out;
 }
 
 /// Chooses the bound columns by pivoting on mid(A) at (q, t), largest pivot

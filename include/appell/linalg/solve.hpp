@@ -117,9 +117,10 @@ template <class DM>
 /// interval ones.
 /// DM: a double matrix type, IMA/IMC: interval matrix types (heap or
 /// fixed-capacity storage).
-/// A dynamic DM's five matrices are borrowed (linalg/scratch.hpp), a fixed-capacity one's are on
-/// the stack; the same operations either way.
-template <class DM, class IMA, class IMC>
+/// A dynamic DM's five matrices are borrowed (linalg/scratch.hpp) from a pool of Site's (each
+/// caller whose systems have a size of their own passes a Site of its own: an Eigen matrix keeps
+/// one size), a fixed-capacity one's are on the stack; the same operations either way.
+template <class Site = void, class DM, class IMA, class IMC>
 void identity_minus_product_into(const DM& R, const IMA& A, IMC& C) {
   const Eigen::Index n = A.rows();
   constexpr bool borrowed = DM::MaxRowsAtCompileTime == Eigen::Dynamic;
@@ -171,8 +172,9 @@ inline constexpr double max_contraction = 1.0 / 1024;
 /// Encloses A^-1 r for every A in [A] and r in [r] given an approximate
 /// inverse R of mid(A) and C enclosing I - R A for every A in [A]
 /// (identity_minus_product), or nullopt if some row sum of |C| exceeds max_contraction.
-/// IV: an interval vector type (heap or fixed-capacity storage).
-template <class DM, class IM, class IV>
+/// IV: an interval vector type (heap or fixed-capacity storage); a dynamic IV's row sums borrowed
+/// from a pool of Site's (as identity_minus_product_into).
+template <class Site = void, class DM, class IM, class IV>
 bool residual_enclosure_into(const DM& R, const IM& C, const IV& r, IV& z) {
   const Eigen::Index n = C.rows();
   const upward_rounding mode;  // plain double operations below round upward
@@ -222,11 +224,10 @@ std::optional<IV> residual_enclosure(const DM& R, const IM& C, const IV& r) {
 /// The interval residual path for systems of at most small_system_max unknowns,
 /// with every temporary on the stack (the heap-allocated temporaries of the
 /// general path were ~60 allocations per evaluation of Example I, an interval-only
-/// cost).  The same steps as residual_or_krawczyk_solve's: nullopt where the residual bound
-/// does not apply or the midpoint is singular (the general path then decides).
+/// cost).  The same steps as residual_solve_into's, on fixed-capacity storage: false where the
+/// residual bound does not apply or the midpoint is singular (the caller then decides).
 inline constexpr Eigen::Index small_system_max = 12;
-std::optional<vector_t<interval>> small_interval_solve(const matrix_t<interval>& A, const vector_t<interval>& b);
-/// The same into x (of its size already: no allocation); false where it does not apply.
+/// Into x (of its size already: no allocation); false where it does not apply.
 bool small_interval_solve_into(const matrix_t<interval>& A, const vector_t<interval>& b, vector_t<interval>& x);
 /// mpfi systems by the residual bound: x~ by mpfr LU, r = b - A x~ in mpfi,
 /// the rest in double.  nullopt where it does not apply (the caller falls back).
@@ -243,6 +244,20 @@ void check_square(const M& A, Eigen::Index rhs_rows) {
 }  // namespace detail
 
 namespace detail {
+/// verified_solve's refusal of data that are not square or not finite.
+template <class I>
+void check_finite_square(const matrix_t<I>& A, const vector_t<I>& b) {
+  check_square(A, b.rows());
+  const Eigen::Index n = A.rows();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (!is_finite(b(i))) throw certification_error("verified solve: right-hand side is not finite");
+    for (Eigen::Index j = 0; j < n; ++j)
+      if (!is_finite(A(i, j))) throw certification_error("verified solve: matrix is not finite");
+  }
+}
+template <class Site>
+bool residual_solve_into(const matrix_t<interval>& A, const vector_t<interval>& b, vector_t<interval>& x);
+
 /// verified_solve without the mpfi residual path (finite data checked by the
 /// caller): for interval, the residual bound first (try_residual_bound), then
 /// Krawczyk's iteration.  Exposed for tests that compare the two.
@@ -251,9 +266,9 @@ vector_t<I> residual_or_krawczyk_solve(const matrix_t<I>& A, const vector_t<I>& 
   using P = bound_t<I>;
   const Eigen::Index n = A.rows();
   if constexpr (std::is_same_v<I, interval>)
-    if (try_residual_bound && n <= small_system_max) {
-      if (auto x = small_interval_solve(A, b)) return *x;
-      try_residual_bound = false;  // the same bound just failed on these data: straight to Krawczyk
+    if (try_residual_bound) {  // the residual bound: on the stack up to small_system_max unknowns
+      vector_t<I> x;
+      if (n <= small_system_max ? small_interval_solve_into(A, b, x) : residual_solve_into<void>(A, b, x)) return x;
     }
   // Midpoint system, in the bound type.
   matrix_t<P> Am(n, n);
@@ -275,13 +290,10 @@ vector_t<I> residual_or_krawczyk_solve(const matrix_t<I>& A, const vector_t<I>& 
   // Krawczyk operator in interval arithmetic.
   const vector_t<I> xI = xt.unaryExpr([](const P& p) { return detail::thin<I>(p); });
   const vector_t<I> residual = b - detail::product(A, xI);
+  // (past the residual bound, which has failed on these data or was not asked for)
   matrix_t<I> C;
-  if constexpr (std::is_same_v<I, interval>) {
-    C = detail::identity_minus_product(R, A);  // midpoint-radius, O(n^3) in double
-    if (try_residual_bound)                    // one pass; C serves the iteration below if it fails
-      if (auto e = detail::residual_enclosure(R, C, residual)) return xI + *e;
-  }
-  const matrix_t<I> RI = R.unaryExpr([](const P& p) { return detail::thin<I>(p); });  // only past the residual bound
+  if constexpr (std::is_same_v<I, interval>) C = detail::identity_minus_product(R, A);  // midpoint-radius, O(n^3) in double
+  const matrix_t<I> RI = R.unaryExpr([](const P& p) { return detail::thin<I>(p); });
   if constexpr (!std::is_same_v<I, interval>) {
     C = -detail::product(RI, A);
     for (Eigen::Index i = 0; i < n; ++i) C(i, i) += I(1);
@@ -345,13 +357,8 @@ vector_t<I> residual_or_krawczyk_solve(const matrix_t<I>& A, const vector_t<I>& 
 template <Scalar I>
   requires(scalar_traits<I>::is_interval)
 vector_t<I> verified_solve(const matrix_t<I>& A, const vector_t<I>& b) {
-  detail::check_square(A, b.rows());
+  detail::check_finite_square(A, b);
   const Eigen::Index n = A.rows();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    if (!is_finite(b(i))) throw certification_error("verified solve: right-hand side is not finite");
-    for (Eigen::Index j = 0; j < n; ++j)
-      if (!is_finite(A(i, j))) throw certification_error("verified solve: matrix is not finite");
-  }
   if (n == 0) return vector_t<I>(0);
   if constexpr (std::is_same_v<I, mpfi>)
     if (auto x = detail::mpfi_residual_solve(A, b)) return *x;
@@ -359,10 +366,11 @@ vector_t<I> verified_solve(const matrix_t<I>& A, const vector_t<I>& b) {
 }
 
 namespace detail {
-/// residual_or_krawczyk_solve's residual bound for an interval system of more than
-/// small_system_max unknowns, every matrix borrowed (linalg/scratch.hpp): the same operations on
-/// the same types in the same order, so the same enclosure; false where the bound does not give
-/// one (verified_solve then decides: Krawczyk's iteration, or the refusal).
+/// The residual bound for an interval system of more than small_system_max unknowns, every
+/// matrix borrowed from Site's pool (linalg/scratch.hpp): R ~ mid(A)^-1 by LU in double, x~ with
+/// one refinement step, r = b - A x~ and C = I - R A enclosed, then residual_enclosure_into;
+/// false where the bound does not give an enclosure (verified_solve then decides: Krawczyk's
+/// iteration, or the refusal).
 template <class Site>
 bool residual_solve_into(const matrix_t<interval>& A, const vector_t<interval>& b, vector_t<interval>& x) {
   using P = double;
@@ -402,8 +410,8 @@ bool residual_solve_into(const matrix_t<interval>& A, const vector_t<interval>& 
     for (Eigen::Index k = 1; k < n; ++k) sum += A(i, k) * xI(k);
     residual(i) = b(i) - sum;
   }
-  identity_minus_product_into(R, A, *C_held);
-  if (!residual_enclosure_into(R, *C_held, residual, e)) return false;
+  identity_minus_product_into<Site>(R, A, *C_held);
+  if (!residual_enclosure_into<Site>(R, *C_held, residual, e)) return false;
   x.resize(n);
   for (Eigen::Index i = 0; i < n; ++i) x(i) = xI(i) + e(i);
   return true;
@@ -417,22 +425,48 @@ template <class Site = void, Scalar I>
   requires(scalar_traits<I>::is_interval)
 void verified_solve_into(const matrix_t<I>& A, const vector_t<I>& b, vector_t<I>& x) {
   if constexpr (std::is_same_v<I, interval>) {
-    detail::check_square(A, b.rows());
+    detail::check_finite_square(A, b);  // verified_solve's refusals
     const Eigen::Index n = A.rows();
-    bool finite = true;
-    for (Eigen::Index i = 0; i < n && finite; ++i) {
-      finite = is_finite(b(i));
-      for (Eigen::Index j = 0; j < n && finite; ++j) finite = is_finite(A(i, j));
-    }
-    // verified_solve's own path (residual_or_krawczyk_solve: this bound first), or its refusal
-    if (finite && n > 0 && n <= detail::small_system_max && detail::small_interval_solve_into(A, b, x)) return;
-    if (finite && n > detail::small_system_max && detail::residual_solve_into<Site>(A, b, x)) return;
+    // verified_solve's own path (residual_or_krawczyk_solve: this bound first)
+    if (n > 0 && n <= detail::small_system_max && detail::small_interval_solve_into(A, b, x)) return;
+    if (n > detail::small_system_max && detail::residual_solve_into<Site>(A, b, x)) return;
   }
-  x = verified_solve(A, b);
+  x = verified_solve(A, b);  // Krawczyk's iteration, or its refusal
 }
 
 template <Scalar T>
 vector_t<T> solve(const matrix_t<T>& A, const vector_t<T>& b);
+
+namespace detail {
+/// The scalars whose solves run here (the others, numbers carrying derivatives, have overloads
+/// of solve and solve_spd of their own: derivatives/, found by argument-dependent lookup).
+template <class T>
+inline constexpr bool solved_here = std::is_same_v<T, double> || std::is_same_v<T, long double> ||
+                                    std::is_same_v<T, dd> || std::is_same_v<T, float128> ||
+                                    std::is_same_v<T, mpfr> || std::is_same_v<T, interval> || std::is_same_v<T, mpfi>;
+/// Cholesky's solve of a point system into x, the factor borrowed from Site's pool (linalg/scratch.hpp).
+template <class Site, class T>
+void cholesky_solve_into(const matrix_t<T>& A, const vector_t<T>& b, vector_t<T>& x) {
+  check_square(A, b.rows());
+  const scratch<Eigen::LLT<matrix_t<T>>, Site> llt;
+  llt->compute(A);
+  if (llt->info() != Eigen::Success) throw certification_error("Cholesky: the matrix is not positive definite");
+  x.resize(b.rows());
+  x = llt->solve(b);
+}
+/// LU's solve (partial pivoting) of a point system into x, the factors borrowed from Site's pool.
+template <class Site, class T>
+void lu_solve_into(const matrix_t<T>& A, const vector_t<T>& b, vector_t<T>& x) {
+  check_square(A, b.rows());
+  const scratch<Eigen::PartialPivLU<matrix_t<T>>, Site> lu;
+  lu->compute(A);
+  using std::abs;
+  for (Eigen::Index i = 0; i < A.rows(); ++i)
+    if (!(abs(lu->matrixLU()(i, i)) > 0)) throw certification_error("LU: the matrix is singular");
+  x.resize(b.rows());
+  x = lu->solve(b);
+}
+}  // namespace detail
 
 /// A x = b for a symmetric positive definite A.
 template <Scalar T>
@@ -442,27 +476,15 @@ vector_t<T> solve_spd(const matrix_t<T>& A, const vector_t<T>& b) {
   } else if constexpr (requires { scalar_traits<T>::is_exact; }) {
     return solve(A, b);  // exact rationals have no square root: LU is exact
   } else {
-    detail::check_square(A, b.rows());
     struct site;
-    const scratch<Eigen::LLT<matrix_t<T>>, site> llt;  // the factor's storage reused (linalg/scratch.hpp)
-    llt->compute(A);
-    if (llt->info() != Eigen::Success)
-      throw certification_error("Cholesky: the matrix is not positive definite");
-    return llt->solve(b);
+    vector_t<T> x;
+    detail::cholesky_solve_into<site>(A, b, x);
+    return x;
   }
 }
 
 /// The same into x (point types: the factor's and x's storage reused, no allocation when they
-/// have their sizes already; interval types: x assigned the verified solve's result).
-namespace detail {
-/// The scalars whose solves run here (the others, numbers carrying derivatives, have overloads
-/// of solve and solve_spd of their own: derivatives/, found by argument-dependent lookup).
-template <class T>
-inline constexpr bool solved_here = std::is_same_v<T, double> || std::is_same_v<T, long double> ||
-                                    std::is_same_v<T, dd> || std::is_same_v<T, float128> ||
-                                    std::is_same_v<T, mpfr> || std::is_same_v<T, interval> || std::is_same_v<T, mpfi>;
-}  // namespace detail
-
+/// have their sizes already; interval types: verified_solve_into).
 /// Site: the caller's tag for the factor's storage (linalg/scratch.hpp: an Eigen object keeps one
 /// size, so each caller whose systems have a size of their own keeps a factor of its own).
 template <class Site = void, class T>  // T unconstrained: the derivative types go to their own overloads
@@ -472,13 +494,7 @@ void solve_spd_into(const matrix_t<T>& A, const vector_t<T>& b, vector_t<T>& x) 
   } else if constexpr (scalar_traits<T>::is_interval) {
     verified_solve_into<Site>(A, b, x);
   } else {
-    detail::check_square(A, b.rows());
-    const scratch<Eigen::LLT<matrix_t<T>>, Site> llt;
-    llt->compute(A);
-    if (llt->info() != Eigen::Success)
-      throw certification_error("Cholesky: the matrix is not positive definite");
-    x.resize(b.rows());
-    x = llt->solve(b);
+    detail::cholesky_solve_into<Site>(A, b, x);
   }
 }
 
@@ -491,14 +507,7 @@ void solve_into(const matrix_t<T>& A, const vector_t<T>& b, vector_t<T>& x) {
   } else if constexpr (scalar_traits<T>::is_interval) {
     verified_solve_into<Site>(A, b, x);
   } else {
-    detail::check_square(A, b.rows());
-    const scratch<Eigen::PartialPivLU<matrix_t<T>>, Site> lu;
-    lu->compute(A);
-    using std::abs;
-    for (Eigen::Index i = 0; i < A.rows(); ++i)
-      if (!(abs(lu->matrixLU()(i, i)) > 0)) throw certification_error("LU: the matrix is singular");
-    x.resize(b.rows());
-    x = lu->solve(b);
+    detail::lu_solve_into<Site>(A, b, x);
   }
 }
 
@@ -508,14 +517,10 @@ vector_t<T> solve(const matrix_t<T>& A, const vector_t<T>& b) {
   if constexpr (scalar_traits<T>::is_interval) {
     return verified_solve(A, b);
   } else {
-    detail::check_square(A, b.rows());
-    struct site;
-    const scratch<Eigen::PartialPivLU<matrix_t<T>>, site> lu;  // the factors' storage reused
-    lu->compute(A);
-    using std::abs;
-    for (Eigen::Index i = 0; i < A.rows(); ++i)
-      if (!(abs(lu->matrixLU()(i, i)) > 0)) throw certification_error("LU: the matrix is singular");
-    return lu->solve(b);
+    struct site;  // the factors' storage reused
+    vector_t<T> x;
+    detail::lu_solve_into<site>(A, b, x);
+    return x;
   }
 }
 

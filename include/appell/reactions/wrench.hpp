@@ -19,9 +19,12 @@ template <Scalar T>
 vec3<T> constraint_couple(const body_kinematics<T>& body, const vector_t<T>& generalized_reaction) {
   if (body.Jw.cols() != 3)
     throw std::invalid_argument("constraint_couple: the unconstrained body must have 3 speeds");
-  matrix_t<T> JwT = body.Jw.transpose();
-  const vector_t<T> g = solve(JwT, generalized_reaction);
-  return vec3<T>(g(0), g(1), g(2));
+  struct site;  // borrowed (linalg/scratch.hpp)
+  const scratch<matrix_t<T>, site> JwT;
+  const scratch<vector_t<T>, site> g;
+  *JwT = body.Jw.transpose();
+  solve_into<site>(*JwT, generalized_reaction, *g);
+  return vec3<T>((*g)(0), (*g)(1), (*g)(2));
 }
 
 /// Force F at a point with velocity Jp u + ..., and couple Gamma: [Jp^T Jw^T][F; Gamma] = Q'_full.

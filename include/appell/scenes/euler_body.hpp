@@ -56,6 +56,11 @@ struct euler_system {
   vector_t<S> qdot(const vector_t<S>&, const vector_t<S>& u, const S&) const {
     return u;  // lambda' = p, mu' = q, nu' = r
   }
+  /// The same into qd (its storage reused).
+  template <class S>
+  void qdot_into(const vector_t<S>&, const vector_t<S>& u, const S&, vector_t<S>& qd) const {
+    qd = u;
+  }
   template <class S>
   void bodies(const vector_t<S>&, const vector_t<S>& u, const S&, std::vector<body_state<S>>& out) const {
     body_state<S> b;  // mass irrelevant: G is fixed
@@ -88,12 +93,17 @@ appell_equations<T> euler_body_equations(const euler_body<T>& body, const vec3<T
 template <Scalar T>
 euler_body_result<T> euler_body_motion(const euler_body<T>& body, const vec3<T>& omega) {
   const euler_system<T> sys{body};
-  const vector_t<T> q = vector_t<T>::Zero(3), u = omega;
-  const appell_equations<T> eq = euler_body_equations(body, omega);
-  const vector_t<T> udot = eq.accelerations();
+  struct site;  // working storage borrowed (linalg/scratch.hpp): none taken from the heap once warm
+  const scratch<vector_t<T>, site> q, u, udot, ones;
+  const scratch<appell_equations<T>, site> eq;
+  q->setZero(3);
+  *u = omega;
+  ones->setOnes(3);
+  gibbs_appell_into(sys, *q, *u, T(0), *eq);  // euler_body_equations' equations
+  eq->accelerations_into(*udot);
   euler_body_result<T> r;
-  r.omega_dot = vec3<T>(udot(0), udot(1), udot(2));
-  r.virtual_work_residual = virtual_work_residual(sys, eq, q, u, T(0), udot, vector_t<T>(vector_t<T>::Ones(3)));
+  r.omega_dot = vec3<T>((*udot)(0), (*udot)(1), (*udot)(2));
+  r.virtual_work_residual = virtual_work_residual(sys, *eq, *q, *u, T(0), *udot, *ones);
   r.power_residual = euler_power_residual(body, omega, r.omega_dot);
   return r;
 }

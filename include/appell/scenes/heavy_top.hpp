@@ -95,6 +95,17 @@ vector_t<S> euler_rates_to_qdot(const vector_t<S>& q, const vector_t<S>& u) {
     return d;
   }
 }
+/// The same into d (its storage reused).
+template <class Angles, class S>
+void euler_rates_to_qdot_into(const vector_t<S>& q, const vector_t<S>& u, vector_t<S>& d) {
+  if constexpr (std::is_same_v<Angles, euler_angles>) {
+    (void)q;
+    d = u;
+  } else {
+    d.resize(3);
+    d << Angles::rate(q(0), u(0)), Angles::rate(q(1), u(1)), u(2);
+  }
+}
 }  // namespace detail
 
 template <Scalar T, class Angles = euler_angles>
@@ -107,9 +118,14 @@ struct heavy_top {
   vector_t<S> qdot(const vector_t<S>& q, const vector_t<S>& u, const S&) const {
     return detail::euler_rates_to_qdot<Angles>(q, u);
   }
-  /// The body axis e_z and the line of nodes n at (psi, theta).
+  /// The same into qd (its storage reused).
   template <class S>
-  static void axes(const vector_t<S>& q, vec3<S>& n, vec3<S>& ez) {
+  void qdot_into(const vector_t<S>& q, const vector_t<S>& u, const S&, vector_t<S>& qd) const {
+    detail::euler_rates_to_qdot_into<Angles>(q, u, qd);
+  }
+  /// The body axis e_z and the line of nodes n at (psi, theta) = (q(0), q(1)).
+  template <class V, class S>
+  static void axes(const V& q, vec3<S>& n, vec3<S>& ez) {
     S sp, cp, st, ct;
     Angles::sin_cos(q(0), sp, cp);
     Angles::sin_cos(q(1), st, ct);
@@ -152,9 +168,14 @@ struct heavy_top_resal {
   vector_t<S> qdot(const vector_t<S>& q, const vector_t<S>& u, const S&) const {
     return detail::euler_rates_to_qdot<Angles>(q, u);
   }
-  /// The trihedron's axes n, e_z x n, e_z as the columns of a rotation (fixed-axis components).
+  /// The same into qd (its storage reused).
   template <class S>
-  static mat3<S> axes(const vector_t<S>& q) {
+  void qdot_into(const vector_t<S>& q, const vector_t<S>& u, const S&, vector_t<S>& qd) const {
+    detail::euler_rates_to_qdot_into<Angles>(q, u, qd);
+  }
+  /// The trihedron's axes n, e_z x n, e_z as the columns of a rotation (fixed-axis components).
+  template <class V, class S = typename V::Scalar>
+  static mat3<S> axes(const V& q) {
     S sp, cp, st, ct;
     Angles::sin_cos(q(0), sp, cp);
     Angles::sin_cos(q(1), st, ct);
@@ -204,11 +225,19 @@ struct free_top_resal {
   vector_t<S> qdot(const vector_t<S>&, const vector_t<S>& v, const S&) const {
     return v;
   }
+  /// The same into qd (its storage reused).
+  template <class S>
+  void qdot_into(const vector_t<S>&, const vector_t<S>& v, const S&, vector_t<S>& qd) const {
+    qd = v;
+  }
   template <class S>
   void bodies(const vector_t<S>& q, const vector_t<S>& v, const S& t, std::vector<body_state<S>>& out) const {
-    const vector_t<S> angles = q.head(3), rates = v.head(3);
-    heavy_top_resal<T>{A, C, mass, l, g}.bodies(angles, rates, t, out);
-    const mat3<S> R = heavy_top_resal<T>::axes(angles);
+    struct site;  // borrowed (linalg/scratch.hpp)
+    const scratch<vector_t<S>, site> angles, rates;
+    *angles = q.head(3);
+    *rates = v.head(3);
+    heavy_top_resal<T>{A, C, mass, l, g}.bodies(*angles, *rates, t, out);
+    const mat3<S> R = heavy_top_resal<T>::axes(*angles);
     body_state<S>& b = out.back();
     for (int i = 0; i < 3; ++i)  // (R^T w)_i = column i of R . w
       b.velocity(i) += R(0, i) * v(3) + R(1, i) * v(4) + R(2, i) * v(5);
@@ -227,10 +256,18 @@ struct free_top_fixed_axes {
   vector_t<S> qdot(const vector_t<S>&, const vector_t<S>& u, const S&) const {
     return u;
   }
+  /// The same into qd (its storage reused).
+  template <class S>
+  void qdot_into(const vector_t<S>&, const vector_t<S>& u, const S&, vector_t<S>& qd) const {
+    qd = u;
+  }
   template <class S>
   void bodies(const vector_t<S>& q, const vector_t<S>& u, const S& t, std::vector<body_state<S>>& out) const {
-    const vector_t<S> angles = q.tail(3), rates = u.tail(3);
-    heavy_top<T>{A, C, mass, l, g}.bodies(angles, rates, t, out);
+    struct site;  // borrowed (linalg/scratch.hpp)
+    const scratch<vector_t<S>, site> angles, rates;
+    *angles = q.tail(3);
+    *rates = u.tail(3);
+    heavy_top<T>{A, C, mass, l, g}.bodies(*angles, *rates, t, out);
     out.back().velocity = vec3<S>(u(0), u(1), u(2));
   }
 };
@@ -244,7 +281,7 @@ struct pivot_constraint {
   template <class S>
   void eval(const vector_t<S>& q, const S&, matrix_t<S>& A, vector_t<S>& a) const {
     vec3<S> n, ez;
-    heavy_top<T>::axes(vector_t<S>(q.tail(3)), n, ez);
+    heavy_top<T>::axes(q.tail(3), n, ez);
     const vec3<S> e3(S(0), S(0), S(1));
     const vec3<S> c_psi = cross(e3, ez), c_theta = cross(n, ez);
     for (int i = 0; i < 3; ++i) {
@@ -314,32 +351,44 @@ top_on_pivot_result<T> top_on_pivot_motion(const T& A, const T& C, const T& mass
                                            const top_on_pivot_state<T>& s) {
   const T t = T(0);
   top_on_pivot_result<T> r;
+  struct site;  // working storage borrowed (linalg/scratch.hpp): none taken from the heap once warm
+  const scratch<vector_t<T>, site> q_held, u_held, v_held, vdot_held, ones;
+  vector_t<T>&q = *q_held, &u = *u_held, &v = *v_held, &vdot = *vdot_held;
   {
     const free_top_resal<T> sys{A, C, mass, l, g};
-    const vector_t<T> q = detail::pivot_positions(s), v_a = detail::pivot_free_speeds(s);
-    const cotton_result<T> c = top_on_pivot_cotton(A, C, mass, l, g, s);
+    q.resize(6);
+    q << s.psi, s.theta, s.phi, T(0), T(0), T(0);  // detail::pivot_positions
+    v.setZero(6);
+    v(0) = s.psi_dot, v(1) = s.theta_dot, v(2) = s.phi_dot;  // the free speeds, then the pivot's 0
+    const scratch<cotton_result<T>, site> c_held;
+    const cotton_result<T>& c = *c_held;
+    const scratch<vector_t<T>, site> v_a;
+    *v_a = v.head(3);  // detail::pivot_free_speeds
+    cotton_reactions_into(sys, q, *v_a, t, 3, *c_held);  // top_on_pivot_cotton
     r.psi_ddot = c.free_accelerations(0);
     r.theta_ddot = c.free_accelerations(1);
     r.phi_ddot = c.free_accelerations(2);
     r.pivot_force = vec3<T>(c.reactions(0), c.reactions(1), c.reactions(2));
-    vector_t<T> v = vector_t<T>::Zero(6), vdot = vector_t<T>::Zero(6);
-    v.head(3) = v_a;
+    vdot.setZero(6);
     vdot.head(3) = c.free_accelerations;
-    const vector_t<T> ones = vector_t<T>::Ones(6);
-    r.virtual_work_residual = virtual_work_residual(sys, c.equations, q, v, t, vdot, ones);
+    ones->setOnes(6);
+    r.virtual_work_residual = virtual_work_residual(sys, c.equations, q, v, t, vdot, *ones);
   }
   {
     const free_top_fixed_axes<T> sys{A, C, mass, l, g};
     // G = l e_z (O at the origin), v_G = omega x l e_z.
-    vector_t<T> q(6), u(6);
+    q.resize(6);
+    u.resize(6);
     q << T(0), T(0), T(0), s.psi, s.theta, s.phi;
     vec3<T> n, ez;
-    heavy_top<T>::axes(vector_t<T>(q.tail(3)), n, ez);
+    heavy_top<T>::axes(q.tail(3), n, ez);
     for (int i = 0; i < 3; ++i) q(i) = l * ez(i);
     const vec3<T> omega = vec3<T>(T(0), T(0), s.psi_dot) + n * s.theta_dot + ez * s.phi_dot;
     const vec3<T> vG = cross(omega, vec3<T>(ez * l));
     u << vG(0), vG(1), vG(2), s.psi_dot, s.theta_dot, s.phi_dot;
-    const constrained_motion<T> lag = lagrange_multipliers(sys, pivot_constraint<T>{l}, q, u, t);
+    const scratch<constrained_motion<T>, site> lag_held;
+    const constrained_motion<T>& lag = *lag_held;
+    lagrange_multipliers_into(sys, pivot_constraint<T>{l}, q, u, t, *lag_held);
     r.pivot_force_lagrange = vec3<T>(lag.reactions(0), lag.reactions(1), lag.reactions(2));
     r.psi_ddot_lagrange = lag.accelerations(3);
     r.theta_ddot_lagrange = lag.accelerations(4);

@@ -98,6 +98,11 @@ struct free_sphere {
   vector_t<S> qdot(const vector_t<S>&, const vector_t<S>& u, const S&) const {
     return u;  // the paper's parameters: dq_1 = u dt, ..., dq_6 = r dt
   }
+  /// The same into qd (its storage reused).
+  template <class S>
+  void qdot_into(const vector_t<S>&, const vector_t<S>& u, const S&, vector_t<S>& qd) const {
+    qd = u;
+  }
   template <class S>
   void bodies(const vector_t<S>&, const vector_t<S>& u, const S&, std::vector<body_state<S>>& out) const {
     body_state<S> s;
@@ -158,31 +163,48 @@ struct rolling_sphere_result {
 /// virtual_work_residual 0): the motion over time needs neither (ode/problems.hpp).  Without
 /// `reactions` (which needs `checks` off) the contact force and the pivoting couple are left 0 too:
 /// the free speeds' columns alone are formed (cotton_free_motion), the accelerations the same bit
-/// for bit; the motion's right-hand side.
+/// for bit; the motion's right-hand side.  Into r, whose vectors are reused; the working storage
+/// is borrowed (linalg/scratch.hpp): with checks and reactions, nothing is taken from the heap
+/// once warm.
 template <Scalar T>
-rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const T& a,
-                                               const rolling_surface<T>& surface, const vec3<T>& c,
-                                               const vec3<T>& omega, const vec3<T>& F_total, const vec3<T>& tau,
-                                               bool checks = true, bool reactions = true) {
+void rolling_sphere_motion_into(const T& mass, const T& A, const T& a, const rolling_surface<T>& surface,
+                                const vec3<T>& c, const vec3<T>& omega, const vec3<T>& F_total, const vec3<T>& tau,
+                                bool checks, bool reactions, rolling_sphere_result<T>& r) {
   if (checks && !reactions) throw std::invalid_argument("rolling_sphere_motion: the checks need the reactions");
   using std::sqrt;
-  rolling_sphere_result<T> r;
   r.axes = surface.frame(c);
   const mat3<T> Rt = r.axes.transpose();
   const free_sphere<T> sys{mass, A, a, surface, mat_vec(Rt, F_total), mat_vec(Rt, tau)};
   const vec3<T> w = mat_vec(Rt, omega);
-  vector_t<T> u(6), q = vector_t<T>::Zero(6);
+  struct site;
+  const scratch<vector_t<T>, site> u_held, q_held;
+  vector_t<T>&u = *u_held, &q = *q_held;
+  u.resize(6);
+  q.setZero(6);
   u << a * w(1), -a * w(0), T(0), w(0), w(1), T(0);  // on the constraints (22)
   const T t = T(0);
   const rolling_constraint<T> con{a};
-  const auto change = adapt_speeds_keeping(con, 6, {3, 4});  // eq. (23): free speeds p, q
-  appell_equations<T> adapted_eq;  // Cotton's speeds (p, q, u_1, v_1, w, r), for eq. (4) below
-  const constrained_motion<T> m =
-      reactions ? cotton_reactions(sys, change, q, u, t, &adapted_eq)
-                : constrained_motion<T>{cotton_free_motion<3>(sys, change, q, u, t), vector_t<T>::Zero(con.count())};
+  const scratch<adapted_change<rolling_constraint<T>>, site> change_held;
+  adapt_speeds_keeping_into(con, 6, {3, 4}, *change_held);  // eq. (23): free speeds p, q
+  const adapted_change<rolling_constraint<T>>& change = *change_held;
+  const scratch<appell_equations<T>, site> adapted_eq;  // Cotton's speeds (p, q, u_1, v_1, w, r), for eq. (4) below
+  const scratch<constrained_motion<T>, site> m_held;
+  const constrained_motion<T>& m = *m_held;
+  if (reactions) {
+    cotton_reactions_into(sys, change, q, u, t, *m_held, &*adapted_eq);
+  } else {
+    m_held->accelerations = cotton_free_motion<3>(sys, change, q, u, t);
+    m_held->reactions.setZero(con.count());
+  }
   r.speeds_dot = m.accelerations;
   r.reactions = m.reactions;
-  if (checks) r.multipliers = lagrange_multipliers(sys, con, q, u, t).reactions;
+  if (checks) {
+    const scratch<constrained_motion<T>, site> lagrange;
+    lagrange_multipliers_into(sys, con, q, u, t, *lagrange);
+    r.multipliers = lagrange->reactions;
+  } else {
+    r.multipliers.resize(0);
+  }
   const vec3<T> v(u(0), u(1), u(2)), wF(u(3), u(4), u(5));
   r.frame_rate = surface.template frame_rate<T>(v, surface.rho(a));
   const vec3<T> aG = vec3<T>(m.accelerations(0), m.accelerations(1), m.accelerations(2)) + cross(r.frame_rate, v);
@@ -198,16 +220,28 @@ rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const 
   r.contact_point = c - r.normal * a;
   r.center_velocity = mat_vec(r.axes, v);  // (a q, -a p, 0) on the trihedron: omega x a n
   r.virtual_work_residual = T(0);
-  if (!checks) return r;
+  if (!checks) return;
   // eq. (4) in Cotton's speeds (p, q, u_1, v_1, w, r), with the equations cotton_reactions formed there
-  const auto adapted = change_speeds(sys, change, 6);
-  vector_t<T> vv = vector_t<T>::Zero(6), vdot = vector_t<T>::Zero(6);
+  const auto adapted = change_speeds(sys, detail::change_ref{&change}, 6);
+  const scratch<vector_t<T>, site> vv_held, vdot_held, ones;
+  vector_t<T>&vv = *vv_held, &vdot = *vdot_held;
+  vv.setZero(6);
+  vdot.setZero(6);
+  ones->setOnes(6);
   vv(0) = w(0);
   vv(1) = w(1);
   vdot(0) = m.accelerations(3);
   vdot(1) = m.accelerations(4);
-  r.virtual_work_residual =
-      virtual_work_residual(adapted, adapted_eq, q, vv, t, vdot, vector_t<T>(vector_t<T>::Ones(6)));
+  r.virtual_work_residual = virtual_work_residual(adapted, *adapted_eq, q, vv, t, vdot, *ones);
+}
+/// The same returned.
+template <Scalar T>
+rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const T& a,
+                                               const rolling_surface<T>& surface, const vec3<T>& c,
+                                               const vec3<T>& omega, const vec3<T>& F_total, const vec3<T>& tau,
+                                               bool checks = true, bool reactions = true) {
+  rolling_sphere_result<T> r;
+  rolling_sphere_motion_into(mass, A, a, surface, c, omega, F_total, tau, checks, reactions, r);
   return r;
 }
 

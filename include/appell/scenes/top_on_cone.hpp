@@ -74,6 +74,14 @@ struct cone_speeds {
     u(2) = v(1);
     return u;
   }
+  /// The same into u (its storage reused).
+  template <class S>
+  void apply_into(const vector_t<S>& q, const vector_t<S>& v, const S&, vector_t<S>& u) const {
+    u.resize(3);
+    u(0) = v(2) + cone->fprime(q(1)) * v(0);
+    u(1) = v(0);
+    u(2) = v(1);
+  }
 };
 
 /// The state of Example I: the coordinates (psi on the cone, theta, phi) and the free speeds.
@@ -136,16 +144,20 @@ vector_t<T> top_on_cone_accelerations(const heavy_top<T, Angles>& top, const Con
 /// Lagrange's check left 0): the motion over time (ode/problems.hpp) encloses them over a whole
 /// step, where the couple's 3 x 3 solve over the step's box need not be certifiable.
 template <Scalar T, class Angles, class Cone>
-top_on_cone_result<T> top_on_cone_motion(const heavy_top<T, Angles>& top, const Cone& cone,
-                                         const top_on_cone_state<T>& s, bool couple_and_checks = true) {
+void top_on_cone_motion_into(const heavy_top<T, Angles>& top, const Cone& cone, const top_on_cone_state<T>& s,
+                             bool couple_and_checks, top_on_cone_result<T>& r) {
   const T t = T(0);
   const T fp = cone.fprime(s.theta), fpp = cone.fsecond(s.theta);
-  vector_t<T> q(3);
+  struct site;  // working storage borrowed (linalg/scratch.hpp): none taken from the heap once warm
+  const scratch<vector_t<T>, site> q_held, v_a;
+  vector_t<T>& q = *q_held;
+  q.resize(3);
   q << s.psi, s.theta, s.phi;
   const heavy_top_resal<T, Angles> resal{top.A, top.C, top.mass, top.l, top.g};
   const auto sys = change_speeds(resal, cone_speeds<Cone>{&cone}, 3);
-  top_on_cone_result<T> r;
-  r.cotton = top_on_cone_cotton(top, cone, s);
+  v_a->resize(2);
+  *v_a << s.theta_dot, s.phi_dot;
+  cotton_reactions_into(sys, q, *v_a, t, 1, r.cotton);  // top_on_cone_cotton
   r.theta_ddot = r.cotton.free_accelerations(0);
   r.phi_ddot = r.cotton.free_accelerations(1);
   r.H = r.cotton.reactions(0);
@@ -153,23 +165,33 @@ top_on_cone_result<T> top_on_cone_motion(const heavy_top<T, Angles>& top, const 
   if (!couple_and_checks) {
     r.couple = vec3<T>(T(0), T(0), T(0));
     r.virtual_work_residual = r.lagrange_multiplier = r.theta_ddot_lagrange = T(0);
-    return r;
+    return;
   }
   // The couple: J_w^T Gamma = (0, 0, H) in Cotton's speeds (wrench.hpp).
-  vector_t<T> v(3), vdot(3), generalized(3);
+  const scratch<vector_t<T>, site> v_held, vdot_held, generalized_held, u_held, ones;
+  vector_t<T>&v = *v_held, &vdot = *vdot_held, &generalized = *generalized_held, &u = *u_held;
+  v.resize(3), vdot.resize(3), generalized.resize(3), u.resize(3);
   v << s.theta_dot, s.phi_dot, T(0);
   vdot << r.theta_ddot, r.phi_ddot, T(0);
   generalized << T(0), T(0), T(1);  // the couple is linear in H: solve for H = 1, scale once (H enters one product, not a cancellation)
-  const auto kin = differentiate_kinematics(sys, q, v, t);
-  r.couple = mat_vec(heavy_top_resal<T, Angles>::axes(q), constraint_couple(kin[0], generalized)) * r.H;  // fixed axes
+  const scratch<std::vector<body_kinematics<T>>, site> kin;
+  differentiate_kinematics_into(sys, q, v, t, *kin);
+  r.couple = mat_vec(heavy_top_resal<T, Angles>::axes(q), constraint_couple((*kin)[0], generalized)) * r.H;  // fixed axes
   // Checks: eq. (4) and Lagrange's multiplier on the unconstrained top.
-  const vector_t<T> ones = vector_t<T>::Ones(3);
-  r.virtual_work_residual = virtual_work_residual(sys, r.cotton.equations, q, v, t, vdot, ones);
-  vector_t<T> u(3);
+  ones->setOnes(3);
+  r.virtual_work_residual = virtual_work_residual(sys, r.cotton.equations, q, v, t, vdot, *ones);
   u << fp * s.theta_dot, s.theta_dot, s.phi_dot;
-  const constrained_motion<T> lag = lagrange_multipliers(top, cone_constraint<Cone>{&cone}, q, u, t);
-  r.lagrange_multiplier = lag.reactions(0);
-  r.theta_ddot_lagrange = lag.accelerations(1);
+  const scratch<constrained_motion<T>, site> lag;
+  lagrange_multipliers_into(top, cone_constraint<Cone>{&cone}, q, u, t, *lag);
+  r.lagrange_multiplier = lag->reactions(0);
+  r.theta_ddot_lagrange = lag->accelerations(1);
+}
+/// The same returned.
+template <Scalar T, class Angles, class Cone>
+top_on_cone_result<T> top_on_cone_motion(const heavy_top<T, Angles>& top, const Cone& cone,
+                                         const top_on_cone_state<T>& s, bool couple_and_checks = true) {
+  top_on_cone_result<T> r;
+  top_on_cone_motion_into(top, cone, s, couple_and_checks, r);
   return r;
 }
 

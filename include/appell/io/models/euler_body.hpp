@@ -31,12 +31,21 @@ struct euler_body_model {
   }
   template <Scalar T>
   static evaluation<T> compute(const prepared<T>& m) {
-    const euler_body_result<T> r = euler_body_motion(m.body, m.omega);
     evaluation<T> e;
-    e.results.push_back(detail::vector_result("omega_dot", r.omega_dot));
-    e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
-    e.checks.push_back(detail::scalar_result("power_balance", r.power_residual));
+    compute_into(m, e);
     return e;
+  }
+  /// The same written over e (appell::compute_into: its names' and values' storage reused).
+  template <Scalar T>
+  static void compute_into(const prepared<T>& m, evaluation<T>& e, with_checks = with_checks::yes) {
+    const euler_body_result<T> r = euler_body_motion(m.body, m.omega);
+    using W = evaluation_writer<T>;
+    W out(e);
+    e.contacts.clear();
+    out.vector(W::results, "omega_dot", "", r.omega_dot);
+    out.scalar(W::checks, "virtual_work_invariant", "", r.virtual_work_residual);
+    out.scalar(W::checks, "power_balance", "", r.power_residual);
+    out.finish();
   }
 };
 

@@ -33,19 +33,27 @@ struct heavy_top_model {
   }
   template <Scalar T>
   static evaluation<T> compute(const prepared<T>& m) {
-    const top_on_pivot_result<T> r = top_on_pivot_motion(m.A, m.C, m.mass, m.l, m.g, m.state);
     evaluation<T> e;
-    e.results.push_back(detail::scalar_result("theta_ddot", r.theta_ddot));
-    e.results.push_back(detail::scalar_result("phi_ddot", r.phi_ddot));
-    e.results.push_back(detail::scalar_result("psi_ddot", r.psi_ddot));
-    e.results.push_back(detail::vector_result("pivot_force", r.pivot_force));
-    e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
-    e.checks.push_back(detail::vector_result("pivot_force_cotton_minus_lagrange",
-                                             vec3<T>(r.pivot_force - r.pivot_force_lagrange)));
-    e.checks.push_back(detail::scalar_result("theta_ddot_cotton_minus_lagrange", T(r.theta_ddot - r.theta_ddot_lagrange)));
-    e.checks.push_back(detail::scalar_result("phi_ddot_cotton_minus_lagrange", T(r.phi_ddot - r.phi_ddot_lagrange)));
-    e.checks.push_back(detail::scalar_result("psi_ddot_cotton_minus_lagrange", T(r.psi_ddot - r.psi_ddot_lagrange)));
+    compute_into(m, e);
     return e;
+  }
+  /// The same written over e (appell::compute_into: its names' and values' storage reused).
+  template <Scalar T>
+  static void compute_into(const prepared<T>& m, evaluation<T>& e, with_checks = with_checks::yes) {
+    const top_on_pivot_result<T> r = top_on_pivot_motion(m.A, m.C, m.mass, m.l, m.g, m.state);
+    using W = evaluation_writer<T>;
+    W out(e);
+    e.contacts.clear();
+    out.scalar(W::results, "theta_ddot", "", r.theta_ddot);
+    out.scalar(W::results, "phi_ddot", "", r.phi_ddot);
+    out.scalar(W::results, "psi_ddot", "", r.psi_ddot);
+    out.vector(W::results, "pivot_force", "", r.pivot_force);
+    out.scalar(W::checks, "virtual_work_invariant", "", r.virtual_work_residual);
+    out.vector(W::checks, "pivot_force_cotton_minus_lagrange", "", vec3<T>(r.pivot_force - r.pivot_force_lagrange));
+    out.scalar(W::checks, "theta_ddot_cotton_minus_lagrange", "", T(r.theta_ddot - r.theta_ddot_lagrange));
+    out.scalar(W::checks, "phi_ddot_cotton_minus_lagrange", "", T(r.phi_ddot - r.phi_ddot_lagrange));
+    out.scalar(W::checks, "psi_ddot_cotton_minus_lagrange", "", T(r.psi_ddot - r.psi_ddot_lagrange));
+    out.finish();
   }
 };
 

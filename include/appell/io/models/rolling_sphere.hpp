@@ -111,46 +111,58 @@ struct rolling_sphere_model {
   /// with_checks::no: no Lagrange multipliers and no eq. (4) (rolling_sphere_motion's `checks`).
   template <Scalar T>
   static evaluation<T> compute(const prepared<T>& m, with_checks checks) {
-    const rolling_sphere_result<T> r = rolling_sphere_motion(m.M, m.A, m.a, m.surface, m.c, m.omega, m.F, m.tau,
-                                                             checks == with_checks::yes);
+    evaluation<T> e;
+    compute_into(m, e, checks);
+    return e;
+  }
+  /// The same written over e (appell::compute_into: its names' and values' storage reused).
+  template <Scalar T>
+  static void compute_into(const prepared<T>& m, evaluation<T>& e, with_checks checks) {
+    struct site;
+    const scratch<rolling_sphere_result<T>, site> r_held;  // borrowed (linalg/scratch.hpp)
+    const rolling_sphere_result<T>& r = *r_held;
+    rolling_sphere_motion_into(m.M, m.A, m.a, m.surface, m.c, m.omega, m.F, m.tau, checks == with_checks::yes, true,
+                               *r_held);
     // With a contact judged, its verdict says whether the normal force is positive, and the
     // contacts group gives the friction coefficient it requires in friction_ratio's stead.
     if (!m.contact && !certainly_positive(r.normal_force) && !certainly_negative(r.normal_force))
       throw certification_error("friction_ratio: the normal force " + to_string(r.normal_force) +
                                 " cannot be told from 0");
-    evaluation<T> e;
-    e.results.push_back(detail::vector_result("center_ddot", r.center_ddot));
-    e.results.push_back(detail::vector_result("omega_dot", r.omega_dot));
-    e.results.push_back(detail::vector_result("contact_force", r.contact_force));
-    e.results.push_back(detail::scalar_result("normal_force", r.normal_force));
-    e.results.push_back(detail::scalar_result("tangential_force", r.tangential_force()));
-    e.results.push_back(detail::scalar_result("pivot_couple", r.pivot_couple));
+    using W = evaluation_writer<T>;
+    W out(e);
+    e.contacts.clear();
+    out.vector(W::results, "center_ddot", "", r.center_ddot);
+    out.vector(W::results, "omega_dot", "", r.omega_dot);
+    out.vector(W::results, "contact_force", "", r.contact_force);
+    out.scalar(W::results, "normal_force", "", r.normal_force);
+    out.scalar(W::results, "tangential_force", "", r.tangential_force());
+    out.scalar(W::results, "pivot_couple", "", r.pivot_couple);
     if (!m.contact) {
-      e.results.push_back(detail::scalar_result("friction_ratio", T(r.tangential_force() / r.normal_force)));
+      out.scalar(W::results, "friction_ratio", "", T(r.tangential_force() / r.normal_force));
     } else {  // the contact's results as every model names them (SCENES.md "contacts")
       const T tangential = r.tangential_force();
-      e.results.push_back(detail::scalar_result("surface_normal_force", r.normal_force));
-      e.results.push_back(detail::vector_result("surface_friction_force", r.friction_force()));
-      e.results.push_back(detail::scalar_result("surface_tangential_force", tangential));
-      e.contacts.push_back(judged_contact("surface", r.normal_force, tangential, m.mu));
+      out.scalar(W::results, "surface_normal_force", "", r.normal_force);
+      out.vector(W::results, "surface_friction_force", "", r.friction_force());
+      out.scalar(W::results, "surface_tangential_force", "", tangential);
+      out.contacts().push_back(judged_contact("surface", r.normal_force, tangential, m.mu));
     }
     if (checks == with_checks::yes) {
-      e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
-      e.checks.push_back(detail::scalar_result("normal_force_cotton_minus_lagrange", T(r.reactions(2) - r.multipliers(2))));
-      e.checks.push_back(detail::scalar_result("pivot_couple_cotton_minus_lagrange", T(r.reactions(3) - r.multipliers(3))));
-      e.checks.push_back(detail::scalar_result("surface_residual", m.on_surface));
-      e.checks.push_back(detail::scalar_result("pivot_residual", m.no_pivot));
+      out.scalar(W::checks, "virtual_work_invariant", "", r.virtual_work_residual);
+      out.scalar(W::checks, "normal_force_cotton_minus_lagrange", "", T(r.reactions(2) - r.multipliers(2)));
+      out.scalar(W::checks, "pivot_couple_cotton_minus_lagrange", "", T(r.reactions(3) - r.multipliers(3)));
+      out.scalar(W::checks, "surface_residual", "", m.on_surface);
+      out.scalar(W::checks, "pivot_residual", "", m.no_pivot);
     }
-    e.derived.push_back(detail::vector_result("contact_point", r.contact_point));
-    e.derived.push_back(detail::vector_result("normal", r.normal));
-    e.derived.push_back(detail::vector_result("center_velocity", r.center_velocity));
+    out.vector(W::derived, "contact_point", "", r.contact_point);
+    out.vector(W::derived, "normal", "", r.normal);
+    out.vector(W::derived, "center_velocity", "", r.center_velocity);
     if (m.projected) {
-      e.derived.push_back(detail::vector_result("center", m.c));
-      e.derived.push_back(detail::vector_result("omega", m.omega));
-      e.derived.push_back(detail::scalar_result("center_moved", m.center_moved));
-      e.derived.push_back(detail::scalar_result("omega_moved", m.omega_moved));
+      out.vector(W::derived, "center", "", m.c);
+      out.vector(W::derived, "omega", "", m.omega);
+      out.scalar(W::derived, "center_moved", "", m.center_moved);
+      out.scalar(W::derived, "omega_moved", "", m.omega_moved);
     }
-    return e;
+    out.finish();
   }
 };
 

@@ -38,20 +38,32 @@ struct top_on_cone_model {
   }
   template <Scalar T>
   static evaluation<T> compute(const prepared<T>& m) {
-    const top_on_cone_state<T> s{m.cone.psi(m.theta), m.theta, m.phi, m.theta_dot, m.phi_dot};
-    const top_on_cone_result<T> r = top_on_cone_motion(m.top, m.cone, s);
     evaluation<T> e;
-    e.results.push_back(detail::scalar_result("theta_ddot", r.theta_ddot));
-    e.results.push_back(detail::scalar_result("phi_ddot", r.phi_ddot));
-    e.results.push_back(detail::scalar_result("psi_ddot", r.psi_ddot));
-    e.results.push_back(detail::scalar_result("H", r.H));
-    e.results.push_back(detail::vector_result("couple", r.couple));
-    e.checks.push_back(detail::scalar_result("virtual_work_invariant", r.virtual_work_residual));
-    e.checks.push_back(detail::scalar_result("cotton_minus_lagrange", T(r.H - r.lagrange_multiplier)));
-    e.checks.push_back(detail::scalar_result("theta_ddot_cotton_minus_lagrange", T(r.theta_ddot - r.theta_ddot_lagrange)));
-    e.derived.push_back(detail::scalar_result("psi", s.psi));
-    e.derived.push_back(detail::scalar_result("psi_dot", T(m.cone.fprime(m.theta) * m.theta_dot)));
+    compute_into(m, e);
     return e;
+  }
+  /// The same written over e (appell::compute_into: its names' and values' storage reused).
+  template <Scalar T>
+  static void compute_into(const prepared<T>& m, evaluation<T>& e, with_checks = with_checks::yes) {
+    const top_on_cone_state<T> s{m.cone.psi(m.theta), m.theta, m.phi, m.theta_dot, m.phi_dot};
+    struct site;
+    const scratch<top_on_cone_result<T>, site> r_held;  // borrowed (linalg/scratch.hpp)
+    const top_on_cone_result<T>& r = *r_held;
+    top_on_cone_motion_into(m.top, m.cone, s, true, *r_held);
+    using W = evaluation_writer<T>;
+    W out(e);
+    e.contacts.clear();
+    out.scalar(W::results, "theta_ddot", "", r.theta_ddot);
+    out.scalar(W::results, "phi_ddot", "", r.phi_ddot);
+    out.scalar(W::results, "psi_ddot", "", r.psi_ddot);
+    out.scalar(W::results, "H", "", r.H);
+    out.vector(W::results, "couple", "", r.couple);
+    out.scalar(W::checks, "virtual_work_invariant", "", r.virtual_work_residual);
+    out.scalar(W::checks, "cotton_minus_lagrange", "", T(r.H - r.lagrange_multiplier));
+    out.scalar(W::checks, "theta_ddot_cotton_minus_lagrange", "", T(r.theta_ddot - r.theta_ddot_lagrange));
+    out.scalar(W::derived, "psi", "", s.psi);
+    out.scalar(W::derived, "psi_dot", "", T(m.cone.fprime(m.theta) * m.theta_dot));
+    out.finish();
   }
 };
 
