@@ -13,9 +13,10 @@
 // A model whose checks cost work of their own may take the request instead,
 //     template <Scalar T> static evaluation<T> compute(const prepared<T>&, with_checks);
 // and leave them out for with_checks::no (its results unchanged, bit for bit).  A model may
-// also write over an earlier evaluation, reusing its storage (appell::compute_into),
+// instead write over an earlier evaluation, reusing its storage (appell::compute_into),
 //     template <Scalar T> static void compute_into(const prepared<T>&, evaluation<T>&, with_checks);
-// (evaluation_writer); the others' evaluations are assigned.
+// (evaluation_writer), which model_functions calls for new evaluations too (every shipped
+// model does); the others' evaluations are assigned.
 // The module's header ends with APPELL_EXTERN_MODEL(<name>_model); its .cpp
 // defines the reader and APPELL_DEFINE_MODEL_ENTRY(<name>_model); CMake
 // generates the instantiations (one unit per model x scalar) and the registry

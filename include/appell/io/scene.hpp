@@ -147,7 +147,9 @@ template <Scalar T>
 class evaluation_writer {
  public:
   enum group_id { results, checks, derived };
-  explicit evaluation_writer(evaluation<T>& e) : e_(e) {}
+  /// Over e: its contacts' judgements cleared (they are written whole), its names and values
+  /// written over in order and the rest dropped by finish().
+  explicit evaluation_writer(evaluation<T>& e) : e_(e) { e_.contacts.clear(); }
   /// name + suffix = v (name and suffix concatenated in place, never as a temporary string).
   void scalar(group_id g, std::string_view name, const char* suffix, const T& v) {
     named_result<T>& r = next(g, name, suffix, false);

@@ -29,19 +29,13 @@ struct euler_body_model {
     return {{detail::vec3_from_decimals<T>(in.inertia), detail::vec3_from_decimals<T>(in.torque)},
             detail::vec3_from_decimals<T>(in.omega)};
   }
-  template <Scalar T>
-  static evaluation<T> compute(const prepared<T>& m) {
-    evaluation<T> e;
-    compute_into(m, e);
-    return e;
-  }
-  /// The same written over e (appell::compute_into: its names' and values' storage reused).
+  /// The evaluation written over e (appell::compute_into: its names' and values' storage reused;
+  /// model_functions::compute calls it for a new evaluation too).
   template <Scalar T>
   static void compute_into(const prepared<T>& m, evaluation<T>& e, with_checks = with_checks::yes) {
     const euler_body_result<T> r = euler_body_motion(m.body, m.omega);
     using W = evaluation_writer<T>;
     W out(e);
-    e.contacts.clear();
     out.vector(W::results, "omega_dot", "", r.omega_dot);
     out.scalar(W::checks, "virtual_work_invariant", "", r.virtual_work_residual);
     out.scalar(W::checks, "power_balance", "", r.power_residual);

@@ -15,6 +15,17 @@ struct heavy_top_input : model_input {
   decimal_field psi, theta, phi, psi_dot, theta_dot, phi_dot;
 };
 
+namespace detail {
+/// The top's angular accelerations, as the heavy top and Example I (top_on_cone) name them.
+template <Scalar T>
+void write_top_accelerations(evaluation_writer<T>& out, const T& theta_ddot, const T& phi_ddot, const T& psi_ddot) {
+  using W = evaluation_writer<T>;
+  out.scalar(W::results, "theta_ddot", "", theta_ddot);
+  out.scalar(W::results, "phi_ddot", "", phi_ddot);
+  out.scalar(W::results, "psi_ddot", "", psi_ddot);
+}
+}  // namespace detail
+
 struct heavy_top_model {
   static constexpr const char* name = "heavy_top";
   using input = heavy_top_input;
@@ -31,22 +42,14 @@ struct heavy_top_model {
             {value<T>(in.psi), value<T>(in.theta), value<T>(in.phi), value<T>(in.psi_dot), value<T>(in.theta_dot),
              value<T>(in.phi_dot)}};
   }
-  template <Scalar T>
-  static evaluation<T> compute(const prepared<T>& m) {
-    evaluation<T> e;
-    compute_into(m, e);
-    return e;
-  }
-  /// The same written over e (appell::compute_into: its names' and values' storage reused).
+  /// The evaluation written over e (appell::compute_into: its names' and values' storage reused;
+  /// model_functions::compute calls it for a new evaluation too).
   template <Scalar T>
   static void compute_into(const prepared<T>& m, evaluation<T>& e, with_checks = with_checks::yes) {
     const top_on_pivot_result<T> r = top_on_pivot_motion(m.A, m.C, m.mass, m.l, m.g, m.state);
     using W = evaluation_writer<T>;
     W out(e);
-    e.contacts.clear();
-    out.scalar(W::results, "theta_ddot", "", r.theta_ddot);
-    out.scalar(W::results, "phi_ddot", "", r.phi_ddot);
-    out.scalar(W::results, "psi_ddot", "", r.psi_ddot);
+    detail::write_top_accelerations(out, r.theta_ddot, r.phi_ddot, r.psi_ddot);
     out.vector(W::results, "pivot_force", "", r.pivot_force);
     out.scalar(W::checks, "virtual_work_invariant", "", r.virtual_work_residual);
     out.vector(W::checks, "pivot_force_cotton_minus_lagrange", "", vec3<T>(r.pivot_force - r.pivot_force_lagrange));

@@ -109,13 +109,8 @@ struct rolling_sphere_model {
     return m;
   }
   /// with_checks::no: no Lagrange multipliers and no eq. (4) (rolling_sphere_motion's `checks`).
-  template <Scalar T>
-  static evaluation<T> compute(const prepared<T>& m, with_checks checks) {
-    evaluation<T> e;
-    compute_into(m, e, checks);
-    return e;
-  }
-  /// The same written over e (appell::compute_into: its names' and values' storage reused).
+  /// The evaluation written over e (appell::compute_into: its names' and values' storage reused;
+  /// model_functions::compute calls it for a new evaluation too).
   template <Scalar T>
   static void compute_into(const prepared<T>& m, evaluation<T>& e, with_checks checks) {
     struct site;
@@ -130,7 +125,6 @@ struct rolling_sphere_model {
                                 " cannot be told from 0");
     using W = evaluation_writer<T>;
     W out(e);
-    e.contacts.clear();
     out.vector(W::results, "center_ddot", "", r.center_ddot);
     out.vector(W::results, "omega_dot", "", r.omega_dot);
     out.vector(W::results, "contact_force", "", r.contact_force);

@@ -158,7 +158,6 @@ struct system_model {
   static void compute_into(const prepared<T>& m, evaluation<T>& e, with_checks checks) {
     using W = evaluation_writer<T>;
     W out(e);
-    e.contacts.clear();
     if (m.in->inverse_dynamics) {
       compute_inverse(m, out, checks);
       out.finish();

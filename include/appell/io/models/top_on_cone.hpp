@@ -8,6 +8,7 @@
 #include <string>
 
 #include "appell/io/model.hpp"
+#include "appell/io/models/heavy_top.hpp"  // detail::write_top_accelerations
 #include "appell/scenes/top_on_cone.hpp"
 
 namespace appell {
@@ -36,13 +37,8 @@ struct top_on_cone_model {
             {compiled_expression<T>(*in.f), compiled_expression<T>(*in.fprime), compiled_expression<T>(*in.fsecond)},
             value<T>(in.theta), value<T>(in.phi), value<T>(in.theta_dot), value<T>(in.phi_dot)};
   }
-  template <Scalar T>
-  static evaluation<T> compute(const prepared<T>& m) {
-    evaluation<T> e;
-    compute_into(m, e);
-    return e;
-  }
-  /// The same written over e (appell::compute_into: its names' and values' storage reused).
+  /// The evaluation written over e (appell::compute_into: its names' and values' storage reused;
+  /// model_functions::compute calls it for a new evaluation too).
   template <Scalar T>
   static void compute_into(const prepared<T>& m, evaluation<T>& e, with_checks = with_checks::yes) {
     const top_on_cone_state<T> s{m.cone.psi(m.theta), m.theta, m.phi, m.theta_dot, m.phi_dot};
@@ -52,10 +48,7 @@ struct top_on_cone_model {
     top_on_cone_motion_into(m.top, m.cone, s, true, *r_held);
     using W = evaluation_writer<T>;
     W out(e);
-    e.contacts.clear();
-    out.scalar(W::results, "theta_ddot", "", r.theta_ddot);
-    out.scalar(W::results, "phi_ddot", "", r.phi_ddot);
-    out.scalar(W::results, "psi_ddot", "", r.psi_ddot);
+    detail::write_top_accelerations(out, r.theta_ddot, r.phi_ddot, r.psi_ddot);
     out.scalar(W::results, "H", "", r.H);
     out.vector(W::results, "couple", "", r.couple);
     out.scalar(W::checks, "virtual_work_invariant", "", r.virtual_work_residual);
