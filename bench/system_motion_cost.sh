@@ -12,7 +12,7 @@ set -euo pipefail
 build=${1:-build} max=${2:-600}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-field() { sed -n "s/^  \"$2\": \\([^,]*\\),\$/\\1/p" "$1"; }
+field() { sed -n "s/^  \"$2\": \"\\{0,1\\}\\([^,\"]*\\)\"\\{0,1\\},\$/\\1/p" "$1"; }
 printf "%-22s %-12s %4s | %6s %8s %9s %9s %10s | %s\n" scene scalar T steps rejected seconds width "s per s" reached
 for scene in system_rolling_disk system_whipple_bicycle; do
   for scalar in interval "mpfi --bits 113"; do

@@ -584,6 +584,111 @@ BOOST_AUTO_TEST_CASE(reference_and_score_refuse_bad_files_naming_line_and_column
   expect_bad_input("score " + ref + " " + text_file("c.csv", "state,omega_dot[0]\na,1,2\n"), "line 2: 3 fields");
   expect_bad_input("score " + (work / "nowhere").string() + " " + text_file("c2.csv", "state\n"), "reference.csv");
   expect_bad_input("score " + ref + " " + text_file("c3.csv", "state,omega_dot[0]\na,1\n") + " --min-digits x", "--min-digits");
+
+  // What the reference holds and the CSV leaves out is a failure, named (issue 60, point 1): a
+  // quantity missing (a column), a certified state missing (a row); --skip leaves quantities out.
+  std::ostringstream two_columns, one_state;
+  two_columns << "state,omega_dot[0],omega_dot[2]\n";
+  one_state << "state,omega_dot[0],omega_dot[1],omega_dot[2]\n";
+  for (std::size_t r = 1; r < rows.size(); r += 3) {
+    two_columns << rows[r][0] << "," << rows[r][5] << "," << rows[r + 2][5] << "\n";
+    if (r == 1) one_state << rows[r][0] << "," << rows[r][5] << "," << rows[r + 1][5] << "," << rows[r + 2][5] << "\n";
+  }
+  const std::string two = text_file("two_columns.csv", two_columns.str());
+  const outcome missing = run("score " + ref + " " + two);
+  BOOST_TEST(missing.status == 1, missing.out << missing.err);
+  BOOST_TEST(missing.out.find("1 quantities of the reference are not in " + two + ": omega_dot[1]") != std::string::npos,
+             missing.out);
+  BOOST_TEST(missing.out.find("every value within the suggested tolerance") == std::string::npos, missing.out);
+  const outcome skipped = run("score " + ref + " " + two + " --skip omega_dot[1]");
+  BOOST_TEST(skipped.status == 0, skipped.out << skipped.err);
+  BOOST_TEST(skipped.out.find("left out by --skip (not scored): omega_dot[1]") != std::string::npos, skipped.out);
+  const outcome skip_scored = run("score " + ref + " " + text_file("good3.csv", good.str()) + " --skip omega_dot[0],omega_dot[2]");
+  BOOST_TEST(skip_scored.status == 0, skip_scored.out << skip_scored.err);
+  BOOST_TEST(skip_scored.out.find("omega_dot[0]  ") == std::string::npos, skip_scored.out);  // left out of the table
+  const outcome header_only = run("score " + ref + " " + text_file("header_only.csv", "state,omega_dot[0],omega_dot[1],omega_dot[2]\n"));
+  BOOST_TEST(header_only.status == 1, header_only.out << header_only.err);
+  BOOST_TEST(header_only.out.find("3 certified states of the reference have no row") != std::string::npos, header_only.out);
+  const outcome first_only = run("score " + ref + " " + text_file("score_one_state.csv", one_state.str()));
+  BOOST_TEST(first_only.status == 1, first_only.out << first_only.err);
+  BOOST_TEST(first_only.out.find("2 certified states of the reference have no row in") != std::string::npos, first_only.out);
+  BOOST_TEST(first_only.out.find(": b, c") != std::string::npos, first_only.out);
+  const std::string png = (work / "score.png").string();
+  std::filesystem::remove(png);
+  const outcome plotted = run("score " + ref + " " + text_file("good4.csv", good.str()) + " --plot " + png);
+  BOOST_TEST(plotted.status == 0, plotted.out << plotted.err);
+  BOOST_TEST(plotted.out.find("wrote " + png) != std::string::npos, plotted.out);
+  BOOST_TEST(slurp(png).substr(0, 4) == "\x89PNG");
+  expect_bad_input("score " + ref + " " + two + " --skip omega_dot[9]", "--skip: 'omega_dot[9]' is not a quantity of the reference");
+  expect_bad_input("score " + ref + " " + two + " --skip omega_dot[1],", "--skip: expected quantities' names");
+}
+
+// An exact bound 0 prints as "0" in every rigorous scalar: MPFI keeps an upper bound 0 as -0,
+// which was printed "-0" (issue 60, point 11).  Euler's body at rest without torque: every
+// result and check is exactly 0.
+BOOST_AUTO_TEST_CASE(a_bound_zero_prints_without_a_sign) {
+  const std::string rest = scene_file("at_rest", euler("{\"A\": \"2\", \"B\": \"3\", \"C\": \"4\"}", "[\"0\", \"0\", \"0\"]",
+                                                       "{\"omega\": [\"0\", \"0\", \"0\"]}"));
+  for (const char* scalar : {"interval", "mpfi"}) {
+    const outcome o = run("eval " + rest + " --scalar " + scalar);
+    BOOST_TEST(o.status == 0, scalar << ": " << o.err);
+    BOOST_TEST(o.out.find("\"hi\": \"0\"") != std::string::npos, scalar << ": " << o.out);
+    BOOST_TEST(o.out.find("\"-0\"") == std::string::npos, scalar << ": " << o.out);
+  }
+}
+
+// Every command answers promptly on any input the readers accept (issue 60, point 4): a joint
+// angle of 1e999999 made the 256-bit checks reduce it modulo pi at millions of bits, and eval
+// did not answer in 120 s.  Now an argument wider than a period takes sin's whole range at once,
+// and the value, beyond interval<double>'s range, is refused naming the field; in mpfi at 256
+// bits the motion is evaluated.  `timeout 60` ends a hang (exit 124): a failure, not a wait.
+BOOST_AUTO_TEST_CASE(a_huge_joint_angle_is_answered_promptly) {
+  const std::string wam = "/usr/share/doc/dart/data/urdf/wam/wam.urdf";  // dart-doc (scripts/deps.sh)
+  if (!std::filesystem::exists(wam)) return;
+  std::string text = slurp(APPELL_SOURCE_DIR + "/data/scenes/urdf_wam_inverse.json");
+  const auto at = text.find("\"q\": \"0.3\"");
+  BOOST_TEST_REQUIRE(at != std::string::npos);
+  text.replace(at, 10, "\"q\": \"1e999999\"");
+  const std::string scene = scene_file("wam_huge_angle", text);
+  auto within_60_s = [&](const std::string& args) {
+    const std::string out = (work / "stdout").string(), err = (work / "stderr").string();
+    const int raw = std::system(("timeout 60 " + std::string(APPELL_BINARY) + " " + args + " >" + out + " 2>" + err).c_str());
+    return outcome{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  };
+  for (const char* scalar : {"interval", "mpfi", "double"}) {
+    const outcome o = within_60_s("eval " + scene + " --scalar " + scalar);
+    BOOST_TEST(o.status != 124, scalar << ": no answer in 60 s");
+    BOOST_TEST((o.status == 0 || o.status == 2 || o.status == 3), scalar << ": exit " << o.status << " " << o.err);
+    // refused as out of the scalar's range, naming the joint's state field
+    if (o.status == 2) BOOST_TEST(o.err.find("state.j1: '1e999999' is out of the range of") != std::string::npos, scalar << ": " << o.err);
+    // mpfi at 256 bits holds the angle as an interval far wider than a period: sin and cos are [-1, 1]
+    if (std::string(scalar) == "mpfi") BOOST_TEST(o.status == 0, o.err);
+    BOOST_TEST_MESSAGE(scalar << ": exit " << o.status << " " << o.err);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(version_and_help_name_every_command_and_flag) {
+  const outcome v = run("--version");
+  BOOST_TEST(v.status == 0, v.err);
+  BOOST_TEST(v.out.rfind("appell 0.", 0) == 0, v.out);
+  BOOST_TEST(std::count(v.out.begin(), v.out.end(), '\n') == 1, v.out);
+  const outcome h = run("--help");
+  BOOST_TEST(h.status == 0, h.err);
+  for (const char* command : {"eval", "tradeoff", "extremes", "linearize", "reference", "score", "simulate", "enclose",
+                              "validity", "horizon", "convert"})
+    BOOST_TEST(h.out.find(std::string("appell ") + command + " ") != std::string::npos, command);
+  // validity takes --max-width (issue 60, point 11): its usage says so
+  const auto validity = h.out.find("appell validity");
+  BOOST_TEST(h.out.substr(validity, h.out.find("appell horizon") - validity).find("--max-width") != std::string::npos, h.out);
+  // docs/cli.md shows the usage text as `appell --help` prints it
+  const std::string doc = slurp(APPELL_SOURCE_DIR + "/docs/cli.md");
+  const auto from = doc.find("```\nusage: ");
+  BOOST_TEST_REQUIRE(from != std::string::npos);
+  const auto to = doc.find("```", from + 4);
+  BOOST_TEST(doc.substr(from + 4, to - from - 4) == h.out, "docs/cli.md's usage differs from appell --help");
+  expect_bad_input("--version extra", "--version: takes no argument");
+  expect_bad_input("frobnicate", "unknown command 'frobnicate'");
+  expect_bad_input("", "no command");
 }
 
 BOOST_AUTO_TEST_CASE(reference_draws_states_in_a_box_reproducibly) {
@@ -618,6 +723,14 @@ BOOST_AUTO_TEST_CASE(reference_draws_states_in_a_box_reproducibly) {
   BOOST_TEST(hi > 2.8);
   const json_value manifest = parse_json(slurp(a + "/manifest.json"));
   BOOST_TEST(manifest.find("seed")->text == "9");
+  // the states drawn are written beside the reference, in the format --states reads (issue 60,
+  // point 6): certified again from that file, the same reference, byte for byte
+  BOOST_TEST_REQUIRE(std::filesystem::exists(a + "/states.csv"));
+  BOOST_TEST(slurp(a + "/states.csv").rfind("state,theta,phi_dot,psi_dot\n", 0) == 0u, slurp(a + "/states.csv").substr(0, 80));
+  const std::string again = (work / "box_again").string();
+  BOOST_TEST_REQUIRE(run("reference " + scene + " --states " + a + "/states.csv --out " + again).status == 0);
+  BOOST_TEST(slurp(again + "/reference.csv") == slurp(a + "/reference.csv"));
+  BOOST_TEST(!std::filesystem::exists(again + "/states.csv"));  // a states file given is not copied
   expect_bad_input("reference " + scene + " --box \"theta=1:0\" --n 3 --out " + c, "--box theta: the lower end exceeds");
   expect_bad_input("reference " + scene + " --box \"theta=0.1234567:1\" --n 3 --out " + c, "more than --digits 6 decimals");
   expect_bad_input("reference " + scene + " --box theta --n 3 --out " + c, "is not field=lo:hi");
@@ -831,6 +944,40 @@ BOOST_AUTO_TEST_CASE(reference_projects_system_states_onto_the_constraints) {
   BOOST_TEST(slurp(projected + "_far/reference.csv").find("more than project") != std::string::npos);
 }
 
+// A closed loop's state given to 17 digits is off its constraint by about 1e-17: the refusal
+// names the remedy with a tolerance to try, and `eval --project TOL` certifies the state moved
+// onto the constraint and prints it (`derived`), for the user to keep (issue 60, point 5).
+BOOST_AUTO_TEST_CASE(a_state_off_its_loop_names_the_remedy_and_eval_projects_it) {
+  const std::string scene = scene_file("pendulum_17_digits", R"js({"model": "system", "coordinates": ["x", "y"],
+    "bodies": {"bob": {"mass": "1", "center": ["x", "y", "0"]}}, "gravity": ["0", "-9.81", "0"],
+    "constraints": {"rod": {"holonomic": "x^2 + y^2 - 1"}},
+    "state": {"x": "0.29552020666133955", "y": "-0.95533648912560598", "x_dot": "0", "y_dot": "0"}})js");
+  const outcome strict = run("eval " + scene + " --scalar interval");
+  BOOST_TEST(strict.status == 2, strict.out << strict.err);
+  BOOST_TEST(strict.err.find("constraint rod does not hold") != std::string::npos, strict.err);
+  // f = -9.06e-17: a tolerance a thousand times |f|, as a power of ten
+  BOOST_TEST(strict.err.find("\"project\": \"1e-13\" in the scene, or --project 1e-13 of eval and reference") != std::string::npos,
+             strict.err);
+  const outcome projected = run("eval " + scene + " --scalar interval --project 1e-13");
+  BOOST_TEST_REQUIRE(projected.status == 0, projected.err);
+  const appell::json_value j = appell::parse_json(projected.out);
+  const appell::json_value* derived = j.find("derived");
+  BOOST_TEST_REQUIRE(derived != nullptr, projected.out);
+  BOOST_TEST(derived->find("coordinates_moved") != nullptr, projected.out);
+  BOOST_TEST(derived->find("x") != nullptr, projected.out);
+  // the projected state, printed to the scalar's precision: in mpfi at 256 bits, 80 digits (a
+  // state a user keeps); it moved the coordinates by about 1e-16
+  const outcome wide = run("eval " + scene + " --scalar mpfi --project 1e-13");
+  BOOST_TEST_REQUIRE(wide.status == 0, wide.err);
+  const appell::json_value jw = appell::parse_json(wide.out);
+  const std::string x = jw.find("derived")->find("x")->find("lo")->text;
+  BOOST_TEST_MESSAGE("projected: x = " << x);
+  BOOST_TEST(x.size() > 70u, x);
+  BOOST_TEST(std::stod(jw.find("derived")->find("coordinates_moved")->find("hi")->text) < 1e-15);
+  expect_bad_input("eval " + scene + " --project", "--project: missing value");
+  expect_bad_input("eval " + scene + " --project -1", "project");
+}
+
 BOOST_AUTO_TEST_CASE(simulate_and_enclose_refuse_bad_input_naming_the_flag) {
   const std::string out = (work / "motion_bad").string();
   const std::string top = APPELL_SOURCE_DIR + "/data/scenes/heavy_top.json";
@@ -930,8 +1077,12 @@ BOOST_AUTO_TEST_CASE(every_plot_is_written_whole_or_said_missing) {
   };
   const outcome a = run("enclose " + good_scene + " --t-end 1 --out " + with + " --quiet");
   BOOST_TEST_REQUIRE(a.status == 0, a.err);
-  BOOST_TEST(a.out.find("summary.json, widths.png\n") != std::string::npos, a.out);
+  // enclose draws the motion (the state over each step), the results (Euler's body: omega_dot)
+  // and the widths (issue 60, point 9: it drew only the widths)
+  BOOST_TEST(a.out.find("summary.json, motion.png, results.png, widths.png\n") != std::string::npos, a.out);
   BOOST_TEST(is_png(with + "/widths.png"));
+  BOOST_TEST(is_png(with + "/motion.png"));
+  BOOST_TEST(is_png(with + "/results.png"));
   no_temporary(with);
   const outcome b = run("simulate " + good_scene + " --t-end 1 --out " + with + " --quiet");
   BOOST_TEST_REQUIRE(b.status == 0, b.err);
@@ -947,6 +1098,22 @@ BOOST_AUTO_TEST_CASE(every_plot_is_written_whole_or_said_missing) {
   BOOST_TEST(!std::filesystem::exists(without + "/widths.png"));
   BOOST_TEST(std::filesystem::exists(without + "/steps.csv"));
   no_temporary(without);
+  // A run stopped before it decided anything says so, not gnuplot's complaint about an empty
+  // range (issue 60, point 9: "no plot: gnuplot: line 5: x range is invalid" after
+  // --max-seconds): validity stopped before its first piece came back.
+  const std::string none = (work / "plot_no_piece").string();
+  std::filesystem::remove_all(none);
+  const outcome c = run("validity " + APPELL_SOURCE_DIR + "/data/scenes/system_sphere_in_bowl_contact.json --vary wy=23:27.5 "
+                        "--t-end 0.8 --max-seconds 0.000001 --jobs 1 --quiet --out " + none);
+  BOOST_TEST(c.status == 3, c.out << c.err);
+  BOOST_TEST(c.out.find("(no plot: the run stopped before any piece was decided)") != std::string::npos, c.out);
+  BOOST_TEST(c.out.find("gnuplot") == std::string::npos, c.out);
+  // one step is a plot (a box per value), not an empty range
+  const std::string one = (work / "plot_one_step").string();
+  std::filesystem::remove_all(one);
+  const outcome d = run("enclose " + APPELL_SOURCE_DIR + "/data/scenes/system_whipple_bicycle.json --t-end 10 --max-seconds 0.000001 --quiet --out " + one);
+  BOOST_TEST(d.status == 3, d.out << d.err);
+  BOOST_TEST(d.out.find("summary.json, motion.png, results.png, widths.png") != std::string::npos, d.out);
 }
 
 BOOST_AUTO_TEST_CASE(horizon_refuses_bad_input_and_meets_the_closed_form) {
@@ -1176,7 +1343,18 @@ BOOST_AUTO_TEST_CASE(a_motion_that_leaves_its_domain_stops_with_its_files) {
     const std::string summary = slurp(out + "/summary.json");
     BOOST_TEST(summary.find("\"complete\": false") != std::string::npos, command << ": " << summary);
     BOOST_TEST(std::filesystem::exists(out + (command == "simulate" ? "/trajectory.csv" : "/steps.csv")));
-    BOOST_TEST(csv_rows(out + (command == "simulate" ? "/trajectory.csv" : "/steps.csv")).size() > 2u);
+    const auto rows = csv_rows(out + (command == "simulate" ? "/trajectory.csv" : "/steps.csv"));
+    BOOST_TEST_REQUIRE(rows.size() > 2u);
+    // t_reached is a decimal string, as every bound is (issue 60, point 11: it was a float): the
+    // last row's time exactly (simulate), the last step's end rounded down (enclose)
+    const appell::json_value parsed = appell::parse_json(summary);
+    const appell::json_value* reached = parsed.find("t_reached");
+    BOOST_TEST_REQUIRE(reached != nullptr);
+    BOOST_TEST((reached->type == appell::json_value::kind::string), command << ": " << summary);
+    const std::string last_t = rows.back()[command == "simulate" ? 0 : 1];
+    if (command == "simulate") BOOST_TEST(reached->text == last_t, summary);
+    else BOOST_TEST(std::stod(reached->text) <= std::stod(last_t), summary << " against " << last_t);
+    BOOST_TEST(std::stod(reached->text) > 0.9, summary);
   }
 }
 

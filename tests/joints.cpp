@@ -376,6 +376,33 @@ BOOST_AUTO_TEST_CASE(a_urdf_scene_is_its_converted_system_file) {
   BOOST_CHECK_THROW(a.check("flange_virtual_work"), std::out_of_range);
 }
 
+// A URDF whose root link has mass is a floating base or a base bolted down; the file does not
+// say which, so `appell convert` of the file refuses it, naming the link (issue 60, point 3: it
+// welded DRC-Hubo's Body_TSY, 3.86 kg, to the ground without a word); a "urdf" scene says it.
+BOOST_AUTO_TEST_CASE(convert_refuses_a_root_link_with_mass) {
+  auto refusal = [](const std::string& path) {
+    try {
+      (void)convert_to_system(path);
+    } catch (const input_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  const std::string arm = refusal(data("urdf/appell_arm.urdf"));
+  BOOST_TEST(arm.find("appell_arm.urdf:6: the root link \"base\" has mass 4.0: a floating base") != std::string::npos, arm);
+  BOOST_TEST(arm.find("\"base\": \"fixed\"") != std::string::npos, arm);
+  const std::string hubo = "/usr/share/doc/dart/data/urdf/drchubo/drchubo.urdf";  // dart-doc (scripts/deps.sh)
+  if (std::filesystem::exists(hubo)) {
+    const std::string m = refusal(hubo);
+    BOOST_TEST(m.find("the root link \"Body_TSY\" has mass 3.858") != std::string::npos, m);
+  }
+  // the scene says "base": "fixed": the root is the ground, as asked
+  BOOST_CHECK_NO_THROW((void)convert_to_system(data("scenes/urdf_appell_arm.json")));
+  // a root without mass (the WAM's "world") converts as before
+  const std::string wam = "/usr/share/doc/dart/data/urdf/wam/wam.urdf";
+  if (std::filesystem::exists(wam)) BOOST_CHECK_NO_THROW((void)convert_to_system(wam));
+}
+
 BOOST_AUTO_TEST_CASE(bad_urdf_input_is_refused_naming_the_element) {
   const std::string arm = slurp(data("urdf/appell_arm.urdf"));
   auto replaced = [&](const std::string& from, const std::string& to) {
@@ -396,6 +423,9 @@ BOOST_AUTO_TEST_CASE(bad_urdf_input_is_refused_naming_the_element) {
       {replaced("<parent link=\"ram\"/>", "<parent link=\"nowhere\"/>"), "no link named \"nowhere\""},
       {replaced("<joint name=\"elbow\"", "<joint name=\"shoulder\""), "a second joint of this name"},
       {replaced("<mass value=\"0.35\"/>", "<mass value=\"-0.35\"/>"), "a negative mass"},
+      // mass 0 with an inertia: refused, naming the link (issue 60, point 2: it was dropped)
+      {replaced("<mass value=\"0.35\"/>", "<mass value=\"0.0\"/>"),
+       "of link \"ram\": mass 0 with a nonzero <inertia>"},
   };
   const std::string dir = std::filesystem::temp_directory_path().string();
   for (std::size_t k = 0; k < cases.size(); ++k) {
@@ -412,12 +442,18 @@ BOOST_AUTO_TEST_CASE(bad_urdf_input_is_refused_naming_the_element) {
   }
   // a link without inertial data at the end of the chain: the mass matrix is singular
   {
-    // the ram and the tool massless: the slide moves nothing
+    // the ram and the tool massless (mass and inertia 0): the slide moves nothing
     std::string s = arm;
     for (const char* m : {"<mass value=\"0.35\"/>", "<mass value=\"0.25\"/>"}) {
       const auto at = s.find(m);
       BOOST_REQUIRE(at != std::string::npos);
       s.replace(at, std::strlen(m), "<mass value=\"0\"/>");
+    }
+    for (const char* i : {"<inertia ixx=\"0.00009\" ixy=\"0\" ixz=\"0.000002\" iyy=\"0.0003\" iyz=\"0\" izz=\"0.00031\"/>",
+                          "<inertia ixx=\"0.00011\" ixy=\"0.00001\" ixz=\"0\" iyy=\"0.00012\" iyz=\"0\" izz=\"0.00008\"/>"}) {
+      const auto at = s.find(i);
+      BOOST_REQUIRE(at != std::string::npos);
+      s.replace(at, std::strlen(i), "<inertia ixx=\"0\" ixy=\"0\" ixz=\"0\" iyy=\"0\" iyz=\"0\" izz=\"0\"/>");
     }
     const std::string file = dir + "/appell_massless_" + std::to_string(::getpid()) + ".urdf";
     std::ofstream(file) << s;
@@ -433,7 +469,9 @@ BOOST_AUTO_TEST_CASE(bad_urdf_input_is_refused_naming_the_element) {
     }
     std::filesystem::remove(file);
     std::filesystem::remove(scene);
-    BOOST_TEST(message.find("bodies.ram.joint: the mass matrix is singular") != std::string::npos, message);
+    // named by the URDF's joint and its line, not the converted file's path (issue 60, point 11)
+    BOOST_TEST(message.find(file + ":54: <joint name=\"slide\">: the mass matrix is singular") != std::string::npos, message);
+    BOOST_TEST(message.find("bodies.") == std::string::npos, message);
   }
   // the scene: an unknown joint, a missing one, a fixed one given a state
   const std::string scene = slurp(data("scenes/urdf_appell_arm.json"));

@@ -139,6 +139,23 @@ void finite_everywhere(const json& j, const std::string& key, std::vector<std::s
   }
 }
 
+/// An exit 0's stdout: a JSON document whose every number is finite (each failure a test error
+/// naming `where`).
+bool json_of_finite_numbers(const std::string& out, const std::string& where) {
+  json doc;
+  bool parsed = true;
+  try {
+    doc = json::parse(out);
+  } catch (const std::exception&) {
+    parsed = false;
+  }
+  BOOST_TEST(parsed, where << ": stdout is not JSON: " << out.substr(0, 200));
+  std::vector<std::string> bad;
+  if (parsed) finite_everywhere(doc, "", bad);
+  BOOST_TEST(bad.empty(), where << ": exit 0 with a value that is not a number: " << (bad.empty() ? "" : bad.front()));
+  return parsed && bad.empty();
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(mutated_system_files_keep_the_exit_contract) {
@@ -177,18 +194,7 @@ BOOST_AUTO_TEST_CASE(mutated_system_files_keep_the_exit_contract) {
       BOOST_TEST(std::count(o.err.begin(), o.err.end(), '\n') == 1, where << ": stderr not one line: " << o.err);
       ok = ok && o.out.empty() && std::count(o.err.begin(), o.err.end(), '\n') == 1;
     } else if (o.status == 0) {
-      json out;
-      bool parsed = true;
-      try {
-        out = json::parse(o.out);
-      } catch (const std::exception& e) {
-        parsed = false;
-      }
-      BOOST_TEST(parsed, where << ": stdout is not JSON: " << o.out.substr(0, 200));
-      std::vector<std::string> bad;
-      if (parsed) finite_everywhere(out, "", bad);
-      BOOST_TEST(bad.empty(), where << ": exit 0 with a value that is not a number: " << (bad.empty() ? "" : bad.front()));
-      ok = ok && parsed && bad.empty();
+      ok = ok && json_of_finite_numbers(o.out, where);
     }
     if (ok) std::filesystem::remove(file);  // a failing case keeps its scene file
   }
@@ -198,4 +204,139 @@ BOOST_AUTO_TEST_CASE(mutated_system_files_keep_the_exit_contract) {
   // The batch must exercise both sides of the contract: results and refusals.
   BOOST_TEST(by_status[0] >= 20);
   BOOST_TEST(by_status[2] >= 100);
+}
+
+namespace {
+
+/// A URDF's text mutated: an attribute's value made hostile, an element's line removed, or an
+/// element doubled; the text of what it did.
+std::string mutate_urdf(std::string& text, std::mt19937_64& rng) {
+  auto pick = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
+  std::vector<std::pair<std::size_t, std::size_t>> values;  // each attribute value's [begin, end)
+  for (std::size_t at = text.find("=\""); at != std::string::npos; at = text.find("=\"", at + 2)) {
+    const std::size_t end = text.find('"', at + 2);
+    if (end == std::string::npos) break;
+    values.emplace_back(at + 2, end);
+  }
+  const std::size_t op = pick(4);
+  if (op < 2 && !values.empty()) {
+    const auto [b, e] = values[pick(values.size())];
+    const std::string was = text.substr(b, e - b);
+    const std::string now = pick(3) == 0 ? hostile_numbers[pick(hostile_numbers.size())]
+                                         : was + " " + hostile_numbers[pick(hostile_numbers.size())];
+    text.replace(b, e - b, now);
+    return "attribute '" + was + "' -> '" + now + "'";
+  }
+  std::vector<std::size_t> lines{0};
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\n') lines.push_back(i + 1);
+  const std::size_t l = 1 + pick(lines.size() - 1);
+  const std::size_t b = lines[l - 1], e = lines[l];
+  const std::string line = text.substr(b, e - b);
+  if (op == 2) {
+    text.erase(b, e - b);
+    return "line removed: " + line.substr(0, 60);
+  }
+  text.insert(e, line);
+  return "line doubled: " + line.substr(0, 60);
+}
+
+}  // namespace
+
+// The held-out batch through every command (issue 60): the shipped scenes of every model, and
+// URDF robots with their files mutated, through eval, convert, reference, simulate and enclose,
+// seeded.  The contract as the oracle: exit 0, 2 or 3, within 60 s (`timeout`); on 2 one line on
+// stderr, nothing on stdout and no file written; on 0 or 3 from a motion command, a summary.json
+// whose `t_reached` is a decimal string; on 0 from eval or convert, a JSON document with only
+// finite numbers.
+BOOST_AUTO_TEST_CASE(mutated_scenes_and_robots_keep_the_contract_through_every_command) {
+  std::filesystem::create_directories(work);
+  std::vector<std::filesystem::path> scenes;
+  for (const auto& e : std::filesystem::directory_iterator(APPELL_SOURCE_DIR + "/data/scenes")) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("system_", 0) != 0 && name.rfind("urdf_", 0) != 0) scenes.push_back(e.path());  // the built-in models
+  }
+  std::sort(scenes.begin(), scenes.end());
+  BOOST_REQUIRE(scenes.size() >= 10u);
+  const std::string arm_urdf = slurp(APPELL_SOURCE_DIR + "/data/urdf/appell_arm.urdf");
+  json arm_scene = json::parse(slurp(APPELL_SOURCE_DIR + "/data/scenes/urdf_appell_arm.json"));
+  std::mt19937_64 rng(20261203);
+  const int cases = 160;
+  std::map<std::string, std::map<int, int>> by_command;
+  for (int c = 0; c < cases; ++c) {
+    const bool robot = rng() % 3 == 0;
+    const std::filesystem::path file = work / ("every" + std::to_string(c) + ".json");
+    std::string what;
+    if (robot) {  // the URDF mutated, the scene kept (its file pointing at the mutated URDF)
+      std::string urdf = arm_urdf;
+      const int n = 1 + static_cast<int>(rng() % 2);
+      for (int m = 0; m < n; ++m) what += (m ? "; " : "") + mutate_urdf(urdf, rng);
+      const std::filesystem::path urdf_file = work / ("every" + std::to_string(c) + ".urdf");
+      std::ofstream(urdf_file) << urdf;
+      json doc = arm_scene;
+      doc["file"] = urdf_file.string();
+      if (rng() % 2 == 0) what += "; " + mutate(doc, rng);
+      std::ofstream(file) << doc.dump(1);
+    } else {
+      const std::filesystem::path& from = scenes[std::uniform_int_distribution<std::size_t>(0, scenes.size() - 1)(rng)];
+      json doc = json::parse(slurp(from));
+      const int n = 1 + static_cast<int>(rng() % 2);
+      for (int m = 0; m < n; ++m) what += (m ? "; " : "") + mutate(doc, rng);
+      what = from.filename().string() + " [" + what + "]";
+      std::ofstream(file) << doc.dump(1);
+    }
+    const std::vector<std::string> commands = robot ? std::vector<std::string>{"eval", "convert", "reference", "simulate", "enclose"}
+                                                    : std::vector<std::string>{"eval", "reference", "simulate", "enclose"};
+    const std::string command = commands[rng() % commands.size()];
+    const std::filesystem::path out = work / ("every_out" + std::to_string(c));
+    std::filesystem::remove_all(out);
+    std::string args = command + " " + file.string();
+    if (command == "eval") args += rng() % 2 ? " --scalar interval" : " --scalar double";
+    if (command == "reference") args += " --trajectory 0.1 --every 0.05 --scalar interval --quiet --out " + out.string();
+    if (command == "simulate") args += " --t-end 0.2 --max-seconds 10 --quiet --out " + out.string();
+    if (command == "enclose") args += " --t-end 0.2 --max-seconds 10 --quiet --out " + out.string();
+    const std::string o_path = (work / "stdout").string(), e_path = (work / "stderr").string();
+    const int raw = std::system(("timeout 60 " + std::string(APPELL_BINARY) + " " + args + " >" + o_path + " 2>" + e_path).c_str());
+    const outcome o{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(o_path), slurp(e_path)};
+    ++by_command[command][o.status];
+    const std::string where = what + ": appell " + args;
+    bool ok = o.status == 0 || o.status == 2 || o.status == 3;
+    BOOST_TEST(ok, where << ": exit " << o.status << " (124: no answer in 60 s); stderr: " << o.err);
+    if (o.status == 2) {
+      const bool one_line = std::count(o.err.begin(), o.err.end(), '\n') == 1;
+      BOOST_TEST(o.out.empty(), where << ": exit 2 with stdout: " << o.out.substr(0, 200));
+      BOOST_TEST(one_line, where << ": stderr not one line: " << o.err);
+      BOOST_TEST(!std::filesystem::exists(out / "summary.json"), where << ": exit 2, but files were written");
+      ok = ok && o.out.empty() && one_line;
+    } else if ((o.status == 0 || o.status == 3) && (command == "simulate" || command == "enclose")) {
+      // a run that stopped writes what it computed; one that cannot start (the initial state not
+      // finite: exit 3) says why in one line, as eval does, and writes nothing
+      const bool written = std::filesystem::exists(out / "summary.json");
+      const bool refused_at_start =
+          o.status == 3 && o.out.empty() && std::count(o.err.begin(), o.err.end(), '\n') == 1 && !std::filesystem::exists(out);
+      BOOST_TEST((written || refused_at_start), where << ": exit " << o.status << " without summary.json; stderr: " << o.err);
+      if (written) {
+        const json s = json::parse(slurp(out / "summary.json"));
+        BOOST_TEST((s.contains("t_reached") && s["t_reached"].is_string()), where << ": t_reached " << s.value("t_reached", json()).dump());
+      }
+    } else if (o.status == 0 && (command == "eval" || command == "convert")) {
+      ok = ok && json_of_finite_numbers(o.out, where);
+    }
+    if (ok) std::filesystem::remove_all(out);
+  }
+  std::ostringstream tally;
+  int accepted = 0, refused = 0;
+  for (const auto& [command, statuses] : by_command) {
+    tally << " " << command << ":";
+    for (const auto& [s, n] : statuses) {
+      tally << " exit " << s << " x" << n;
+      accepted += s == 0 ? n : 0;
+      refused += s == 2 ? n : 0;
+    }
+    tally << ";";
+  }
+  BOOST_TEST_MESSAGE(cases << " mutated scenes and robots through every command:" << tally.str());
+  BOOST_TEST(accepted >= 15);
+  BOOST_TEST(refused >= 40);
+  BOOST_TEST(by_command.size() == 5u);
 }

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -65,6 +66,7 @@ struct contact_track {
     vector_t<I> start, end;
     contact_verdict over, at_end;
     std::optional<I> fails_at;  ///< where failure is proved in it (refinement: inside the step)
+    contact_values<I> values;   ///< the contact's forces over the step
   };
   std::vector<record> steps;
   // What the steps prove (finish()):
@@ -77,6 +79,7 @@ struct contact_track {
   std::optional<I> largest_mu;      ///< required mu: the enclosure whose upper bound is largest
   bool mu_unbounded = false;        ///< a step where N > 0 is not proved (required mu has no bound)
   std::string located;              ///< how --locate ended
+  std::string run_failure;          ///< why the last enclosure that run() began stopped short, or ""
   long refined = 0;                 ///< undecided steps enclosed again in pieces
 
   contact_verdict verdict_of(const contact_values<I>& v) const {
@@ -102,7 +105,7 @@ struct contact_track {
     csv << name << "," << lower_string(t0) << "," << upper_string(t1) << "," << lower_string(over.normal) << ","
         << upper_string(over.normal) << "," << lower_string(over.tangential) << "," << upper_string(over.tangential) << ","
         << mu_lo << "," << mu_hi << "," << verdict_name(v) << "\n";
-    record r{t0, t1, start, end, v, verdict_of(at_end), {}};
+    record r{t0, t1, start, end, v, verdict_of(at_end), {}, over};
     if (v == contact_verdict::fails) r.fails_at = t0;
     else if (r.at_end == contact_verdict::fails) r.fails_at = t1;
     if (r.fails_at) any_fails = true;
@@ -177,6 +180,30 @@ struct contact_track {
     return prefix_holds ? contact_verdict::holds : contact_verdict::undecided;
   }
 
+  /// Why the verdict is undecided: the first step that neither holds nor fails, and the margin
+  /// there whose enclosure holds 0 (the normal force N, or mu N - |F_t|), its midpoint and width.
+  struct undecided_margin {
+    std::string text;
+    double mid = 0, width = 0;  ///< 0 and 0 when the forces could not be evaluated
+  };
+  std::optional<undecided_margin> first_undecided() const {
+    for (const record& r : steps) {
+      if (r.fails_at) return std::nullopt;
+      if (r.over == contact_verdict::holds) continue;
+      const std::string when = "contact " + name + " over [" + lower_string(r.t0) + ", " + upper_string(r.t1) + "]: ";
+      if (!r.values.known) return undecided_margin{when + "its forces could not be evaluated over the step", 0, 0};
+      const bool normal = !certainly_positive(r.values.normal) || !mu;
+      const I m = normal ? r.values.normal : I(*mu * r.values.normal - r.values.tangential);
+      const std::string lo_text = lower_string(m), hi_text = upper_string(m);
+      const double lo = std::strtod(lo_text.c_str(), nullptr), hi = std::strtod(hi_text.c_str(), nullptr);
+      std::ostringstream t;
+      t << when << (normal ? "the normal force N" : "the friction margin mu N - |F_t|") << " in [" << lo_text << ", "
+        << hi_text << "] holds 0 (midpoint " << (lo + hi) / 2 << ", width " << hi - lo << ")";
+      return undecided_margin{t.str(), (lo + hi) / 2, hi - lo};
+    }
+    return std::nullopt;
+  }
+
   /// --locate: narrow [lo, hi] by enclosing again from lo's state over shorter horizons.
   /// `run(x, h, on_step)` encloses from state x for a time h (an autonomous motion: the time
   /// is carried in the state when the scene depends on it), calls on_step(t0, t1, values over
@@ -209,10 +236,14 @@ struct contact_track {
         if (upper(t) < upper(*hi)) hi = t;
         h = approx_double(I(*hi - lo)) / 2;
       } else {
+        // neither proved: the enclosures over h hold the boundary, or could not step (run_failure)
+        const std::string why = reached ? "" : run_failure;
         h /= 2;
         if (h < tol / 64) {
-          located = "stopped at width " + ode::number_text(span(lo, *hi)) +
-                    ": the enclosures no longer decide there";
+          located = "stopped at width " + ode::number_text(span(lo, *hi)) + ": " +
+                    (why.empty() ? "the enclosures over steps of " + ode::number_text(h * 2) +
+                                       " hold the contact's boundary (they neither prove it holds nor that it fails)"
+                                 : "the enclosure could not step from the holding state (" + why + ")");
           return;
         }
       }

@@ -18,6 +18,8 @@
 
 #include "appell/studies/accuracy.hpp"
 #include "appell/studies/extreme_sweeps.hpp"
+#include "commands.hpp"
+#include "flags.hpp"
 #include "figure.hpp"
 #include "progress.hpp"
 #include "write_whole.hpp"
@@ -128,6 +130,16 @@ int extremes(const extremes_options& o) {
   line.done();
   std::cout << "\nwrote " << o.out_dir << "/<sweep>.csv and .png\n";
   return appell::exit_code(appell::exit_status::done);
+}
+
+int extremes_command(int argc, char** argv, int first) {
+  extremes_options x;
+  command_line c;
+  if (std::string why = read_command_line("extremes", argc, argv, first, {"--out"}, {"--quiet"}, 0, c); !why.empty())
+    return usage_error(why);
+  if (std::string why = read_out(c, x.out_dir); !why.empty()) return usage_error(why);
+  x.quiet = c.has("--quiet");
+  return guarded([&] { return extremes(x); });
 }
 
 }  // namespace appell::cli

@@ -2,6 +2,9 @@
 #include "flags.hpp"
 
 #include <algorithm>
+#include <iostream>
+
+#include "commands.hpp"
 
 #include "appell/io/json.hpp"  // printable
 
@@ -83,6 +86,34 @@ std::string read_format(const command_line& c, std::string& format) {
     format = it->second;
   }
   return "";
+}
+
+void set_project(json_value& scene, const std::string& tol, const std::string& scene_path) {
+  if (scene.type != json_value::kind::object) throw input_error(scene_path + ": not a JSON object");
+  json_value value;
+  value.type = json_value::kind::string;
+  value.text = tol;
+  for (auto& m : scene.members)
+    if (m.key == "project") {
+      m.value = value;
+      return;
+    }
+  scene.members.push_back({"project", value});
+}
+
+int usage_error(const std::string& why) {
+  std::cerr << "appell: " << one_line(why) << " (appell --help lists the commands and options)\n";
+  return exit_code(exit_status::bad_input);
+}
+
+int print_result(const std::string& out) {
+  std::cout << out;
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << "appell: internal error: could not write the result to stdout\n";
+    return exit_code(exit_status::internal);
+  }
+  return exit_code(exit_status::done);
 }
 
 }  // namespace appell::cli

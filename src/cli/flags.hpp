@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "appell/io/json.hpp"
+
 namespace appell::cli {
 
 /// One command's arguments.
@@ -61,5 +63,9 @@ std::string read_out(const command_line& c, std::string& out);
 
 /// --format json|text where given.
 std::string read_format(const command_line& c, std::string& format);
+
+/// --project TOL (eval, reference): the scene's "project" set to TOL, or replaced (the scene's
+/// reader checks it as it checks the member); input_error when the scene is not a JSON object.
+void set_project(json_value& scene, const std::string& tol, const std::string& scene_path);
 
 }  // namespace appell::cli

@@ -24,6 +24,7 @@
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 #include "flags.hpp"
+#include "commands.hpp"
 #include "write_whole.hpp"
 #include "plot.hpp"
 #include "motion_commands.hpp"
@@ -268,6 +269,12 @@ int horizon(const horizon_options& given) {
   std::cout << "wrote " << (dir / "horizon.csv").string() << (closed ? "" : ", reference.csv") << ", summary.json"
             << plotted << "\n";
   return appell::exit_code(appell::exit_status::done);
+}
+
+int horizon_command(int argc, char** argv, int first) {
+  horizon_options h;
+  if (const std::string why = parse_horizon_arguments(argc, argv, first, h); !why.empty()) return usage_error(why);
+  return guarded([&] { return horizon(h); });
 }
 
 }  // namespace appell::cli

@@ -3,6 +3,8 @@
 #include "linearize_report.hpp"
 
 #include "appell/io/scene.hpp"
+#include "commands.hpp"
+#include "flags.hpp"
 
 namespace appell::cli {
 
@@ -18,6 +20,27 @@ std::string linearize(const linearize_options& o) {
                                                     : "linearize: the scene has no \"linearize\" section (SCENES.md)");
   return with_scalar(o.scalar, o.bits,
                      [&]<class T>(std::type_identity<T>) { return linearize_report<T>(in, o.format); });
+}
+
+int linearize_command(int argc, char** argv, int first) {
+  linearize_options o;
+  {
+    command_line c;
+    if (std::string why = read_command_line("linearize", argc, argv, first, {"--scalar", "--bits", "--format"}, {}, 1, c);
+        !why.empty())
+      return usage_error(why);
+    if (std::string why = read_scene_argument(c, o.scene); !why.empty()) return usage_error(why);
+    if (std::string why = read_scalar(c, o.scalar, o.bits); !why.empty()) return usage_error(why);
+    if (std::string why = read_format(c, o.format); !why.empty()) return usage_error(why);
+  }
+  return guarded([&] {
+    std::string out;
+    {
+      const cerr_silenced quiet;
+      out = linearize(o);
+    }
+    return print_result(out);
+  });
 }
 
 }  // namespace appell::cli

@@ -1,6 +1,7 @@
 #include "motion_commands.hpp"
 
 #include "flags.hpp"
+#include "commands.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -154,5 +155,18 @@ int motion(const motion_options& given) {
   std::cout << r.summary;
   return r.exit_status;
 }
+
+namespace {
+int motion_command(const char* name, int argc, char** argv, int first) {
+  motion_options m;
+  m.command = name;
+  if (const std::string why = parse_motion_arguments(argc, argv, first, m); !why.empty()) return usage_error(why);
+  return guarded([&] { return motion(m); });
+}
+}  // namespace
+
+int simulate_command(int argc, char** argv, int first) { return motion_command("simulate", argc, argv, first); }
+int enclose_command(int argc, char** argv, int first) { return motion_command("enclose", argc, argv, first); }
+int validity_command(int argc, char** argv, int first) { return motion_command("validity", argc, argv, first); }
 
 }  // namespace appell::cli

@@ -1,6 +1,8 @@
 // The motion commands' output layer (motion_output.hpp): scalar-free, compiled once.
 #include "motion_output.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -27,6 +29,13 @@ nlohmann::json state_object(const std::vector<std::pair<std::string, std::string
   nlohmann::json j = nlohmann::json::object();
   for (const auto& [name, value] : state) j[name] = value;
   return j;
+}
+
+/// A double in 6 significant digits (a resolution, a width: for reading, not for reading back).
+std::string short_number(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", x);
+  return b;
 }
 
 std::string csv_header(const std::vector<std::string>& header) {
@@ -92,6 +101,30 @@ plot_outcome plot_contacts(const std::filesystem::path& dir, const std::string& 
                     900, 700);
 }
 
+/// A panel per value: each step's enclosure drawn as the box [t0, t1] x [lo, hi] (steps.csv's
+/// rows as they are: `columns` holds each value's name and the 1-based columns of its bounds).
+/// At most 16 panels: more are named in the title and left to steps.csv.
+plot_outcome plot_enclosures(const std::filesystem::path& png, const std::string& title, const std::string& rows,
+                             const std::vector<std::pair<std::string, std::size_t>>& columns) {
+  constexpr std::size_t most = 16;
+  const std::size_t shown = std::min(columns.size(), most);
+  const std::size_t across = shown <= 1 ? 1 : shown <= 4 ? 2 : shown <= 9 ? 3 : 4;
+  const std::size_t down = (shown + across - 1) / across;
+  std::string script = datablock("steps", rows) + "set datafile separator ','\nset multiplot layout " +
+                       std::to_string(down) + "," + std::to_string(across) + " title " +
+                       gnuplot_quoted(title + (columns.size() > most ? " (the first " + std::to_string(most) + " of " +
+                                                                            std::to_string(columns.size()) + "; all in steps.csv)"
+                                                                      : "")) +
+                       "\nset grid\nunset key\nset xlabel 't' offset 0,0.5\nset style fill solid 0.5 noborder\n";
+  for (std::size_t k = 0; k < shown; ++k) {
+    const std::string lo = std::to_string(columns[k].second), hi = std::to_string(columns[k].second + 1);
+    script += "set title " + gnuplot_quoted(columns[k].first) + " noenhanced\nplot $steps using (($1+$2)/2):(($" + lo +
+              "+$" + hi + ")/2):1:2:" + lo + ":" + hi + " with boxxyerror lc rgb '#1f5fa0'\n";
+  }
+  const int width = across <= 2 ? 900 : 1200, height = static_cast<int>(std::max<std::size_t>(down, 1)) * 260 + 60;
+  return render_png(png, script + "unset multiplot\n", width, height);
+}
+
 }  // namespace
 
 std::string run_identity::bits_text() const {
@@ -126,13 +159,19 @@ motion_outcome write_simulate(const simulate_report& r, const motion_options& o)
   write_whole(dir, "trajectory.csv", csv_header(r.header) + r.rows);
   write_whole(dir, "summary.json", summary.dump(2) + "\n");
   std::string plotted;
-  if (!r.invariants.empty()) {
+  const bool moved = std::count(r.rows.begin(), r.rows.end(), '\n') >= 2;  // at least one step after t = 0
+  const bool drifted = std::any_of(r.invariants.begin(), r.invariants.end(), [](const auto& q) { return q.worst > 0; });
+  if (!r.invariants.empty() && !moved) {
+    plotted = " (no plot: the run stopped before its first step)";
+  } else if (!r.invariants.empty() && !drifted) {
+    plotted = " (no plot: every invariant is exactly constant along the rows)";
+  } else if (!r.invariants.empty()) {
     const std::filesystem::path png = dir / "drift.png";
     std::string script = datablock("drift", r.drift) +
                          "set logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'relative drift |I(t) - I(0)| / "
                          "|I(0)|, or |I(t)| where I = 0'\n"
                          "set title '" + r.id.model + ", " + r.id.scalar + ", order " + std::to_string(r.id.order) +
-                         "'\nset grid\nset key below\nplot ";
+                         " (a drift exactly 0 is not drawn)'\nset grid\nset key below\nplot ";
     for (std::size_t q = 0; q < r.invariants.size(); ++q)
       script += std::string(q ? ", " : "") + "$drift using 1:" + std::to_string(q + 2) + " with lines title " +
                 gnuplot_quoted(r.invariants[q].name + (r.invariants[q].zero_in_truth ? " (|I|, 0 in truth)" : ""));
@@ -206,7 +245,31 @@ motion_outcome write_enclose(const enclose_report& r, const motion_options& o) {
                 "contact,t0,t1,normal_force_lo,normal_force_hi,tangential_force_lo,tangential_force_hi,required_mu_lo,"
                 "required_mu_hi,verdict\n" + r.contact_rows);
   write_whole(dir, "summary.json", summary.dump(2) + "\n");
-  std::string plotted =
+  std::string plotted;
+  if (r.rows.empty()) {  // nothing to draw: say so, rather than gnuplot's complaint about an empty range
+    plotted = " (no plot: the run stopped before any step)";
+  } else {
+  // The motion and the results (a body's reactions among them): each value's enclosure over
+  // every step, from steps.csv's columns (the state over the step; the results over the step).
+  std::vector<std::pair<std::string, std::size_t>> state_columns, result_columns;
+  for (std::size_t c = 0; c + 1 < r.header.size(); ++c) {
+    const std::string& h = r.header[c];
+    const auto ends = [&](const std::string& suffix) {
+      return h.size() > suffix.size() && h.compare(h.size() - suffix.size(), suffix.size(), suffix) == 0;
+    };
+    if (ends("_over_lo")) state_columns.emplace_back(h.substr(0, h.size() - 8), c + 1);
+  }
+  const std::size_t first_result = 2 + 4 * state_columns.size();  // 0-based: after t0, t1 and the state's four bounds
+  for (std::size_t k = 0; k < r.result_values && first_result + 2 * k + 1 < r.header.size(); ++k)
+    result_columns.emplace_back(r.value_names[k], first_result + 2 * k + 1);
+  plotted = plot_note(
+      plot_enclosures(dir / "motion.png", r.id.model + ", " + r.id.scalar + ": the state over each step", r.rows, state_columns),
+      dir / "motion.png");
+  if (!result_columns.empty())
+    plotted += plot_note(plot_enclosures(dir / "results.png", r.id.model + ", " + r.id.scalar + ": the results over each step",
+                                         r.rows, result_columns),
+                         dir / "results.png");
+  plotted +=
       plot_note(render_png(dir / "widths.png",
                            datablock("widths", r.widths) + "set logscale y\nset format y '%.0e'\nset xlabel 't'\nset ylabel 'width'\nset title " +
                                gnuplot_quoted(r.id.model + ", " + r.id.scalar + " (" + r.id.bits_text() + "), order " +
@@ -218,6 +281,7 @@ motion_outcome write_enclose(const enclose_report& r, const motion_options& o) {
                 dir / "widths.png");
   if (!r.contacts.empty())
     plotted += plot_note(plot_contacts(dir, r.contact_rows, r.contacts, r.id.model + ", " + r.id.scalar), dir / "contacts.png");
+  }
   std::ostringstream out;
   out << "enclose " << r.id.model << " in " << r.id.scalar << " (" << r.id.bits_text() << "), order " << r.id.order << ": "
       << r.steps << " steps (" << r.rejected << " rejected) in " << r.seconds << " s\n";
@@ -237,14 +301,28 @@ motion_outcome write_validity(const validity_report& r, const motion_options& o)
   const std::vector<piece_report>& done = r.run.done;
   // The pieces, and the ranges of each verdict (adjacent pieces merged).
   std::ostringstream csv, dat[3];
-  csv << "lo,hi,verdict,holds_until,first_failure_from,first_failure_to,steps,seconds\n";
+  csv << "lo,hi,verdict,holds_until,first_failure_from,first_failure_to,why,steps,seconds\n";
+  auto quoted = [](const std::string& t) {  // a CSV field: in quotes, a quote doubled
+    std::string q = "\"";
+    for (const char c : t) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+  };
+  // Why the undecided pieces stayed so, and the narrowest piece width their margins suggest.
+  nlohmann::json undecided_why = nlohmann::json::array();
+  double suggested = 0;
+  bool some_undecidable = false;
   nlohmann::json ranges = {{"holds", nlohmann::json::array()}, {"fails", nlohmann::json::array()}, {"undecided", nlohmann::json::array()}};
   std::string last;
   double piece_seconds = 0;
   for (const piece_report& p : done) {
     const std::string& v = p.verdict;
-    csv << p.lo << "," << p.hi << "," << v << "," << p.holds_until << "," << p.fail_from << "," << p.fail_to << "," << p.steps
-        << "," << p.seconds << "\n";
+    csv << p.lo << "," << p.hi << "," << v << "," << p.holds_until << "," << p.fail_from << "," << p.fail_to << ","
+        << (v == "undecided" ? quoted(p.why) : "") << "," << p.steps << "," << p.seconds << "\n";
+    if (v == "undecided") {
+      undecided_why.push_back({{"lo", p.lo}, {"hi", p.hi}, {"why", p.why}});
+      if (p.suggested > 0) suggested = suggested > 0 ? std::min(suggested, p.suggested) : p.suggested;
+      else some_undecidable = true;
+    }
     nlohmann::json& list = ranges[v];
     if (v == last && !list.empty()) list.back()[1] = p.hi;
     else list.push_back({p.lo, p.hi});
@@ -265,6 +343,8 @@ motion_outcome write_validity(const validity_report& r, const motion_options& o)
                   {"reason", r.run.stopped},
                   {"pieces_not_run", r.run.not_run},
                   {"ranges", ranges},
+                  {"undecided_pieces", undecided_why},
+                  {"suggested_resolution", suggested > 0 ? nlohmann::json(suggested) : nlohmann::json()},
                   {"threads", r.threads},
                   {"processes", r.processes},
                   {"seconds", r.seconds},
@@ -274,7 +354,9 @@ motion_outcome write_validity(const validity_report& r, const motion_options& o)
   write_whole(dir, "validity.csv", csv.str());
   write_whole(dir, "summary.json", summary.dump(2) + "\n");
   std::string plotted;
-  {
+  if (done.empty()) {  // nothing decided to draw: say so, rather than gnuplot's complaint about an empty range
+    plotted = " (no plot: the run stopped before any piece was decided)";
+  } else {
     const std::string f = "$pieces";
     const std::string data = datablock("pieces", dat[0].str() + "\n\n" + dat[1].str() + "\n\n" + dat[2].str());
     const plot_outcome p = render_png(dir / "validity.png", data + "set title " +
@@ -296,6 +378,16 @@ motion_outcome write_validity(const validity_report& r, const motion_options& o)
     for (const auto& range : ranges[v])
       out << "  " << v << " for " << o.vary_field << " in [" << range[0].get<std::string>() << ", "
           << range[1].get<std::string>() << "]\n";
+  if (!undecided_why.empty()) {
+    out << "  why undecided (the first piece; all in validity.csv): " << undecided_why[0]["why"].get<std::string>() << "\n";
+    if (suggested > 0 && suggested < r.resolution)
+      out << "  --resolution " << short_number(suggested) << " (not " << short_number(r.resolution)
+          << ") may decide the undecided pieces whose margins' widths come from their spread"
+          << (some_undecidable ? "; some hold a boundary itself, which no resolution decides" : "") << "\n";
+    else if (some_undecidable)
+      out << "  no finer --resolution decides them: their margins' midpoints are 0 (the boundary itself) or their "
+             "forces unknown\n";
+  }
   out << "wrote " << (dir / "validity.csv").string() << ", summary.json" << plotted << "\n";
   return {r.run.stopped.empty() ? appell::exit_code(appell::exit_status::done) : appell::exit_code(appell::exit_status::no_certificate), out.str()};
 }

@@ -38,7 +38,7 @@ struct simulate_report {
   };
   std::vector<invariant> invariants;
   std::vector<std::pair<std::string, std::string>> final_state;
-  double t_reached = 0;
+  std::string t_reached = "0";  ///< the last row's time, its exact decimal
   long steps = 0;
   double seconds = 0, min_step = 0, max_step = 0;
 };
@@ -73,7 +73,7 @@ struct enclose_report {
   std::string contact_stop;  ///< --until-contact-fails: why the run stopped, or ""
   bool complete = false;
   std::string reason;
-  double t_reached = 0;
+  std::string t_reached = "0";  ///< the last step's end, a decimal rounded down: enclosed over [0, t_reached]
   long steps = 0, rejected = 0;
   double seconds = 0;
 };

@@ -182,7 +182,8 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
       const double rel = absolute ? std::fabs(approx_double(row.invariants[q].values[0]))
                                   : d / std::max(std::fabs(approx_double(i0)), 1e-300);
       worst[q] = std::max(worst[q], rel);
-      dat << " " << std::max(rel, 1e-40);
+      if (rel > 0) dat << " " << rel;
+      else dat << " NaN";  // exactly 0: no point on the log scale (a floor would crush it)
     }
     dat << "\n";
   }
@@ -192,7 +193,7 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
     r.invariants.push_back({rows.front().invariants[q].name, to_string(rows.front().invariants[q].values[0]),
                             to_string(rows.back().invariants[q].values[0]), rows.front().invariants[q].zero_in_truth, worst[q]});
   for (std::size_t i = 0; i < names.size(); ++i) r.final_state.emplace_back(names[i], to_string(rows.back().x(static_cast<Eigen::Index>(i))));
-  r.t_reached = approx_double(rows.back().t);
+  r.t_reached = to_string(rows.back().t);
   r.steps = st.steps;
   r.seconds = st.seconds;
   r.min_step = st.min_step;
@@ -263,6 +264,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   std::ostringstream contact_csv, contact_dat;
   std::string contact_stop;  // --until-contact-fails: why the run stops after this step
   vector_t<I> step_start = x0;
+  std::string t_reached = "0";  // the last step's end, rounded down
   const ode::enclose_stats st = ode::enclose(
       prob, x0, t_end, order, tol, o.max_width, 2,
       [&](const ode::enclosed_step<I>& s) {
@@ -280,6 +282,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
           first = false;
         }
         body << lower_string(s.t0) << "," << upper_string(s.t1);
+        t_reached = lower_string(s.t1);
         const vector_t<I> end = reported(prob, s.end), over = reported(prob, s.over);
         for (Eigen::Index i = 0; i < n; ++i) body << "," << bounds(end(i));
         for (Eigen::Index i = 0; i < n; ++i) body << "," << bounds(over(i));
@@ -322,6 +325,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
       const ode::enclose_stats s2 = ode::enclose(prob, x, I(h), order, tol, o.max_width, 2, [&](const ode::enclosed_step<I>& s) {
         on_step(s.t0, s.t1, find_contact(s.results, c.name), s.end);
       });
+      c.run_failure = s2.complete ? "" : s2.reason;
       return s2.complete;
     };
     auto at = [&](const vector_t<I>& x) { return contact_at(x, c.name); };
@@ -362,7 +366,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   r.contact_stop = contact_stop;
   r.complete = st.complete;
   r.reason = st.reason;
-  r.t_reached = st.t_reached;
+  r.t_reached = t_reached;
   r.steps = st.steps;
   r.rejected = st.rejected;
   r.seconds = st.seconds;
@@ -522,6 +526,23 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
       p.verdict = verdict_name(verdict);
       if (verdict == contact_verdict::undecided) {
         p.why = st.complete ? "the enclosures straddle a boundary" : st.reason;
+        if (st.complete)
+          for (const auto& c : tracks)
+            if (const auto m = c.verdict() == contact_verdict::undecided ? c.first_undecided() : std::nullopt) {
+              // The margin's enclosure holds 0: it decides once its width is below 2 |midpoint|.
+              // Where that width comes from the piece's spread (it shrinks with the piece), a
+              // piece |midpoint| / width times this one's width may decide; a midpoint 0 is the
+              // boundary itself, which no piece decides.
+              const double h = span(a, b);
+              p.suggested = m->width > 0 ? h * std::fabs(m->mid) / m->width : 0;
+              std::ostringstream why;
+              why << m->text << ", over a piece " << h << " wide; "
+                  << (p.suggested > 0 ? "a piece about " + ode::number_text(p.suggested) +
+                                            " wide may decide it, if the width comes from the piece's spread"
+                                      : "no narrower piece decides it");
+              p.why = why.str();
+              break;
+            }
         if (span(a, b) > resolution) p.verdict = "split";
       }
       if (holds_until) p.holds_until = lower_string(*holds_until);

@@ -17,7 +17,7 @@ namespace appell::cli {
 std::string piece_report::to_message() const {
   const nlohmann::json j = {{"path", path},   {"verdict", verdict}, {"lo", lo},         {"hi", hi},       {"holds_until", holds_until},
                             {"fail_from", fail_from}, {"fail_to", fail_to}, {"why", why}, {"x_lo", x_lo}, {"x_hi", x_hi},
-                            {"y0", y0},       {"y1", y1},           {"steps", steps},   {"seconds", seconds}, {"error", error}};
+                            {"y0", y0},       {"y1", y1},           {"steps", steps},   {"seconds", seconds}, {"suggested", suggested}, {"error", error}};
   return j.dump();
 }
 
@@ -38,6 +38,7 @@ piece_report piece_report::from_message(const std::string& m) {
   r.y1 = j.at("y1");
   r.steps = j.at("steps");
   r.seconds = j.at("seconds");
+  r.suggested = j.at("suggested");
   r.error = j.at("error");
   return r;
 }

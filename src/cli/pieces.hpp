@@ -26,6 +26,9 @@ struct piece_report {
   double x_lo = 0, x_hi = 0, y0 = 0, y1 = 0;  ///< the plot's box: the range, and t from y0 to y1
   long steps = 0;
   double seconds = 0;
+  /// undecided: a piece width that may decide it (the margin's midpoint / its width x this
+  /// piece's width; 0: none, the margin's midpoint is 0 or its forces unknown)
+  double suggested = 0;
   std::string error;  ///< an internal error while running it (the run then ends: exit 4)
 
   std::string to_message() const;

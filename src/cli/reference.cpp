@@ -31,6 +31,7 @@
 #include "appell/io/files.hpp"
 #include "appell/scalar/x87_bounds.hpp"
 #include "csv.hpp"
+#include "commands.hpp"
 #include "states.hpp"
 #include "write_whole.hpp"
 #include "flags.hpp"
@@ -295,19 +296,7 @@ reference_run::reference_run(const reference_options& o) {
     throw input_error("--scalar: reference values are certified: interval or mpfi, got '" + printable(o.scalar) + "'");
   r.scene_text = read_text_file(o.scene, json_limits::bytes, "the scene file");
   r.root = parse_json(r.scene_text);
-  if (!o.project.empty()) {  // the scene's "project", set or replaced
-    if (r.root.type != json_value::kind::object) throw input_error(o.scene + ": not a JSON object");
-    json_value tol;
-    tol.type = json_value::kind::string;
-    tol.text = o.project;
-    bool replaced = false;
-    for (auto& m : r.root.members)
-      if (m.key == "project") {
-        m.value = tol;
-        replaced = true;
-      }
-    if (!replaced) r.root.members.push_back({"project", tol});
-  }
+  if (!o.project.empty()) set_project(r.root, o.project, o.scene);  // the scene's "project", set or replaced
   // A URDF robot: its file found from the scene's directory wherever the states are computed
   // (threads, MPI ranks), and with --inputs binary64 each state's scene is taken as the system
   // file it reads as, so that the URDF's own numbers are rounded too (compute()).
@@ -603,9 +592,24 @@ int reference_run::write(const std::vector<reference_state_text>& outputs, int p
   write_whole_pieces(dir, "reference.csv", csv);
   write_whole_pieces(dir, "reference.jsonl", jsonl);
   write_whole(dir, "manifest.json", manifest.dump(2) + "\n");
+  // The states drawn (--box) or followed (--trajectory), in the format --states reads: an engine
+  // computes the same states from this file, and `reference --states DIR/states.csv` certifies
+  // them again.  A states file given stays where it is.
+  const bool generated = o.states.empty();
+  if (generated) {
+    std::string text;
+    auto line = [&](const std::vector<std::string>& fields) {
+      for (std::size_t i = 0; i < fields.size(); ++i) text += (i ? "," : "") + csv_field(fields[i]);
+      text += "\n";
+    };
+    line(r.states.header);
+    for (const auto& row : r.states.rows) line(row);
+    write_whole(dir, "states.csv", text);
+  }
   std::cout << "appell reference: " << outputs.size() - refused << " of " << outputs.size() << " states certified ("
             << o.scalar << ", " << bits << " bits" << (processes > 1 ? ", " + std::to_string(processes) + " processes" : "")
-            << "); wrote " << (dir / "reference.csv").string() << ", reference.jsonl, manifest.json\n";
+            << "); wrote " << (dir / "reference.csv").string() << ", reference.jsonl, manifest.json"
+            << (generated ? ", states.csv" : "") << "\n";
   if (refused) {
     std::cerr << "appell: " << refused << " of " << outputs.size()
               << " states refused or not certified (their reasons are in reference.csv)\n";
@@ -638,6 +642,12 @@ int reference(const reference_options& o) {
   texts.reserve(outputs.size());
   for (const reference_state_output& s : outputs) texts.push_back({s.csv, s.jsonl, s.certified});
   return run.write(texts, 1);
+}
+
+int reference_command(int argc, char** argv, int first) {
+  reference_options r;
+  if (const std::string why = parse_reference_arguments(argc, argv, first, r); !why.empty()) return usage_error(why);
+  return guarded([&] { return reference(r); });
 }
 
 }  // namespace appell::cli

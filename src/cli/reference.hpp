@@ -91,6 +91,10 @@ std::string parse_reference_arguments(int argc, char** argv, int first, referenc
 struct score_options {
   std::string reference_dir, other, plot;
   std::optional<double> min_digits;  ///< --min-digits D: also require D correct digits in every quantity
+  /// --skip NAME,...: quantities of the reference left out of the score (each a name or a pattern,
+  /// `*` any run of characters, matching at least one); every other quantity of the reference
+  /// missing from OTHER.csv is a failure, named
+  std::vector<std::string> skip;
 };
 
 /// Returns the process exit status (0: every value within tolerance; 1: not; 2: bad input).

@@ -29,6 +29,8 @@
 #include <vector>
 
 #include "appell/studies/accuracy.hpp"
+#include "commands.hpp"
+#include "flags.hpp"
 #include "figure.hpp"
 #include "progress.hpp"
 #include "write_whole.hpp"
@@ -190,6 +192,24 @@ int tradeoff(const tradeoff_options& o) {
                  1000, 600);
   std::cout << "\nwrote " << csv.string() << plot_note(plotted, png) << "\n";
   return appell::exit_code(appell::exit_status::done);
+}
+
+int tradeoff_command(int argc, char** argv, int first) {
+  tradeoff_options t;
+  command_line c;
+  if (std::string why = read_command_line("tradeoff", argc, argv, first, {"--out", "--reps"}, {"--quiet"}, 1, c);
+      !why.empty())
+    return usage_error(why);
+  if (std::string why = read_scene_argument(c, t.scene); !why.empty()) return usage_error(why);
+  if (c.has("--reps")) {
+    unsigned reps = 0;
+    if (std::string why = parse_integer("--reps", c.value_or("--reps", ""), 1, 9999999, reps); !why.empty())
+      return usage_error(why);
+    t.reps = static_cast<int>(reps);
+  }
+  if (std::string why = read_out(c, t.out_dir); !why.empty()) return usage_error(why);
+  t.quiet = c.has("--quiet");
+  return guarded([&] { return tradeoff(t); });
 }
 
 }  // namespace appell::cli

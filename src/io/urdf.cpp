@@ -121,6 +121,14 @@ urdf_robot parse_urdf(const std::string& text, const std::string& file) {
         if (!i) throw input_error(where(file, in) + " of link \"" + printable(l.name) + "\": missing <inertia>");
         const char* names[6] = {"ixx", "iyy", "izz", "ixy", "iyz", "ixz"};
         for (std::size_t k = 0; k < 6; ++k) l.in.inertia[k] = number(file, i, names[k]);
+        // A massless link is a frame: it carries no inertia either.  A link of mass 0 with an
+        // inertia is refused rather than read as a frame (its inertia dropped without a word) or
+        // as a body with a rotational inertia and no mass, which the system model does not hold.
+        if (is_zero(l.in.mass) &&
+            std::any_of(l.in.inertia.begin(), l.in.inertia.end(), [](const std::string& d) { return !is_zero(d); }))
+          throw input_error(where(file, m) + " of link \"" + printable(l.name) +
+                            "\": mass 0 with a nonzero <inertia> (a massless link is a frame and carries no inertia: give "
+                            "the link its mass, or an inertia of 0)");
       }
       robot.links.push_back(std::move(l));
       if (robot.links.size() > urdf_limits::links)
@@ -393,7 +401,9 @@ std::string urdf_scene_text(object_reader& scene, std::string& file) {
 
 /// The system file `text` read (what `appell convert` prints, appell reads); input_error
 /// naming `file` and the field otherwise.
-system_input read_as_system(const json_value& doc, const std::string& file) {
+/// The system file's reading; a refusal names the URDF's joint and its line where it names a
+/// link's joint of the system file (`bodies.LINK.joint...`: the joint that moves LINK).
+system_input read_as_system(const json_value& doc, const std::string& file, const urdf_robot* robot) {
   object_reader r(doc, "");
   (void)r.string("model");
   try {
@@ -401,12 +411,22 @@ system_input read_as_system(const json_value& doc, const std::string& file) {
     r.finish();
     return in;
   } catch (const input_error& e) {
-    throw input_error(file + " (read as the system file `appell convert` prints): " + e.what());
+    const std::string what = e.what();
+    if (robot)
+      for (const auto& j : robot->joints) {
+        const std::string path = "bodies." + j.child + ".joint";
+        const auto at = what.find(path);
+        const std::size_t after = at + path.size();
+        if (at != std::string::npos && (after == what.size() || what[after] == ':' || what[after] == '.'))
+          throw input_error(file + ":" + std::to_string(j.line) + ": <joint name=\"" + printable(j.name) + "\">" +
+                            (at == 0 ? "" : " (" + what.substr(0, at) + ")") + what.substr(after));
+      }
+    throw input_error(file + " (read as the system file `appell convert` prints): " + what);
   }
 }
 
-system_input read_as_system(const std::string& text, const std::string& file) {
-  return read_as_system(parse_json(text), file);
+system_input read_as_system(const std::string& text, const std::string& file, const urdf_robot* robot) {
+  return read_as_system(parse_json(text), file, robot);
 }
 
 /// The "state" member urdf_to_system writes (its coordinates and their rates, joint by joint, as
@@ -448,10 +468,10 @@ std::shared_ptr<const model_input> read_urdf_scene(object_reader& scene) {
   if (kept && kept->path == parsed.path && kept->urdf_text == parsed.text && same_but_state(kept->options, o)) {
     for (auto& m : kept->document.members)
       if (m.key == "state") m.value = system_state_member(parsed.robot, kept->names, o);
-    return std::make_shared<system_input>(read_as_system(kept->document, file));
+    return std::make_shared<system_input>(read_as_system(kept->document, file, &parsed.robot));
   }
   json_value document = parse_json(urdf_to_system(parsed.robot, o));
-  std::shared_ptr<const model_input> in = std::make_shared<system_input>(read_as_system(document, file));
+  std::shared_ptr<const model_input> in = std::make_shared<system_input>(read_as_system(document, file, &parsed.robot));
   last_system_document = kept_system_document{parsed.path, parsed.text, o, std::move(document), urdf_joint_names(parsed.robot)};
   return in;
 }
@@ -471,8 +491,19 @@ std::string convert_to_system(const std::string& path) {
   const std::string text = read_text_file(path, urdf_limits::bytes, "a URDF file or a \"urdf\" scene");
   const auto first = text.find_first_not_of(" \t\r\n");
   if (first != std::string::npos && text[first] == '<') {  // a URDF file: at rest, standard gravity
-    const std::string out = urdf_to_system(parse_urdf(text, path), urdf_scene_options{});
-    (void)read_as_system(out, path);
+    const urdf_robot robot = parse_urdf(text, path);
+    // A root link with mass is a floating base (a humanoid's pelvis) or a base bolted down (an
+    // arm's): the file does not say which.  Welding it to the ground would drop its mass and
+    // print another robot, so convert asks for a "urdf" scene, where "base" says it.
+    const auto root = std::find_if(robot.links.begin(), robot.links.end(),
+                                   [&](const urdf_robot::link& l) { return l.name == robot.root; });
+    if (root != robot.links.end() && root->in.given && !is_zero(root->in.mass))
+      throw input_error(path + ":" + std::to_string(root->line) + ": the root link \"" + printable(root->name) +
+                        "\" has mass " + root->in.mass +
+                        ": a floating base, which appell does not read yet; to weld it to the ground, convert a "
+                        "\"urdf\" scene with \"base\": \"fixed\" (SCENES.md)");
+    const std::string out = urdf_to_system(robot, urdf_scene_options{});
+    (void)read_as_system(out, path, &robot);
     return out;
   }
   const json_value doc = parse_json(text);
@@ -482,9 +513,11 @@ std::string convert_to_system(const std::string& path) {
     throw input_error(scene.path("model") + ": convert reads a URDF file or a \"urdf\" scene, not a '" + printable(model) + "' scene");
   const scene_directory_scope scope(std::filesystem::path(path).parent_path().string());
   std::string file;
-  const std::string out = urdf_scene_text(scene, file);
+  urdf_scene_options o;
+  const urdf_robot& robot = read_urdf_scene_options(scene, file, o).robot;
+  const std::string out = urdf_to_system(robot, o);
   scene.finish();
-  (void)read_as_system(out, file);
+  (void)read_as_system(out, file, &robot);
   return out;
 }
 

@@ -173,7 +173,9 @@ bool small_binary_digits(mpfr_srcptr v, int digits, mpfr_rnd_t rnd, char (&s)[24
 std::string mpfr_to_decimal(mpfr_srcptr v, int digits, mpfr_rnd_t rnd) {
   if (mpfr_nan_p(v)) return "nan";
   if (mpfr_inf_p(v)) return mpfr_sgn(v) > 0 ? "inf" : "-inf";
-  if (mpfr_zero_p(v)) return mpfr_signbit(v) ? "-0" : "0";
+  // A zero's sign is a point value's (to nearest: -0 as the scalar holds it); a bound (directed
+  // rounding) is a number, and MPFI keeps an upper bound 0 as -0: it prints "0".
+  if (mpfr_zero_p(v)) return mpfr_signbit(v) && rnd == MPFR_RNDN ? "-0" : "0";
   {  // at most 64 bits (a double's bound, a 64-bit bound of an error): exact integer arithmetic
     char s[24];
     long exp10 = 0;

@@ -62,6 +62,26 @@ void sin_cos_mpfi(const mp::mpfi_backend& x, mp::mpfi_backend& s, mp::mpfi_backe
     return sin_cos_mpfi(copy, s, c);
   }
   if (!mpfr_number_p(&xp->left) || !mpfr_number_p(&xp->right)) return fallback();
+  // Bounded work whatever the argument: an argument at least 7 > 2 pi wide covers a period, so
+  // sin and cos range over [-1, 1] exactly, said without reducing its ends modulo 2 pi (MPFI's
+  // endpoint functions take pi to as many bits as the ends' exponent: an angle given as 1e999999
+  // is 3.3 million bits, minutes for each call); a narrow argument beyond 2^(2^20) is refused.
+  {
+    mpfr_t width;
+    mpfr_init2(width, 64);
+    mpfr_sub(width, &xp->right, &xp->left, MPFR_RNDD);
+    const bool period = mpfr_cmp_ui(width, 7) >= 0;
+    mpfr_clear(width);
+    if (period) {
+      for (mpfi_ptr out : {sp, cp}) mpfi_interv_si(out, -1, 1);
+      return;
+    }
+    constexpr mpfr_exp_t most = mpfr_exp_t(1) << 20;
+    if ((!mpfr_zero_p(&xp->left) && mpfr_get_exp(&xp->left) > most) ||
+        (!mpfr_zero_p(&xp->right) && mpfr_get_exp(&xp->right) > most))
+      throw appell::domain_error("sin, cos: an argument of magnitude beyond 2^1048576 narrower than 2 pi (its "
+                                 "reduction modulo pi would take pi to more than a million bits)");
+  }
   struct scratch {
     mpfr_t m, r, t, sm, cm, lo, hi, ds, dc;
     scratch() { mpfr_inits2(64, m, r, t, sm, cm, lo, hi, ds, dc, static_cast<mpfr_ptr>(nullptr)); }

@@ -431,8 +431,13 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // infinite length, and its matrices overflowed).
     hd = std::min({hd, step_within_growth(cX, 1024.0), horizon});
     // The smallest step: relative to the time reached (a floor relative to the horizon would
-    // stop a long run, to t = 1e300, before its first step).
-    const double h_floor = 1e-9 * std::max(1.0, std::fabs(approx_double(t)));
+    // stop a long run, to t = 1e300, before its first step), 1e-9 max(1, |t|), or less where the
+    // scalar's precision allows: a step of 20 significant bits at 2^(24 - bits) max(1, |t|) still
+    // moves t by whole units of its last place (2^-104 in mpfi at 128 bits, where --locate
+    // narrows a failure's time far below 1e-9).
+    const double h_floor =
+        std::max(1.0, std::fabs(approx_double(t))) *
+        std::min(1e-9, std::ldexp(1.0, 24 - static_cast<int>(scalar_traits<I>::precision_bits())));
     bool accepted = false, shrunk = false;
     std::string refusal;  // why the last a priori enclosure was refused, if a solve or a domain refused it
     vector_t<I> Y(n), cpB(n), B(n);

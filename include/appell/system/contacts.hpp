@@ -21,6 +21,11 @@ struct contact_force_result {
 template <Scalar T, class S>
 void contact_twist_jacobian_into(const compiled_system<T>& c, const typename compiled_system<T>::contact& k,
                                  const S* v, matrix_t<S>& J) {
+  if (k.point_body) {  // a point mass: the velocity of its centre alone (3 rows; no moment is fixed)
+    point_twist_jacobian_into<T, S>(c, k.frame, v, J);
+    J.conservativeResize(3, Eigen::NoChange);
+    return;
+  }
   if (!k.omega_body) return point_twist_jacobian_into<T, S>(c, k.frame, v, J);
   const int n = c.def->vars.speeds;
   vec3<S> rel;
@@ -104,7 +109,7 @@ void contact_forces_into(const compiled_system<T>& c, const vector_t<S>& q, cons
         const vector_t<S>& w = *w_held;
         solve_spd_into<site>(*N_held, *rhs_held, *w_held);
         d.push_back(vec3<S>(w(0), w(1), w(2)));
-        m.push_back(vec3<S>(w(3), w(4), w(5)));
+        m.push_back(J.rows() == 6 ? vec3<S>(w(3), w(4), w(5)) : zero_matrix<vec3<S>>());  // a point mass: no moment
       }
     }
     vec3<S> nv;

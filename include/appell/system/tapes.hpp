@@ -130,6 +130,7 @@ struct compiled_system {
   struct contact {  ///< on the constraint tape
     wrench frame;   ///< the body, its centre and angles, the point (frame.body < 0: the directions serve)
     bool omega_body = false;
+    bool point_body = false;  ///< a body without orientation (a point mass): a force alone, at its centre
     std::array<std::vector<std::pair<int, detail::compiled_term<T>>>, 3> omega_du;
     std::array<detail::compiled_term<T>, 3> direction;
   };
@@ -401,6 +402,7 @@ struct compiled_system {
       if (k.body >= 0) {
         const system_body_definition& b = d.bodies[static_cast<std::size_t>(k.body)];
         c.omega_body = b.has_omega;
+        c.point_body = !b.has_omega && b.rotations.empty();
         for (std::size_t i = 0; i < 3; ++i) {
           c.frame.center[i] = detail::compiled_differentiated<T>(constraint_tape, b.center[i]);
           c.frame.point[i] = detail::compiled_term<T>(constraint_tape, k.point[i]);

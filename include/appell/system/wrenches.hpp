@@ -52,13 +52,15 @@ matrix_t<S> point_twist_jacobian(const compiled_system<T>& c, const typename com
   return J;
 }
 
-/// The normal equations of a wrench's virtual work: N = J J^T (6 x 6) and J g.
+/// The normal equations of a wrench's virtual work: N = J J^T (6 x 6; 3 x 3 for a point mass's
+/// force alone, J its centre's 3 rows) and J g.
 template <class S>
 void wrench_normal_equations_into(const matrix_t<S>& J, const vector_t<S>& g, matrix_t<S>& N, vector_t<S>& rhs) {
-  N.resize(6, 6);
-  rhs.resize(6);
-  for (int r = 0; r < 6; ++r) {
-    for (int k = r; k < 6; ++k) {
+  const int m = static_cast<int>(J.rows());
+  N.resize(m, m);
+  rhs.resize(m);
+  for (int r = 0; r < m; ++r) {
+    for (int k = r; k < m; ++k) {
       S x = S(0);
       for (Eigen::Index j = 0; j < J.cols(); ++j) x += J(r, j) * J(k, j);
       N(r, k) = x;

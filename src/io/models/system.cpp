@@ -715,18 +715,35 @@ void read_contacts(reading& R) {
           throw input_error(r.path("mu") + ": a friction coefficient must not be negative, got " + mu.text);
         k.mu = mu.text;
       }
-      if (r.has("body") != r.has("point"))
-        throw input_error(r.path(r.has("body") ? "point" : "body") + ": give the contact's body and point together");
+      if (r.has("point") && !r.has("body"))
+        throw input_error(r.path("body") + ": a contact's point is on a body: give the contact's body with its point");
       if (r.has("body")) {
         const std::string body = r.string("body");
         const auto it = std::find_if(def.bodies.begin(), def.bodies.end(),
                                      [&](const system_body_definition& x) { return x.name == body; });
         if (it == def.bodies.end()) throw input_error(r.path("body") + ": no body named '" + printable(body) + "'");
-        if (it->body_axes || it->has_matrix || (!it->has_omega && it->rotations.empty()))
-          throw input_error(r.path("body") + ": a contact's body needs its centre on the fixed axes and an orientation "
-                                             "as rotations, or omega on the fixed axes");
+        if (it->body_axes || it->has_matrix)
+          throw input_error(r.path("body") + ": a contact's body needs its centre and its orientation on the fixed axes "
+                                             "(rotations, or omega on the fixed axes; no orientation: a point mass)");
         k.body = static_cast<int>(it - def.bodies.begin());
-        k.point = point_of_q_t(b, r, "point");
+        // A body without orientation (neither rotations nor omega) is a point mass: the contact
+        // is at its centre, and the constraints' virtual work fixes the force alone there.
+        const bool point_mass = !it->has_omega && it->rotations.empty();
+        if (point_mass) {
+          for (std::size_t i = 0; i < 3; ++i) k.point[i] = it->center[i].value;
+          if (r.has("point")) {
+            const auto given = point_of_q_t(b, r, "point");
+            for (std::size_t i = 0; i < 3; ++i)
+              if (given[i]->to_string() != k.point[i]->to_string())
+                throw input_error(r.path("point") + ": " + printable(body) + " is a point mass (no orientation): its "
+                                  "contact is at its centre; leave \"point\" out, or give the centre as written");
+          }
+        } else {
+          if (!r.has("point"))
+            throw input_error(r.path("point") + ": missing: " + printable(body) + " has an orientation, so the contact's "
+                              "point on it must be given (3 expressions in q and t)");
+          k.point = point_of_q_t(b, r, "point");
+        }
         if (it->has_omega)
           for (std::size_t i = 0; i < 3; ++i)
             k.omega_du[i] = b.speed_coefficients(*it->omega[i], "bodies." + body + ".omega[" + std::to_string(i) + "]");
@@ -738,9 +755,13 @@ void read_contacts(reading& R) {
           bool same = ci.body >= 0 && ci.body == c0.body;
           for (std::size_t i = 0; same && i < 3; ++i) same = ci.point[i]->to_string() == c0.point[i]->to_string();
           if (!same)
-            throw input_error(r.path("constraints") + ": " + ci.name + " is not a point_velocity constraint at the point "
-                              "of " + c0.name + " (give the contact's body and point: its force then comes from the "
-                              "constraints' virtual work)");
+            throw input_error(
+                r.path("constraints") + ": " + ci.name +
+                (ci.body < 0 ? std::string(" is ") + (ci.holonomic ? "a holonomic" : "a nonholonomic") +
+                                   " constraint, not a point_velocity one"
+                             : " is a point_velocity constraint at another point than " + c0.name + "'s") +
+                ": give the contact's \"body\" (and its \"point\", unless the body is a point mass): the force then "
+                "comes from the constraints' virtual work");
         }
       }
       r.finish();

@@ -7,6 +7,9 @@
 #include "system_reading.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 namespace appell::system_reading {
@@ -24,17 +27,18 @@ void require_in_256_bits(bool certainly_true, bool certainly_false, const std::s
 /// that body alone (A_c^T in the range of J^T).  input_error naming `where` otherwise.
 void check_body_fixes_force(const system_definition& d, const std::string& where, int body, const matrix_t<mpfi>& J,
                             const matrix_t<mpfi>& A, const std::vector<int>& constraints, const std::string& what) {
-  const int n = d.vars.speeds;
+  const int n = d.vars.speeds, m = static_cast<int>(J.rows());  // m: 6, or 3 for a point mass (its force alone)
   const std::string& name = d.bodies[static_cast<std::size_t>(body)].name;
   matrix_t<mpfi> N = wrench_normal_equations(J, vector_t<mpfi>(vector_t<mpfi>::Zero(n))).first;
-  for (int p = 0; p < 6; ++p) {
+  for (int p = 0; p < m; ++p) {
     if (!certainly_positive(N(p, p)))
-      throw input_error(where + ".body: the speeds move " + name +
-                        " in fewer than 6 independent ways at the state, so the constraints' virtual work does "
-                        "not fix " + what + " (describe the body free: 6 speeds, the constraints as rows)");
-    for (int r = p + 1; r < 6; ++r) {
+      throw input_error(where + ".body: the speeds move " + name + " in fewer than " + std::to_string(m) +
+                        " independent ways at the state, so the constraints' virtual work does not fix " + what +
+                        (m == 6 ? " (describe the body free: 6 speeds, the constraints as rows)"
+                                : " (describe the point mass free: 3 speeds of its centre, the constraints as rows)"));
+    for (int r = p + 1; r < m; ++r) {
       const mpfi f = N(r, p) / N(p, p);
-      for (int c = p; c < 6; ++c) N(r, c) -= f * N(p, c);
+      for (int c = p; c < m; ++c) N(r, c) -= f * N(p, c);
     }
   }
   for (int c : constraints) {
@@ -43,7 +47,7 @@ void check_body_fixes_force(const system_definition& d, const std::string& where
     const vector_t<mpfi> y = solve_spd(Nc, rhs);
     for (int j = 0; j < n; ++j) {
       mpfi e = -g(j);
-      for (int r = 0; r < 6; ++r) e += J(r, j) * y(r);
+      for (int r = 0; r < m; ++r) e += J(r, j) * y(r);
       if (!possibly_zero(e))
         throw input_error(where + ".constraints: " + d.constraints[static_cast<std::size_t>(c)].name +
                           " is not a constraint on " + name + " alone (its virtual work involves " +
@@ -255,8 +259,25 @@ void check_tree_mass_matrix(const state_at_256_bits& at, const std::shared_ptr<c
   }
 }
 
+/// What a refusal of a state off its constraints by at most 1e-6 adds (a state written to a few
+/// digits): the remedy, with a tolerance to try (a thousand times the residual, as a power of
+/// ten: the coordinates move by about |f| / |grad f|).
+std::string projection_remedy(const mpfi& residual, bool projected) {
+  if (projected) return "";
+  const double r = std::max(std::fabs(std::strtod(lower_string(residual).c_str(), nullptr)),
+                            std::fabs(std::strtod(upper_string(residual).c_str(), nullptr)));
+  if (!(r <= 1e-6)) return "";  // off by more than digits: not a state on the constraint, given short
+  double tol = 1e-30;
+  if (r > 0) tol = std::max(1e-30, std::pow(10.0, std::ceil(std::log10(r)) + 3));
+  char t[32];
+  std::snprintf(t, sizeof t, "%.0e", tol);
+  return std::string(" (a state given to a few digits is off a closed loop's constraints: \"project\": \"") + t +
+         "\" in the scene, or --project " + t + " of eval and reference, moves it onto them and prints it; SCENES.md, "
+         "\"project\")";
+}
+
 /// The state on every constraint, and the constraints independent.
-void check_constraints_at_state(const state_at_256_bits& at) {
+void check_constraints_at_state(const state_at_256_bits& at, bool projected) {
   [[maybe_unused]] const auto& [d, sys, q, u, t, bv, cv, A_at, a, w0] = at;
   if (!d.constraints.empty()) {
     const int s = static_cast<int>(d.constraints.size()), n = d.vars.speeds;
@@ -267,7 +288,7 @@ void check_constraints_at_state(const state_at_256_bits& at) {
       if (k.holonomic) {
         const mpfi f = sys.constraints[static_cast<std::size_t>(r)].f.value.at(cv.data());
         if (!possibly_zero(f))
-          throw input_error(where + " does not hold: f(q, t) = " + to_string(f));
+          throw input_error(where + " does not hold: f(q, t) = " + to_string(f) + projection_remedy(f, projected));
       } else if (k.body >= 0) {
         // the direction was checked before the speeds were solved
       } else {
@@ -277,7 +298,7 @@ void check_constraints_at_state(const state_at_256_bits& at) {
       for (int j = 0; j < n; ++j) res += A(r, j) * u(j);
       if (!possibly_zero(res))
         throw input_error(where + ": the speeds violate it (" + std::string(k.holonomic ? "df/dt" : k.body >= 0 ? "n . v" : "g") + " = " +
-                          to_string(res) + ")");
+                          to_string(res) + ")" + projection_remedy(res, projected));
     }
     // Independence: elimination with a pivot that is certainly nonzero in each row.
     std::vector<bool> used(static_cast<std::size_t>(n), false);
@@ -437,7 +458,7 @@ void check_at_state(system_input& in) {
     const state_at_256_bits at{d, sys, q, u, t, bv, cv, A, a, w0};
     check_bodies(at);
     check_tree_mass_matrix(at, shared);
-    check_constraints_at_state(at);
+    check_constraints_at_state(at, in.project.has_value());
     check_wrenches_fixed(at);
     check_contacts_at_state(at);
     check_linearization_reference(at, in);
