@@ -695,6 +695,7 @@ BOOST_AUTO_TEST_CASE(reference_draws_states_in_a_box_reproducibly) {
   const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/heavy_top.json";
   const std::string box = "\"theta=0.2:2.9,phi_dot=-60:60,psi_dot=-5:5\"";
   const std::string a = (work / "box_a").string(), b = (work / "box_b").string(), c = (work / "box_c").string();
+  for (const std::string& dir : {a, b, c, (work / "box_again").string()}) std::filesystem::remove_all(dir);  // an earlier run's files
   BOOST_TEST_REQUIRE(run("reference " + scene + " --box " + box + " --n 300 --seed 9 --out " + a).status == 0);
   BOOST_TEST_REQUIRE(run("reference " + scene + " --box " + box + " --n 300 --seed 9 --out " + b).status == 0);
   BOOST_TEST_REQUIRE(run("reference " + scene + " --box " + box + " --n 300 --seed 10 --out " + c).status == 0);
