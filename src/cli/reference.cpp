@@ -599,7 +599,10 @@ int reference_run::write(const std::vector<reference_state_text>& outputs, int p
   if (generated) {
     std::string text;
     auto line = [&](const std::vector<std::string>& fields) {
-      for (std::size_t i = 0; i < fields.size(); ++i) text += (i ? "," : "") + csv_field(fields[i]);
+      for (std::size_t i = 0; i < fields.size(); ++i) {
+        if (i) text += ',';
+        text += csv_field(fields[i]);
+      }
       text += "\n";
     };
     line(r.states.header);
