@@ -619,6 +619,10 @@ BOOST_AUTO_TEST_CASE(reference_and_score_refuse_bad_files_naming_line_and_column
   BOOST_TEST(plotted.status == 0, plotted.out << plotted.err);
   BOOST_TEST(plotted.out.find("wrote " + png) != std::string::npos, plotted.out);
   BOOST_TEST(slurp(png).substr(0, 4) == "\x89PNG");
+  // --skip of every quantity scores nothing: a failure, not a pass
+  const outcome none = run("score " + ref + " " + two + " --skip '*'");
+  BOOST_TEST(none.status == 1, none.out << none.err);
+  BOOST_TEST(none.out.find("FAILED: no quantity scored") != std::string::npos, none.out);
   expect_bad_input("score " + ref + " " + two + " --skip omega_dot[9]", "--skip: 'omega_dot[9]' is not a quantity of the reference");
   expect_bad_input("score " + ref + " " + two + " --skip omega_dot[1],", "--skip: expected quantities' names");
 }

@@ -12,8 +12,8 @@ scene=$src/data/scenes/rolling_sphere_bowl_contact.json
 args=(--vary mu=0:0.4 --t-end 0.3 --resolution 0.05 --quiet)
 "$appell" validity "$scene" "${args[@]}" --jobs 1 --out "$out/one" > "$out/one.txt"
 mpirun "${mpirun_flags[@]}" "$appell_mpi" validity "$scene" "${args[@]}" --out "$out/two" > "$out/two.txt"
-cut -d, -f1-7 "$out/one/validity.csv" > "$out/one.pieces"
-cut -d, -f1-7 "$out/two/validity.csv" > "$out/two.pieces"
+sed 's/,[^,]*$//' "$out/one/validity.csv" > "$out/one.pieces"  # every field but the last, the seconds
+sed 's/,[^,]*$//' "$out/two/validity.csv" > "$out/two.pieces"
 cmp "$out/one.pieces" "$out/two.pieces"
 grep -q '"processes": 2' "$out/two/summary.json"
 grep -E '^  (holds|fails|undecided) for' "$out/one.txt" > "$out/one.ranges"

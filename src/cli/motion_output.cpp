@@ -251,15 +251,12 @@ motion_outcome write_enclose(const enclose_report& r, const motion_options& o) {
   } else {
   // The motion and the results (a body's reactions among them): each value's enclosure over
   // every step, from steps.csv's columns (the state over the step; the results over the step).
+  // steps.csv's columns (1-based for gnuplot): t0, t1, the n state components' bounds at the step's
+  // end, their bounds over the step, then each result's bounds over the step
   std::vector<std::pair<std::string, std::size_t>> state_columns, result_columns;
-  for (std::size_t c = 0; c + 1 < r.header.size(); ++c) {
-    const std::string& h = r.header[c];
-    const auto ends = [&](const std::string& suffix) {
-      return h.size() > suffix.size() && h.compare(h.size() - suffix.size(), suffix.size(), suffix) == 0;
-    };
-    if (ends("_over_lo")) state_columns.emplace_back(h.substr(0, h.size() - 8), c + 1);
-  }
-  const std::size_t first_result = 2 + 4 * state_columns.size();  // 0-based: after t0, t1 and the state's four bounds
+  const std::size_t n = r.final_state.size();
+  for (std::size_t i = 0; i < n; ++i) state_columns.emplace_back(r.final_state[i].first, 3 + 2 * n + 2 * i);
+  const std::size_t first_result = 2 + 4 * n;  // 0-based: after t0, t1 and the state's four bounds
   for (std::size_t k = 0; k < r.result_values && first_result + 2 * k + 1 < r.header.size(); ++k)
     result_columns.emplace_back(r.value_names[k], first_result + 2 * k + 1);
   plotted = plot_note(
@@ -383,10 +380,10 @@ motion_outcome write_validity(const validity_report& r, const motion_options& o)
     if (suggested > 0 && suggested < r.resolution)
       out << "  --resolution " << short_number(suggested) << " (not " << short_number(r.resolution)
           << ") may decide the undecided pieces whose margins' widths come from their spread"
-          << (some_undecidable ? "; some hold a boundary itself, which no resolution decides" : "") << "\n";
+          << (some_undecidable ? "; for some no resolution is suggested (their `why` in validity.csv)" : "") << "\n";
     else if (some_undecidable)
-      out << "  no finer --resolution decides them: their margins' midpoints are 0 (the boundary itself) or their "
-             "forces unknown\n";
+      out << "  no finer --resolution is suggested for them: their `why` in validity.csv says what holds them (a margin "
+             "whose midpoint is 0, forces not evaluated, or an enclosure that stopped short)\n";
   }
   out << "wrote " << (dir / "validity.csv").string() << ", summary.json" << plotted << "\n";
   return {r.run.stopped.empty() ? appell::exit_code(appell::exit_status::done) : appell::exit_code(appell::exit_status::no_certificate), out.str()};

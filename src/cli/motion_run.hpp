@@ -534,7 +534,7 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
               // piece |midpoint| / width times this one's width may decide; a midpoint 0 is the
               // boundary itself, which no piece decides.
               const double h = span(a, b);
-              p.suggested = m->width > 0 ? h * std::fabs(m->mid) / m->width : 0;
+              p.suggested = m->width > 0 && std::isfinite(m->width) && std::isfinite(m->mid) ? h * std::fabs(m->mid) / m->width : 0;
               std::ostringstream why;
               why << m->text << ", over a piece " << h << " wide; "
                   << (p.suggested > 0 ? "a piece about " + ode::number_text(p.suggested) +

@@ -71,7 +71,8 @@ int score(const score_options& o) {
   std::vector<std::string> certified_states;  ///< in the reference's order
   for (std::size_t r = 0; r < ref.rows.size(); ++r) {
     const auto& row = ref.rows[r];
-    if (std::find(reference_quantities.begin(), reference_quantities.end(), row[1]) == reference_quantities.end())
+    if (!row[1].empty() &&  // a refused state's row names no quantity
+        std::find(reference_quantities.begin(), reference_quantities.end(), row[1]) == reference_quantities.end())
       reference_quantities.push_back(row[1]);
     if (!state_certified.count(row[0]) && row[2] == "certified") certified_states.push_back(row[0]);
     state_certified[row[0]] = row[2] == "certified";
@@ -218,7 +219,9 @@ int score(const score_options& o) {
   if (!missing_states.empty())
     std::cout << "\nFAILED: " << missing_states.size() << " certified states of the reference have no row in " << o.other
               << ": " << names(missing_states, 10) << "\n";
-  const bool complete = missing_quantities.empty() && missing_states.empty();
+  const bool nothing_scored = std::count(scored.begin(), scored.end(), true) == 0;
+  if (nothing_scored) std::cout << "\nFAILED: no quantity scored (every column left out or none given)\n";
+  const bool complete = missing_quantities.empty() && missing_states.empty() && !nothing_scored;
   all_within = all_within && complete;
   std::cout << "\n"
             << (!complete   ? "not every value of the reference was given"

@@ -434,10 +434,12 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // stop a long run, to t = 1e300, before its first step), 1e-9 max(1, |t|), or less where the
     // scalar's precision allows: a step of 20 significant bits at 2^(24 - bits) max(1, |t|) still
     // moves t by whole units of its last place (2^-104 in mpfi at 128 bits, where --locate
-    // narrows a failure's time far below 1e-9).
+    // narrows a failure's time far below 1e-9), down to 2^-120: a motion that runs into a
+    // singularity steps toward it until the floor, about one step per bit of the floor (and
+    // 2^(24 - bits) itself underflows to 0 above about 1100 bits).
     const double h_floor =
         std::max(1.0, std::fabs(approx_double(t))) *
-        std::min(1e-9, std::ldexp(1.0, 24 - static_cast<int>(scalar_traits<I>::precision_bits())));
+        std::min(1e-9, std::ldexp(1.0, std::max(24 - static_cast<int>(scalar_traits<I>::precision_bits()), -120)));
     bool accepted = false, shrunk = false;
     std::string refusal;  // why the last a priori enclosure was refused, if a solve or a domain refused it
     vector_t<I> Y(n), cpB(n), B(n);

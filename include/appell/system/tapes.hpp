@@ -402,7 +402,7 @@ struct compiled_system {
       if (k.body >= 0) {
         const system_body_definition& b = d.bodies[static_cast<std::size_t>(k.body)];
         c.omega_body = b.has_omega;
-        c.point_body = !b.has_omega && b.rotations.empty();
+        c.point_body = !b.is_link && !b.has_omega && b.rotations.empty();
         for (std::size_t i = 0; i < 3; ++i) {
           c.frame.center[i] = detail::compiled_differentiated<T>(constraint_tape, b.center[i]);
           c.frame.point[i] = detail::compiled_term<T>(constraint_tape, k.point[i]);

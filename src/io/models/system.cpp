@@ -722,6 +722,9 @@ void read_contacts(reading& R) {
         const auto it = std::find_if(def.bodies.begin(), def.bodies.end(),
                                      [&](const system_body_definition& x) { return x.name == body; });
         if (it == def.bodies.end()) throw input_error(r.path("body") + ": no body named '" + printable(body) + "'");
+        if (it->is_link)
+          throw input_error(r.path("body") + ": a contact needs a body given by its centre and orientation; '" +
+                            printable(body) + "' is a link of a tree (its joint's wrench is a result of its own)");
         if (it->body_axes || it->has_matrix)
           throw input_error(r.path("body") + ": a contact's body needs its centre and its orientation on the fixed axes "
                                              "(rotations, or omega on the fixed axes; no orientation: a point mass)");
