@@ -23,6 +23,7 @@
 
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/problems.hpp"
+#include "../tests/pendulum_problem.hpp"
 
 using namespace appell;
 

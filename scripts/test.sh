@@ -5,6 +5,6 @@
 # explicitly: a build directory configured before keeps its cached choice otherwise.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/build.sh -DAPPELL_BUILD_TESTS=ON -DAPPELL_BUILD_BENCH=OFF
+scripts/build.sh -DAPPELL_BUILD_TESTS=ON -DAPPELL_BUILD_BENCH=OFF -DAPPELL_SCALARS=all
 cd build
 ctest --output-on-failure -j"$(nproc)" "$@"

@@ -22,6 +22,7 @@
 #include "appell/ode/closed_forms.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/problems.hpp"
+#include "pendulum_problem.hpp"
 #include "appell/ode/taylor.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "affine_check.hpp"

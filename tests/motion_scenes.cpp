@@ -26,6 +26,7 @@
 #include "appell/io/scene.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/problems.hpp"
+#include "pendulum_problem.hpp"
 #include "appell/ode/taylor.hpp"
 #include "affine_check.hpp"
 

@@ -16,6 +16,7 @@
 #include "appell/io/models/top_on_cone.hpp"
 #include "appell/io/scene.hpp"
 #include "appell/ode/problems.hpp"
+#include "pendulum_problem.hpp"
 #include "appell/ode/taylor.hpp"
 
 using namespace appell;

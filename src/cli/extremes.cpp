@@ -64,7 +64,11 @@ int extremes(const extremes_options& o) {
   const auto sweeps = studies::extreme_sweeps();
   // Every standard scalar; those of run-time precision at 113 bits (float128's).
   std::vector<std::string> scalars;
-  for (const scalar_info& s : standard_scalar_infos()) scalars.push_back(s.runtime_precision ? s.name + "113" : s.name);
+  for (const scalar_info& s : standard_scalar_infos())
+    if (!s.built)
+      std::cerr << "appell extremes: " << s.name << " left out of this build (scripts/build.sh -DAPPELL_SCALARS=all)\n";
+    else
+      scalars.push_back(s.runtime_precision ? s.name + "113" : s.name);
   std::cout << "appell extremes: correct digits (vs mpfr 2048 bits); 'R' = refused with a reason (exit 3)\n";
   std::size_t done = 0, total = 0;
   for (const auto& w : sweeps) total += w.points.size();

@@ -91,6 +91,7 @@ int horizon(const horizon_options& given) {
     const auto infos = standard_scalar_infos();
     const auto it = std::find_if(infos.begin(), infos.end(), [&](const scalar_info& i) { return i.name == s; });
     if (it == infos.end()) throw input_error("--scalars: unknown scalar '" + s + "' (known: " + standard_scalar_names() + ")");
+    if (!it->built) throw input_error(left_out_scalar_message("--scalars", s));
     if (it->rigorous) throw input_error("--scalars: the study runs point scalars; " + s + " is an interval type (see enclose)");
   }
   const scene_input scene = read_scene_file(o.scene);
@@ -121,6 +122,7 @@ int horizon(const horizon_options& given) {
     reference_kind = closed->kind;
     compared = closed->compared;
   } else {
+    if (!scalar_built<mpfr>) throw input_error(left_out_scalar_message("the reference (simulate in mpfr)", "mpfr"));
     reference = with_scalar("mpfr", 256u, [&]<class T>(std::type_identity<T>) {
       return run_horizon_track<T>(scene, o.t_end, o.every, o.quiet, o.reference);
     });

@@ -53,7 +53,8 @@ std::string moving_model_names() {
 
 template <Scalar T>
 motion_outcome run_motion(const scene_input& scene, const motion_options& o) {
-  return with_moving_model<motion_outcome>(
+  if constexpr (!scalar_built<T>) throw input_error(left_out_scalar_message("--scalar", scalar_traits<T>::name));
+  else return with_moving_model<motion_outcome>(
       scene, o.command, [&]<class Model>(std::type_identity<Model>) { return run_model_motion<Model, T>(scene, o); },
       all_models{});
 }
@@ -61,7 +62,8 @@ motion_outcome run_motion(const scene_input& scene, const motion_options& o) {
 template <Scalar T>
 horizon_track run_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every, bool quiet,
                                 const track_settings& settings) {
-  return with_moving_model<horizon_track>(
+  if constexpr (!scalar_built<T>) throw input_error(left_out_scalar_message("--scalars", scalar_traits<T>::name));
+  else return with_moving_model<horizon_track>(
       scene, "horizon",
       [&]<class Model>(std::type_identity<Model>) {
         return run_model_horizon_track<Model, T>(scene, t_end, every, quiet, settings);

@@ -64,9 +64,16 @@ template <class Model>
 std::shared_ptr<const model_input> read_model(object_reader& scene) {
   return std::make_shared<const typename Model::input>(Model::read(scene));
 }
+template <class Model, class T>
+constexpr prepare_fn<T> prepare_of() {
+  if constexpr (scalar_built<T>)
+    return &model_functions<Model, T>::prepare;
+  else
+    return nullptr;  // left out of this build: with_scalar never reaches it
+}
 template <class Model, class... Ts>
 per_standard_scalar<prepare_fn> prepare_table(type_list<Ts...>) {
-  return per_standard_scalar<prepare_fn>{&model_functions<Model, Ts>::prepare...};
+  return per_standard_scalar<prepare_fn>{prepare_of<Model, Ts>()...};
 }
 }  // namespace detail
 

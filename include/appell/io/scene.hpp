@@ -236,7 +236,9 @@ scene_input read_scene_file(const std::string& path);
 template <Scalar T>
 prepared_scene<T> prepare(const scene_input& scene) {
   const evaluation_scope<T> scope;
-  prepared_scene<T> p = std::get<prepare_fn<T>>(scene.entry->prepare)(*scene.input);
+  const prepare_fn<T> prepare_in_t = std::get<prepare_fn<T>>(scene.entry->prepare);
+  if (!prepare_in_t) throw input_error(left_out_scalar_message("scalar", scalar_traits<T>::name));
+  prepared_scene<T> p = prepare_in_t(*scene.input);
   p.keep(scene.input);
   scope.verify();  // the state's constraint residuals are results too
   return p;

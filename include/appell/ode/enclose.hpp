@@ -360,10 +360,8 @@ struct affine_set {
 };
 }  // namespace detail
 
-/// How many affine symbols a step keeps, per state component (enclose's affine set).  Measured
-/// (appell_bench_enclose, the heavy top to T = 100, 2801 steps): 300 gave 3.85 times kv's width,
-/// 1000 2.88, 3000 (no merge in that run) 1.88, at 20.2, 21.3 and 21 s; the pendulum to T = 1000
-/// and Euler's body to T = 1000 kept their widths within 1% and took 4% and 7% longer.
+/// How many affine symbols a step keeps, per state component (enclose's affine set): fewer
+/// widen long runs, more cost time (docs/motion.md, "The affine set", has the measurements).
 inline constexpr int affine_symbols_per_component = 3000;
 
 /// Encloses the motion of prob from the box x0 over [0, t_end]; calls `emit` for every step.
@@ -412,17 +410,14 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // (h_factor), then shrunk until the a priori enclosure holds and the remainder x_p(B) h^p is
     // within the tolerance (over a wide B the interval coefficient x_p(B) is overestimated).
     // The remainder's width is added to the state at every step and carried to T: half the
-    // tolerance (measured by appell_bench_enclose --quick: the heavy top's state at T = 10
-    // 5.1e-12 at 2 tol, 4.4e-12 at tol, 4.1e-12 at tol / 2, 4.0e-12 at tol / 4, in 292, 299, 306
-    // and 310 steps).
-    // Component by component, as the step size: tol max(1, |x_i|).  (One scale for the whole
-    // state, its largest component, let the heavy top's spin angle, 5 t, loosen every other
-    // component's remainder as t grew.)
+    // tolerance, component by component, as the step size: tol max(1, |x_i|) (one scale for the
+    // whole state would let a growing angle loosen every other component; docs/motion.md, "The
+    // remainder tolerance").
     std::vector<double> remainder_tol(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i)
       remainder_tol[static_cast<std::size_t>(i)] = 0.5 * tol * std::max(1.0, std::fabs(approx_double(xh(i))));
-    // The step from the last coefficients over X (X is thin: they are the centre's to a few ulps;
-    // measured, the same steps as from a separate series at xh, which cost 12% of the run).
+    // The step from the last coefficients over X (X is thin: they are the centre's to a few ulps,
+    // and give the steps a separate series at xh would).
     double hd = step_from_coefficients(cX, tol) * h_factor;
     if (h_next > 0) hd = std::min(hd, 2 * h_next);
     // Where the series ends (constant acceleration: the coefficients vanish past order 2) the
@@ -543,8 +538,8 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // zr = xh + rest, rest = (T_q(xh) - xh) + H(X) + R: the motion from the point xh lies in zr.
     // The step's error about the new centre xhn is kept as dz = (xh - xhn) + rest, not zr - xhn:
     // xh - xhn is exact (or one rounding of a tiny number), so dz is about as wide as rest, where
-    // zr - xhn carries zr's own rounding, an ulp of the state on each side (measured: it was 1 to 2
-    // ulps of every step's error on Euler's body, the error the enclosure then carries to T).
+    // zr - xhn carries zr's own rounding, an ulp of the state on each side (docs/motion.md, "The
+    // step's own error").
     const vector_t<I> tail = horner(series<I>(cc.begin(), cc.begin() + q + 1), h, 1, q);  // T_q(xh) - xh
     const vector_t<I> H = q < p - 1 ? horner(cX, h, q + 1, p - 1) : vector_t<I>(vector_t<I>::Zero(n));
     const vector_t<I> rest = tail + H + R;

@@ -12,12 +12,15 @@
 
 namespace appell::studies {
 
-/// Every result component of the scene, evaluated in mpfr at `bits` bits.
-inline std::vector<mpfr_value> reference_values(const scene_input& scene, unsigned bits) {
+/// Every result component of the scene, evaluated in mpfr at `bits` bits (input_error where
+/// the build left mpfr out).
+template <class M = mpfr>
+std::vector<mpfr_value> reference_values(const scene_input& scene, unsigned bits) {
+  if constexpr (!scalar_built<M>) throw input_error(left_out_scalar_message("the reference values", "mpfr"));
   mp_precision_scope scope(bits);
   std::vector<mpfr_value> ref;
-  for (const auto& r : compute<mpfr>(prepare<mpfr>(scene)).results)
-    for (const mpfr& x : r.values) {
+  for (const auto& r : compute<M>(prepare<M>(scene)).results)
+    for (const M& x : r.values) {
       mpfr_value v;
       to_mpfr_exact(x, v);
       ref.push_back(v);
