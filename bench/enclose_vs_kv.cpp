@@ -22,7 +22,8 @@
 #include <string>
 
 #include "appell/ode/enclose.hpp"
-#include "appell/ode/problems.hpp"
+#include "appell/models/euler_body.hpp"
+#include "appell/models/heavy_top.hpp"
 #include "../tests/pendulum_problem.hpp"
 
 using namespace appell;

@@ -22,9 +22,9 @@
 #include <set>
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
-#include "appell/io/models/euler_body.hpp"
-#include "appell/io/models/rolling_sphere.hpp"
-#include "appell/io/models/top_on_cone.hpp"
+#include "appell/models/euler_body.hpp"
+#include "appell/models/rolling_sphere.hpp"
+#include "appell/models/top_on_cone.hpp"
 #include "appell/io/scene.hpp"
 #include "../tests/independent/hand_derived.hpp"
 #include "median_reporter.hpp"

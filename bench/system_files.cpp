@@ -12,7 +12,7 @@
 #include <iostream>
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
-#include "appell/io/models/system.hpp"
+#include "appell/models/system.hpp"
 #include "appell/io/scene.hpp"
 #include "median_reporter.hpp"
 

@@ -8,7 +8,7 @@
 #include <functional>
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
-#include "appell/io/models/top_on_cone.hpp"
+#include "appell/models/top_on_cone.hpp"
 
 namespace appell::proof {
 

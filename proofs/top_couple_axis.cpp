@@ -20,7 +20,7 @@
 #include "proof.hpp"
 #include "top_box.hpp"
 #include "top_rational.hpp"
-#include "appell/io/models/top_on_cone.hpp"
+#include "appell/models/top_on_cone.hpp"
 
 using namespace appell;
 using proof::Q;

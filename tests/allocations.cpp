@@ -21,7 +21,7 @@
 #include "counting_malloc.hpp"
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR (CMakeLists.txt)
 #include "appell/derivatives/jet.hpp"  // detail::identical
-#include "appell/io/models/system.hpp"
+#include "appell/models/system.hpp"
 #include "appell/io/scene.hpp"
 
 using namespace appell;

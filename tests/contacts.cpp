@@ -38,8 +38,8 @@
 #include <tuple>
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
-#include "appell/io/models/rolling_sphere_motion.hpp"
-#include "appell/io/models/system_motion.hpp"
+#include "appell/models/rolling_sphere.hpp"
+#include "appell/models/system_motion.hpp"
 #include "appell/io/scene.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 #include "affine_check.hpp"

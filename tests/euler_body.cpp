@@ -11,7 +11,7 @@
 #include <random>
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
-#include "appell/io/models/euler_body.hpp"
+#include "appell/models/euler_body.hpp"
 
 using namespace appell;
 

@@ -23,8 +23,8 @@
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "independent/top_on_pivot.hpp"
-#include "appell/io/models/heavy_top.hpp"
-#include "appell/io/models/system.hpp"
+#include "appell/models/heavy_top.hpp"
+#include "appell/models/system.hpp"
 
 using namespace appell;
 using ref_t = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<160>, boost::multiprecision::et_off>;

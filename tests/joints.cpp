@@ -22,7 +22,7 @@
 #include <unistd.h>
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
-#include "appell/io/models/system.hpp"
+#include "appell/models/system.hpp"
 #include "appell/io/scene.hpp"
 #include "appell/io/urdf.hpp"
 #include "bounds_400.hpp"

@@ -21,7 +21,8 @@
 
 #include "appell/ode/closed_forms.hpp"
 #include "appell/ode/enclose.hpp"
-#include "appell/ode/problems.hpp"
+#include "appell/models/euler_body.hpp"
+#include "appell/models/heavy_top.hpp"
 #include "pendulum_problem.hpp"
 #include "appell/ode/taylor.hpp"
 #include "appell/scalar/decimal.hpp"

@@ -18,7 +18,7 @@
 
 #include "appell/ode/closed_forms.hpp"
 #include "appell/ode/enclose.hpp"
-#include "appell/ode/problems.hpp"
+#include "appell/models/euler_body.hpp"
 #include "pendulum_problem.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "affine_check.hpp"

@@ -10,7 +10,7 @@
 
 #include "appell/ode/closed_forms.hpp"
 #include "appell/ode/enclose.hpp"
-#include "appell/ode/problems.hpp"
+#include "appell/ode/enclose.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "affine_check.hpp"
 #include "motion_checks.hpp"

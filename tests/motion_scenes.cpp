@@ -21,11 +21,14 @@
 #include <random>
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
-#include "appell/io/models/rolling_sphere.hpp"
-#include "appell/io/models/top_on_cone.hpp"
+#include "appell/models/rolling_sphere.hpp"
+#include "appell/models/top_on_cone.hpp"
 #include "appell/io/scene.hpp"
 #include "appell/ode/enclose.hpp"
-#include "appell/ode/problems.hpp"
+#include "appell/models/euler_body.hpp"
+#include "appell/models/heavy_top.hpp"
+#include "appell/models/rolling_sphere.hpp"
+#include "appell/models/top_on_cone.hpp"
 #include "pendulum_problem.hpp"
 #include "appell/ode/taylor.hpp"
 #include "affine_check.hpp"

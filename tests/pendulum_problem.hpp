@@ -8,7 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "appell/ode/problems.hpp"
+#include "appell/derivatives/jet.hpp"
+#include "appell/dynamics/gibbs_appell.hpp"
+#include "appell/ode/enclose.hpp"
+#include "appell/ode/taylor.hpp"
 
 namespace appell::ode {
 

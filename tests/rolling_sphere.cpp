@@ -12,7 +12,7 @@
 #include <random>
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
-#include "appell/io/models/rolling_sphere.hpp"
+#include "appell/models/rolling_sphere.hpp"
 #include "appell/scalar/rational.hpp"
 #include "independent/sphere_newton_euler.hpp"
 

@@ -19,7 +19,7 @@
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/files.hpp"
-#include "appell/io/models/system.hpp"
+#include "appell/models/system.hpp"
 #include "appell/io/scene.hpp"
 #include "bounds_400.hpp"
 

@@ -10,7 +10,7 @@
 #include <random>
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
-#include "appell/io/models/top_on_cone.hpp"
+#include "appell/models/top_on_cone.hpp"
 #include "independent/top_lagrange.hpp"
 
 using namespace appell;

@@ -21,7 +21,8 @@
 #include <vector>
 
 #include "appell/ode/enclose.hpp"
-#include "appell/ode/problems.hpp"
+#include "appell/ode/enclose.hpp"
+#include "appell/ode/taylor.hpp"
 #include "appell/reactions/contact.hpp"
 #include "appell/scalar/format.hpp"
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "appell/io/models/system.hpp"
+#include "appell/models/system.hpp"
 
 namespace appell::cli {
 

@@ -14,7 +14,7 @@
 #include <sstream>
 
 #include "appell/io/model.hpp"
-#include "appell/io/models/system.hpp"
+#include "appell/models/system.hpp"
 #include "appell/scalar/decimal.hpp"
 
 namespace appell {

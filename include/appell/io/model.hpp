@@ -1,10 +1,10 @@
 // appell/io/model.hpp -- what a scene model module provides, and the glue that
 // registers it.
 //
-// A model module is a struct (io/models/<name>.hpp) with
+// A model module is a struct (models/<name>.hpp) with
 //     static constexpr const char* name;            // the scene's "model"
 //     using input = <name>_input;                    // derived from model_input: exact decimals
-//     static input read(object_reader& scene);       // schema and validation (src/io/models/<name>.cpp)
+//     static input read(object_reader& scene);       // schema and validation (src/models/<name>.cpp)
 //     template <Scalar T> struct prepared;           // the inputs in T
 //     template <Scalar T> static prepared<T> prepare(const input&);
 //     template <Scalar T> static evaluation<T> compute(const prepared<T>&);

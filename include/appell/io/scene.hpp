@@ -2,8 +2,8 @@
 //
 // read_scene() validates a scene once, on the exact decimals, independently of
 // the scalar (so "A + B >= C" is decided exactly, not after rounding), through
-// the registry of models: each model is a module (io/models/<model>.hpp and
-// src/io/models/<model>.cpp) with its schema, reader and compute<T>; the
+// the registry of models: each model is a module (models/<model>.hpp and
+// src/models/<model>.cpp) with its schema, reader and compute<T>; the
 // registry is generated from CMake's APPELL_MODELS list.
 // prepare<T>() converts a scene's inputs to T once; compute<T>() runs the
 // model's dynamics, under the scalar's evaluation policy (scalar/policy.hpp);

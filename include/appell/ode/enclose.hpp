@@ -657,7 +657,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
 
 // ---------------------------------------------------------------------------
 // The slopes and enclose of a problem P in interval scalar I, declared (EXTERN extern) or
-// defined: the built-in models' problems are compiled once (the end of problems.hpp).
+// defined: the built-in models' problems are compiled once (each model's home: APPELL_EXTERN_MODEL_MOTION).
 #define APPELL_ODE_ENCLOSE_INSTANCE(EXTERN, P, I)                                                        \
   EXTERN template void taylor_series_slopes<P, I>(                                        \
       const P&, const vector_t<I>&, const vector_t<I>&, int,                         \

@@ -76,7 +76,7 @@ cotton_result<T> cotton_reactions(const Sys& sys, const vector_t<T>& q, const ve
 
 /// cotton_reactions' free accelerations v_a' alone, the same numbers bit for bit, without the
 /// reactions: only the free speeds' columns of the equations are formed (gibbs_appell_leading,
-/// one evaluation on multi_dual<T, Slots>, Slots >= k + 1).  For the motion (ode/problems.hpp),
+/// one evaluation on multi_dual<T, Slots>, Slots >= k + 1).  For the motion (the model's problem, models/<name>.hpp),
 /// whose right-hand side needs no reaction: the heavy top on its pivot differentiates 4
 /// directions instead of 7.
 template <int Slots, Scalar T, class Sys>

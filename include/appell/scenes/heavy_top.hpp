@@ -336,7 +336,7 @@ cotton_result<T> top_on_pivot_cotton(const T& A, const T& C, const T& mass, cons
 }
 
 /// top_on_pivot_cotton's (psi'', theta'', phi'') alone, bit for bit, without the pivot force:
-/// the right-hand side of the motion (ode/problems.hpp), which needs no reaction.
+/// the right-hand side of the motion (the model's problem, models/<name>.hpp), which needs no reaction.
 template <Scalar T>
 vector_t<T> top_on_pivot_accelerations(const T& A, const T& C, const T& mass, const T& l, const T& g,
                                        const top_on_pivot_state<T>& s) {

@@ -160,7 +160,7 @@ struct rolling_sphere_result {
 /// Example II at centre c and rotation omega (fixed axes), with applied force
 /// F_total (weight included) through G and couple tau, on the fixed axes.  Without
 /// `checks` the Lagrange multipliers and eq. (4) are left out (multipliers empty,
-/// virtual_work_residual 0): the motion over time needs neither (ode/problems.hpp).  Without
+/// virtual_work_residual 0): the motion over time needs neither (the model's problem, models/<name>.hpp).  Without
 /// `reactions` (which needs `checks` off) the contact force and the pivoting couple are left 0 too:
 /// the free speeds' columns alone are formed (cotton_free_motion), the accelerations the same bit
 /// for bit; the motion's right-hand side.  Into r, whose vectors are reused; the working storage

@@ -123,7 +123,7 @@ auto on_cone_speeds(const heavy_top<T, Angles>& top, const Cone& cone, const top
 }  // namespace detail
 
 /// Cotton's method alone (the accelerations theta'', phi'' and H): what the motion's results
-/// need (ode/problems.hpp); top_on_cone_motion adds the couple and the checks.
+/// need (the model's problem, models/<name>.hpp); top_on_cone_motion adds the couple and the checks.
 template <Scalar T, class Angles, class Cone>
 cotton_result<T> top_on_cone_cotton(const heavy_top<T, Angles>& top, const Cone& cone, const top_on_cone_state<T>& s) {
   return detail::on_cone_speeds(top, cone, s, [](const auto& sys, const vector_t<T>& q, const vector_t<T>& v_a) {
@@ -132,7 +132,7 @@ cotton_result<T> top_on_cone_cotton(const heavy_top<T, Angles>& top, const Cone&
 }
 
 /// top_on_cone_cotton's (theta'', phi'') alone, bit for bit, without H: the right-hand side of
-/// the motion (ode/problems.hpp).
+/// the motion (the model's problem, models/<name>.hpp).
 template <Scalar T, class Angles, class Cone>
 vector_t<T> top_on_cone_accelerations(const heavy_top<T, Angles>& top, const Cone& cone, const top_on_cone_state<T>& s) {
   return detail::on_cone_speeds(top, cone, s, [](const auto& sys, const vector_t<T>& q, const vector_t<T>& v_a) {
@@ -141,7 +141,7 @@ vector_t<T> top_on_cone_accelerations(const heavy_top<T, Angles>& top, const Con
 }
 
 /// Without `couple_and_checks` only the accelerations and H are formed (couple, eq. (4) and
-/// Lagrange's check left 0): the motion over time (ode/problems.hpp) encloses them over a whole
+/// Lagrange's check left 0): the motion over time (the model's problem, models/<name>.hpp) encloses them over a whole
 /// step, where the couple's 3 x 3 solve over the step's box need not be certifiable.
 template <Scalar T, class Angles, class Cone>
 void top_on_cone_motion_into(const heavy_top<T, Angles>& top, const Cone& cone, const top_on_cone_state<T>& s,

@@ -10,7 +10,7 @@
 //   contacts.hpp    contact_forces: normal and tangential forces of the contacts
 //   motion.hpp      system_motion: u', the reactions, the multipliers and eq. (4)
 //   joint_wrenches.hpp, linearize.hpp: a tree's joint wrenches; the linearized motion
-// The reader (src/io/models/system.cpp) builds the definition from a file in named phases.
+// The reader (src/models/system.cpp) builds the definition from a file in named phases.
 //
 // The description (system_definition) is scalar-free: parsed expressions in
 // the variables  parameters..., q..., u..., t  (in that order), with the

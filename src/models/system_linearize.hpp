@@ -1,9 +1,9 @@
-// The definition of linearize_scene<T> (io/models/system.hpp), included by the
+// The definition of linearize_scene<T> (models/system.hpp), included by the
 // unit CMake generates for each standard scalar: the linearization runs the
 // generic path on multi_dual numbers, one heavy instantiation per unit.
 #pragma once
 
-#include "appell/io/models/system.hpp"
+#include "appell/models/system.hpp"
 
 namespace appell {
 

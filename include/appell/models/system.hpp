@@ -1,9 +1,9 @@
-// appell/io/models/system.hpp -- the scene model "system": a mechanical system
+// appell/models/system.hpp -- the scene model "system": a mechanical system
 // of the user's own, described by expressions (SCENES.md in this repository):
 // parameters, coordinates, speeds (the coordinates' rates, or quasi-velocities
 // with their kinematics), bodies, gravity, applied forces and couples, and
 // named holonomic and nonholonomic constraints.  The mechanics are in
-// system/motion.hpp; the reader (src/io/models/system.cpp) parses,
+// system/motion.hpp; the reader (src/models/system.cpp) parses,
 // differentiates and checks everything once, at 256 bits, on exact decimals.
 #pragma once
 
@@ -66,7 +66,7 @@ struct system_model {
   };
   /// The system compiled in T for the input's definition: a copy of the last one compiled on this
   /// thread for the same definition at the same working precision (a definition read once serves
-  /// the states of `appell reference`: src/io/models/system.cpp), else compiled.  The copy is the
+  /// the states of `appell reference`: src/models/system.cpp), else compiled.  The copy is the
   /// same tapes and constants (a compiled term is an index into its tape).
   template <Scalar T>
   static compiled_system<T> compiled(const input& in) {

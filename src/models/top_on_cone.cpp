@@ -1,5 +1,5 @@
 // Scene model "top_on_cone": schema and validation on exact decimals (SCENES.md), and its registry entry.
-#include "appell/io/models/top_on_cone.hpp"
+#include "appell/models/top_on_cone.hpp"
 
 #include "appell/io/validate.hpp"
 

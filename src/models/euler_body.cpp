@@ -1,5 +1,5 @@
 // Scene model "euler_body": schema and validation on exact decimals (SCENES.md), and its registry entry.
-#include "appell/io/models/euler_body.hpp"
+#include "appell/models/euler_body.hpp"
 
 #include "appell/io/validate.hpp"
 

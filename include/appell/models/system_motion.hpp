@@ -1,4 +1,4 @@
-// appell/io/models/system_motion.hpp -- how a "system" file moves: the model
+// appell/models/system_motion.hpp -- how a "system" file moves: the model
 // module's motion (io/model_motion.hpp), for simulate, enclose, horizon and
 // reference --trajectory.
 //
@@ -34,9 +34,11 @@
 #include <vector>
 
 #include "appell/io/model_motion.hpp"
-#include "appell/io/models/system.hpp"
+#include "appell/models/system.hpp"
 #include "appell/ode/enclose.hpp"
-#include "appell/ode/problems.hpp"
+#include "appell/derivatives/jet.hpp"
+#include "appell/ode/taylor.hpp"
+#include "appell/scalar/decimal.hpp"
 
 namespace appell {
 

@@ -1,5 +1,5 @@
 // Scene model "rolling_sphere": schema and validation on exact decimals (SCENES.md), and its registry entry.
-#include "appell/io/models/rolling_sphere.hpp"
+#include "appell/models/rolling_sphere.hpp"
 
 #include "appell/io/validate.hpp"
 

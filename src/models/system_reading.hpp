@@ -1,8 +1,8 @@
-// What the system model's reader shares between its files (src/io/models/system*.cpp): the
+// What the system model's reader shares between its files (src/models/system*.cpp): the
 // phases that need 256 bits (system_checks.cpp) and the projection (system_projection.cpp).
 #pragma once
 
-#include "appell/io/models/system.hpp"
+#include "appell/models/system.hpp"
 #include "appell/io/validate.hpp"
 
 #include <cstdio>

@@ -1,5 +1,5 @@
 // Scene model "heavy_top": schema and validation on exact decimals (SCENES.md), and its registry entry.
-#include "appell/io/models/heavy_top.hpp"
+#include "appell/models/heavy_top.hpp"
 
 #include "appell/io/validate.hpp"
 

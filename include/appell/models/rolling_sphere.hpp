@@ -1,0 +1,349 @@
+// appell/models/rolling_sphere.hpp -- the home of the scene model "rolling_sphere"
+// (paper sec. 7, Example II).  Schema (SCENES.md): sphere {mass, radius, A?},
+// surface {type: plane | sphere | cylinder, radius, side}, gravity, force?,
+// torque?, state {center, omega}; the state must lie on the constraints.
+//
+// It moves as its centre and omega on the fixed axes (ode::rolling_sphere_problem), the contact
+// judged along the motion where the scene asks.
+//
+// Everything named after the model is here: its state table (the motion's state: each
+// component's name in the outputs and the scene field it starts from), its motion as an ODE
+// problem (right-hand side, results and invariants along the motion), its inputs, prepare and
+// evaluation with its results' names, and model_motion (start, closed form).  Its reader and
+// registry entry are in src/models/rolling_sphere.cpp; the physics is the paper's (scenes/rolling_sphere.hpp).
+// CMake compiles the model and its integrators once per scalar (cmake/instantiate.cmake).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "appell/derivatives/jet.hpp"
+#include "appell/io/model.hpp"
+#include "appell/io/model_motion.hpp"
+#include "appell/ode/enclose.hpp"
+#include "appell/scalar/decimal.hpp"
+#include "appell/scenes/rolling_sphere.hpp"
+
+namespace appell {
+
+/// The state of the motion as reported (simulate's and enclose's columns, reference --trajectory's
+/// fields): each component's name in the outputs and the scene field it starts from.
+inline constexpr std::array<state_component, 6> rolling_sphere_state_table{{
+    {"center_x", "center[0]"},
+    {"center_y", "center[1]"},
+    {"center_z", "center[2]"},
+    {"omega_x", "omega[0]"},
+    {"omega_y", "omega[1]"},
+    {"omega_z", "omega[2]"},
+}};
+
+}  // namespace appell
+
+namespace appell::ode {
+
+/// Example II, the sphere rolling without slipping or pivoting: x = (centre, omega) on the fixed
+/// axes; x' = (omega x a n, omega') from rolling_sphere_motion.
+template <Scalar T>
+struct rolling_sphere_problem {
+  T mass, A, a;
+  rolling_surface<T> surface;
+  vec3<T> force, torque;  ///< total applied force through G (weight included) and couple, fixed axes
+  bool contact = false;   ///< the contact "surface" judged (a scene's "contact"), with mu as written
+  std::string mu{};
+  bool A_from_radius = false;  ///< A = 2/5 M a^2 (the scene gives no A): it follows a varied radius
+  static constexpr int dim = 6;
+  static std::vector<std::string> state_names() { return state_names_of(rolling_sphere_state_table); }
+  /// The contacts to judge along the motion: "surface" when the scene asks, with its mu.
+  std::vector<std::pair<std::string, std::string>> contacts() const {
+    if (!contact) return {};
+    return {{"surface", mu}};
+  }
+  /// Whether state component i enters a constraint at the state x (validity refuses to vary it:
+  /// a range of it would leave the constraint): the centre's coordinates on the surface of
+  /// centres, and omega's components along which the normal n is not 0 (omega . n = 0).
+  template <class S>
+  bool constrains(int i, const vector_t<S>& x) const {
+    const bool plane = surface.type == surface_type::plane, sphere = surface.type == surface_type::sphere;
+    if (i < 3) return plane ? i == 2 : sphere || i < 2;
+    const int k = i - 3;  // n is along z (plane), c (sphere), (c_x, c_y, 0) (cylinder)
+    if (plane) return k == 2;
+    if (!sphere && k == 2) return false;
+    return !exactly_zero(x(k));
+  }
+  /// The parameters `appell validity --vary` can take over a range, named by their scene fields.
+  std::vector<std::string> parameter_names() const {
+    if (surface.type == surface_type::plane) return {"sphere.radius"};
+    return {"sphere.radius", "surface.radius"};
+  }
+  /// Why the parameter cannot take every value of `range` ("" when it can): the radii positive,
+  /// and inside a sphere or cylinder the sphere's radius below the surface's.
+  std::string parameter_refusal(const std::string& name, const T& range) const {
+    const T r = name == "sphere.radius" ? range : a, b = name == "surface.radius" ? range : surface.b;
+    if (!certainly_positive(r)) return "the sphere's radius must be positive over the whole range";
+    if (surface.type == surface_type::plane) return "";
+    if (!certainly_positive(b)) return "the surface's radius must be positive over the whole range";
+    if (surface.inside && !certainly_positive(T(b - r)))
+      return "inside the surface, the sphere's radius must stay below the surface's over the whole range";
+    return "";
+  }
+  /// The same problem with the parameter `name` at `value` (an interval in validity), its state x
+  /// moved to match: the centre along the normal onto the new surface of centres (so that n, the
+  /// contact point's direction, omega and omega . n = 0 are kept), A = 2/5 M a^2 following a
+  /// sphere's radius when the scene gives no A.
+  rolling_sphere_problem with_parameter(const std::string& name, const T& value, vector_t<T>& x) const {
+    using std::sqrt;
+    rolling_sphere_problem p = *this;
+    if (name == "sphere.radius") {
+      p.a = value;
+      if (A_from_radius) p.A = rational<T>(2, 5) * mass * value * value;
+    } else {
+      p.surface.b = value;
+    }
+    if (surface.type == surface_type::plane) {
+      x(2) = p.a;  // the plane z = 0: the centre at height a
+      return p;
+    }
+    const int n = surface.type == surface_type::sphere ? 3 : 2;  // the radial components
+    T norm2 = T(0);
+    for (int i = 0; i < n; ++i) norm2 += x(i) * x(i);
+    const T factor = p.surface.rho(p.a) / sqrt(norm2);
+    for (int i = 0; i < n; ++i) x(i) = T(x(i) * factor);
+    return p;
+  }
+  template <class S>
+  rolling_sphere_result<S> motion(const vector_t<S>& x, bool checks, bool reactions = true) const {
+    const rolling_surface<S> surf{surface.type, surface.inside, S(surface.b), S(surface.spin)};
+    const vec3<S> F(S(force(0)), S(force(1)), S(force(2))), tau(S(torque(0)), S(torque(1)), S(torque(2)));
+    return rolling_sphere_motion<S>(S(mass), S(A), S(a), surf, vec3<S>(x(0), x(1), x(2)), vec3<S>(x(3), x(4), x(5)), F,
+                                    tau, checks, reactions);
+  }
+  template <class S>
+  vector_t<S> rhs(const vector_t<S>& x) const {
+    const rolling_sphere_result<S> r = motion(x, false, false);  // no reaction: 3 directions, not 7
+    vector_t<S> d(6);
+    d << r.center_velocity(0), r.center_velocity(1), r.center_velocity(2), r.omega_dot(0), r.omega_dot(1), r.omega_dot(2);
+    return d;
+  }
+  /// appell eval's results: the centre's acceleration, omega', the contact force, its normal
+  /// component and the pivoting couple.
+  template <class S>
+  void results(const vector_t<S>& x, std::vector<named_values<S>>& out) const {
+    const rolling_sphere_result<S> r = motion(x, false);
+    out.push_back({"center_ddot", {r.center_ddot(0), r.center_ddot(1), r.center_ddot(2)}});
+    out.push_back({"omega_dot", {r.omega_dot(0), r.omega_dot(1), r.omega_dot(2)}});
+    out.push_back({"contact_force", {r.contact_force(0), r.contact_force(1), r.contact_force(2)}});
+    out.push_back({"normal_force", {r.normal_force}});
+    out.push_back({"pivot_couple", {r.pivot_couple}});
+    if (contact) {  // the contact's forces as every model names them (judged by the commands)
+      const vec3<S> f = r.friction_force();
+      out.push_back({"surface_normal_force", {r.normal_force}});
+      out.push_back({"surface_friction_force", {f(0), f(1), f(2)}});
+    }
+  }
+  /// The energy M v^2 / 2 + A omega^2 / 2 - F . c (without a couple; the force is constant),
+  /// and the two constraints, 0 along the motion: the centre on the surface of centres (|c| - rho,
+  /// the cylinder's radial distance - rho, c_z - a on the plane) and omega . n.
+  template <class S>
+  void invariants(const vector_t<S>& x, std::vector<named_values<S>>& out) const {
+    using std::sqrt;
+    const vec3<S> c(x(0), x(1), x(2)), w(x(3), x(4), x(5));
+    if (exactly_zero(torque(0)) && exactly_zero(torque(1)) && exactly_zero(torque(2))) {
+      const rolling_sphere_result<S> r = motion(x, false, false);
+      const vec3<S> F(S(force(0)), S(force(1)), S(force(2)));
+      out.push_back({"energy", {(S(mass) * dot(r.center_velocity, r.center_velocity) + S(A) * dot(w, w)) / S(2) - dot(F, c)}});
+    }
+    if (surface.type == surface_type::plane) {
+      out.push_back({"surface_residual", {S(c(2) - S(a))}, true});
+      out.push_back({"pivot_residual", {w(2)}, true});
+      return;
+    }
+    const vec3<S> radial = surface.type == surface_type::sphere ? c : vec3<S>(c(0), c(1), S(0));
+    const S norm = sqrt(dot(radial, radial));
+    out.push_back({"surface_residual", {S(norm - S(surface.rho(a)))}, true});
+    out.push_back({"pivot_residual", {S(dot(w, radial) / norm)}, true});
+  }
+};
+
+}  // namespace appell::ode
+
+namespace appell {
+
+struct rolling_sphere_input : model_input {
+  decimal_field mass, radius;
+  std::optional<decimal_field> A;  ///< default 2/5 M a^2 (enclosed exactly)
+  surface_type surface = surface_type::plane;
+  bool inside = false;
+  std::optional<decimal_field> b;  ///< the surface's radius (sphere, cylinder)
+  std::vector<decimal_field> gravity, force, torque, center, omega;
+  /// "project": accept a state off the constraints by at most this (length for the centre,
+  /// rad/s for omega . n) and use its projection onto them, enclosed in the scalar's arithmetic.
+  std::optional<decimal_field> project;
+  /// "contact": the contact with the surface judged (SCENES.md); mu as written ("" for none).
+  bool contact = false;
+  std::string mu;
+};
+
+struct rolling_sphere_model {
+  static constexpr const char* name = "rolling_sphere";
+  using input = rolling_sphere_input;
+  static input read(object_reader& scene);
+
+  template <Scalar T>
+  struct prepared {
+    T M, A, a;
+    rolling_surface<T> surface;
+    vec3<T> c, omega, F, tau;
+    T on_surface, no_pivot;  ///< the constraint residuals at the state
+    bool projected = false;
+    T center_moved = T(0), omega_moved = T(0);  ///< the projection's steps along n (when projected)
+    bool contact = false;  ///< the contact "surface" judged, with mu as written ("" for none)
+    std::string mu;
+    bool A_from_radius = false;  ///< A not given: 2/5 M a^2 (validity's --vary sphere.radius keeps it so)
+  };
+  template <Scalar T>
+  static prepared<T> prepare(const input& in) {
+    using std::sqrt, std::abs;
+    prepared<T> m;
+    m.M = value<T>(in.mass);
+    m.a = value<T>(in.radius);
+    m.A = in.A ? value<T>(*in.A) : rational<T>(2, 5) * m.M * m.a * m.a;
+    m.A_from_radius = !in.A;
+    m.surface.type = in.surface;
+    m.surface.inside = in.inside;
+    if (in.b) m.surface.b = value<T>(*in.b);
+    m.c = detail::vec3_from_decimals<T>(in.center);
+    m.omega = detail::vec3_from_decimals<T>(in.omega);
+    m.F = detail::vec3_from_decimals<T>(in.gravity) * m.M + detail::vec3_from_decimals<T>(in.force);
+    m.tau = detail::vec3_from_decimals<T>(in.torque);
+    m.contact = in.contact;
+    m.mu = in.mu;
+    // The state must lie on the constraints: centre on the surface of centres, omega . n = 0.
+    T scale_c, scale_w;
+    auto residuals = [&] {
+      scale_w = sqrt(dot(m.omega, m.omega));
+      if (in.surface == surface_type::plane) {
+        m.on_surface = m.c(2) - m.a;
+        m.no_pivot = m.omega(2);
+        scale_c = abs(m.c(2)) + m.a;
+      } else {
+        const vec3<T> radial = in.surface == surface_type::sphere ? m.c : vec3<T>(m.c(0), m.c(1), T(0));
+        const T norm = sqrt(dot(radial, radial));
+        m.on_surface = norm - m.surface.rho(m.a);
+        m.no_pivot = dot(m.omega, radial) / norm;
+        scale_c = norm + m.surface.b + m.a;  // rho = b -+ a may cancel: its error scales with b and a
+      }
+    };
+    residuals();
+    if (in.project) {
+      // At most `project` off, then the nearest state on the constraints: the centre moved along
+      // the surface of centres' normal, omega's normal component removed (enclosed in T).
+      const T tol = value<T>(*in.project);
+      if (certainly_positive(T(abs(m.on_surface) - tol)))
+        throw input_error("state.center: off the surface of centres by " + to_string(m.on_surface) +
+                          ", more than project = " + in.project->text);
+      if (certainly_positive(T(abs(m.no_pivot) - tol)))
+        throw input_error("state.omega: omega . n = " + to_string(m.no_pivot) + ", more than project = " +
+                          in.project->text);
+      m.projected = true;
+      m.center_moved = -m.on_surface;
+      m.omega_moved = -m.no_pivot;
+      if (in.surface == surface_type::plane) {
+        m.c(2) = m.a;
+        m.omega(2) = T(0);
+      } else {
+        const vec3<T> radial = in.surface == surface_type::sphere ? m.c : vec3<T>(m.c(0), m.c(1), T(0));
+        const T norm2 = dot(radial, radial), factor = m.surface.rho(m.a) / sqrt(norm2);
+        const T along = dot(m.omega, radial) / norm2;
+        for (int i = 0; i < (in.surface == surface_type::sphere ? 3 : 2); ++i) m.c(i) = radial(i) * factor;
+        m.omega = vec3<T>(m.omega - radial * along);
+      }
+      residuals();
+    }
+    if (!consistent_with_zero(m.on_surface, scale_c))
+      throw input_error("state.center: not on the surface of centres (residual " + to_string(m.on_surface) + ")");
+    if (!consistent_with_zero(m.no_pivot, scale_w))
+      throw input_error("state.omega: omega . n must be 0 (no pivoting), residual " + to_string(m.no_pivot));
+    return m;
+  }
+  /// with_checks::no: no Lagrange multipliers and no eq. (4) (rolling_sphere_motion's `checks`).
+  /// The evaluation written over e (appell::compute_into: its names' and values' storage reused;
+  /// model_functions::compute calls it for a new evaluation too).
+  template <Scalar T>
+  static void compute_into(const prepared<T>& m, evaluation<T>& e, with_checks checks) {
+    struct site;
+    const scratch<rolling_sphere_result<T>, site> r_held;  // borrowed (linalg/scratch.hpp)
+    const rolling_sphere_result<T>& r = *r_held;
+    rolling_sphere_motion_into(m.M, m.A, m.a, m.surface, m.c, m.omega, m.F, m.tau, checks == with_checks::yes, true,
+                               *r_held);
+    // With a contact judged, its verdict says whether the normal force is positive, and the
+    // contacts group gives the friction coefficient it requires in friction_ratio's stead.
+    if (!m.contact && !certainly_positive(r.normal_force) && !certainly_negative(r.normal_force))
+      throw certification_error("friction_ratio: the normal force " + to_string(r.normal_force) +
+                                " cannot be told from 0");
+    using W = evaluation_writer<T>;
+    W out(e);
+    out.vector(W::results, "center_ddot", "", r.center_ddot);
+    out.vector(W::results, "omega_dot", "", r.omega_dot);
+    out.vector(W::results, "contact_force", "", r.contact_force);
+    out.scalar(W::results, "normal_force", "", r.normal_force);
+    out.scalar(W::results, "tangential_force", "", r.tangential_force());
+    out.scalar(W::results, "pivot_couple", "", r.pivot_couple);
+    if (!m.contact) {
+      out.scalar(W::results, "friction_ratio", "", T(r.tangential_force() / r.normal_force));
+    } else {  // the contact's results as every model names them (SCENES.md "contacts")
+      const T tangential = r.tangential_force();
+      out.scalar(W::results, "surface_normal_force", "", r.normal_force);
+      out.vector(W::results, "surface_friction_force", "", r.friction_force());
+      out.scalar(W::results, "surface_tangential_force", "", tangential);
+      out.contacts().push_back(judged_contact("surface", r.normal_force, tangential, m.mu));
+    }
+    if (checks == with_checks::yes) {
+      out.scalar(W::checks, "virtual_work_invariant", "", r.virtual_work_residual);
+      out.scalar(W::checks, "normal_force_cotton_minus_lagrange", "", T(r.reactions(2) - r.multipliers(2)));
+      out.scalar(W::checks, "pivot_couple_cotton_minus_lagrange", "", T(r.reactions(3) - r.multipliers(3)));
+      out.scalar(W::checks, "surface_residual", "", m.on_surface);
+      out.scalar(W::checks, "pivot_residual", "", m.no_pivot);
+    }
+    out.vector(W::derived, "contact_point", "", r.contact_point);
+    out.vector(W::derived, "normal", "", r.normal);
+    out.vector(W::derived, "center_velocity", "", r.center_velocity);
+    if (m.projected) {
+      out.vector(W::derived, "center", "", m.c);
+      out.vector(W::derived, "omega", "", m.omega);
+      out.scalar(W::derived, "center_moved", "", m.center_moved);
+      out.scalar(W::derived, "omega_moved", "", m.omega_moved);
+    }
+    out.finish();
+  }
+};
+
+APPELL_EXTERN_MODEL(rolling_sphere_model)
+
+}  // namespace appell
+
+namespace appell {
+
+template <>
+struct model_motion<rolling_sphere_model> {
+  static constexpr bool moves = true;
+  template <Scalar T>
+  using problem = ode::rolling_sphere_problem<T>;
+  template <Scalar T>
+  static std::pair<ode::rolling_sphere_problem<T>, vector_t<T>> start(const rolling_sphere_model::prepared<T>& m) {
+    vector_t<T> x0(6);
+    x0 << m.c(0), m.c(1), m.c(2), m.omega(0), m.omega(1), m.omega(2);
+    ode::rolling_sphere_problem<T> p{m.M, m.A, m.a, m.surface, m.F, m.tau};
+    p.contact = m.contact;
+    p.mu = m.mu;
+    p.A_from_radius = m.A_from_radius;
+    return {std::move(p), x0};
+  }
+  static std::vector<std::string> state_fields(const rolling_sphere_input&) { return state_fields_of(rolling_sphere_state_table); }
+};
+
+}  // namespace appell
+
+APPELL_EXTERN_MODEL_MOTION(::appell::rolling_sphere_model)
