@@ -17,8 +17,6 @@
 #include "appell/io/scene.hpp"
 #include "appell/models/euler_body.hpp"
 #include "appell/models/heavy_top.hpp"
-#include "appell/models/rolling_sphere.hpp"
-#include "appell/models/top_on_cone.hpp"
 #include "pendulum_problem.hpp"
 #include "appell/ode/taylor.hpp"
 
