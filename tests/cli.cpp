@@ -1450,3 +1450,21 @@ BOOST_AUTO_TEST_CASE(no_command_prints_a_number_that_is_not_one) {
   const outcome fm = run("simulate " + fall + " --scalar mpfr --bits 64 --t-end 3 --every 0.5 --quiet --out " + dir + "_mpfr");
   BOOST_TEST(fm.status == 0, fm.out << fm.err);
 }
+
+BOOST_AUTO_TEST_CASE(motion_flags_that_do_not_apply_are_refused) {
+  // The motion commands' flags, checked by the command line before the library runs: a mu that
+  // is no decimal >= 0, mu both fixed and varied, --mu where no contact is judged along a motion,
+  // --jobs out of range, --locate on simulate (its point values prove nothing).
+  const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/rolling_sphere_bowl_contact.json";
+  const std::string out = " --out " + (work / "refused_motion").string();
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {"validity " + scene + " --vary omega_y=40:45 --t-end 0.1 --mu -0.1", "--mu: expected a decimal >= 0"},
+      {"validity " + scene + " --vary omega_y=40:45 --t-end 0.1 --mu 1e", "--mu: expected a decimal >= 0"},
+      {"validity " + scene + " --vary mu=0:0.4 --t-end 0.1 --mu 0.3", "--mu: fixes mu"},
+      {"simulate " + scene + " --t-end 0.1 --mu 0.3", "--mu: applies to enclose and validity"},
+      {"validity " + scene + " --vary mu=0:0.4 --t-end 0.1 --jobs 0", "--jobs"},
+      {"validity " + scene + " --vary mu=0:0.4 --t-end 0.1 --jobs +2", "--jobs"},
+      {"simulate " + APPELL_SOURCE_DIR + "/data/scenes/system_rolling_sphere_plane_contact.json --t-end 1 --locate 1e-3",
+       "--locate"}};
+  for (const auto& [args, why] : refused) expect_bad_input(args + out, why);
+}

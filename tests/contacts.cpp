@@ -33,14 +33,17 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <map>
 #include <random>
 #include <sstream>
+#include <thread>
 #include <tuple>
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/models/rolling_sphere.hpp"
 #include "appell/models/system_motion.hpp"
 #include "appell/io/scene.hpp"
+#include "appell/motion/motion.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 #include "affine_check.hpp"
 
@@ -372,22 +375,71 @@ struct loop_truth {
   }
 };
 
+/// The library's settings from a motion command's flags (those these tests use); validity's
+/// pieces on every core unless --jobs says otherwise, as `appell validity` runs them.
+motion::settings settings_of(const std::string& args) {
+  motion::settings s;
+  s.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::istringstream in(args);
+  for (std::string flag; in >> flag;) {
+    if (flag == "--until-contact-fails") {
+      s.until_contact_fails = true;
+      continue;
+    }
+    std::string v;
+    BOOST_TEST_REQUIRE(static_cast<bool>(in >> v), flag << " without a value");
+    if (flag == "--t-end") s.t_end = v;
+    else if (flag == "--locate") s.locate = std::stod(v);
+    else if (flag == "--mu") s.mu = v;
+    else if (flag == "--scalar") s.scalar = v;
+    else if (flag == "--bits") s.bits = static_cast<unsigned>(std::stoul(v));
+    else if (flag == "--resolution") s.resolution = std::stod(v);
+    else if (flag == "--jobs") s.jobs = std::stoi(v);
+    else if (flag == "--vary") {
+      const auto eq = v.find('='), colon = v.find(':', eq);
+      BOOST_TEST_REQUIRE((eq != std::string::npos && colon != std::string::npos), v);
+      s.vary_field = v.substr(0, eq);
+      s.vary_lo = v.substr(eq + 1, colon - eq - 1);
+      s.vary_hi = v.substr(colon + 1);
+    } else {
+      BOOST_FAIL("settings_of: " << flag);
+    }
+  }
+  return s;
+}
+
+/// A run of the library: its status (0: reached T, or stopped at a contact's failure as asked;
+/// 3: stopped short; 2: input_error), its summary and what it says (the summary, or the error).
 struct run_result {
   int status;
   nlohmann::json summary;
   std::string out;
 };
-run_result enclose(const std::string& json, const std::string& args, const std::string& name) {
-  const auto dir = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts" / name;
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / "scene.json") << json;
-  const std::string cmd = std::string(APPELL_BINARY) + " enclose " + (dir / "scene.json").string() + " " + args +
-                          " --quiet --out " + dir.string() + " >" + (dir / "stdout").string() + " 2>&1";
-  const int raw = std::system(cmd.c_str());
-  const int status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  nlohmann::json s;
-  if (std::filesystem::exists(dir / "summary.json")) s = nlohmann::json::parse(slurp((dir / "summary.json").string()));
-  return {status, s, slurp((dir / "stdout").string())};
+/// The rows a run sends, kept: each table's columns and rows of cells.
+struct kept_rows final : motion::row_sink {
+  std::map<std::string, std::vector<std::string>> columns_of;
+  std::map<std::string, std::vector<std::vector<std::string>>> rows_of;
+  void columns(const std::string& table, const std::vector<std::string>& names) override { columns_of[table] = names; }
+  void row(const std::string& table, const std::vector<std::string>& cells) override {
+    BOOST_TEST_REQUIRE(cells.size() == columns_of.at(table).size(), table);  // the columns came first, as many
+    rows_of[table].push_back(cells);
+  }
+};
+
+/// motion::enclose of the scene `json` with the settings of `args`, its rows into `rows`.
+run_result enclose(const std::string& json, const std::string& args, motion::row_sink& rows) {
+  const motion::settings s = settings_of(args);
+  try {
+    const motion::enclose_report r = motion::enclose(scene_of(json), s, rows);
+    const nlohmann::json j = motion::summary(r, s, "scene");
+    return {r.complete || !r.contact_stop.empty() ? 0 : 3, j, j.dump(2)};
+  } catch (const input_error& e) {
+    return {2, nullptr, e.what()};
+  }
+}
+run_result enclose(const std::string& json, const std::string& args) {
+  kept_rows rows;
+  return enclose(json, args, rows);
 }
 }  // namespace
 
@@ -398,7 +450,7 @@ BOOST_AUTO_TEST_CASE(a_sphere_looping_in_a_bowl_loses_its_contact_when_the_close
   {
     const truth_t th = L.lift_off(), t_star = L.time_to(th);
     const run_result r = enclose(replaced(text, ",\n                       \"mu\": \"0.5\"", ""),
-                                 "--t-end 0.8 --locate 1e-6 --until-contact-fails", "lift_off");
+                                 "--t-end 0.8 --locate 1e-6 --until-contact-fails");
     BOOST_TEST_REQUIRE(r.status == 0, r.out);
     const nlohmann::json& c = r.summary["contacts"]["bowl"];
     BOOST_TEST_REQUIRE(c["verdict"] == "fails", r.out);
@@ -413,7 +465,8 @@ BOOST_AUTO_TEST_CASE(a_sphere_looping_in_a_bowl_loses_its_contact_when_the_close
   {
     const truth_t th = L.slip(truth_t("0.5")), t_slip = L.time_to(th);
     BOOST_TEST(th < L.lift_off());
-    const run_result r = enclose(text, "--t-end 0.5 --locate 1e-5", "slip");
+    kept_rows rows;
+    const run_result r = enclose(text, "--t-end 0.5 --locate 1e-5", rows);
     BOOST_TEST_REQUIRE(r.status == 0, r.out);
     const nlohmann::json& c = r.summary["contacts"]["bowl"];
     BOOST_TEST_REQUIRE(c["verdict"] == "fails", r.out);
@@ -424,35 +477,31 @@ BOOST_AUTO_TEST_CASE(a_sphere_looping_in_a_bowl_loses_its_contact_when_the_close
     BOOST_TEST(r.summary["complete"] == true);
     BOOST_TEST_MESSAGE("slip at theta = " << th << ", t = " << t_slip << ": located in [" << from << ", " << to << "]");
     // Along the motion: N / M = v0^2 / r - 10/7 g - 17/7 g z / r (energy; cos theta = -z / r) at
-    // each step's end z (steps.csv) lies in the step's enclosure of N (contacts.csv), which holds
-    // N over the whole step, its end included.
-    const auto dir = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts" / "slip";
-    std::istringstream steps(slurp((dir / "steps.csv").string())), contacts(slurp((dir / "contacts.csv").string()));
-    auto fields = [](const std::string& line) {
-      std::vector<std::string> f;
-      std::stringstream ls(line);
-      for (std::string x; std::getline(ls, x, ',');) f.push_back(x);
-      return f;
-    };
-    std::string sl, cl;
-    std::getline(steps, sl);
-    std::getline(contacts, cl);
-    BOOST_TEST_REQUIRE(fields(sl).at(6) == "z_lo");
-    long rows = 0;
+    // each step's end z (the steps table) lies in the step's enclosure of N (the contacts
+    // table), which holds N over the whole step, its end included.
+    BOOST_TEST_REQUIRE(rows.columns_of.at("steps").at(6) == "z_lo");
+    BOOST_TEST_REQUIRE(rows.columns_of.at("contacts").at(3) == "normal_force_lo");
+    const auto& steps = rows.rows_of.at("steps");
+    const auto& contacts = rows.rows_of.at("contacts");
+    BOOST_TEST_REQUIRE(steps.size() == contacts.size());  // one contact, a row per step
+    BOOST_TEST(steps.size() == r.summary["steps"].get<std::size_t>());
+    std::size_t rows_checked = 0;
     const truth_t M(2);
-    while (std::getline(steps, sl) && std::getline(contacts, cl)) {
-      const auto a = fields(sl), b = fields(cl);
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      const auto& a = steps[k];
+      const auto& b = contacts[k];
+      BOOST_TEST_REQUIRE(a.at(1) == b.at(2));  // the same step's end
       const truth_t z_lo(a.at(6)), z_hi(a.at(7)), n_lo(b.at(3)), n_hi(b.at(4));
       auto N = [&](const truth_t& z) -> truth_t { return M * (L.v0 * L.v0 / L.r - 10 * L.g / 7 - 17 * L.g * z / (7 * L.r)); };
       // N decreases in z: the true N at the step's end lies in [N(z_hi), N(z_lo)]
-      BOOST_TEST(N(z_hi) <= n_hi, "step " << rows);
-      BOOST_TEST(N(z_lo) >= n_lo, "step " << rows);
+      BOOST_TEST(N(z_hi) <= n_hi, "step " << k);
+      BOOST_TEST(N(z_lo) >= n_lo, "step " << k);
       BOOST_TEST(z_hi - z_lo < truth_t("1e-9"));
-      ++rows;
+      ++rows_checked;
     }
-    BOOST_TEST(rows > 20);
+    BOOST_TEST(rows_checked > 20u);
     // Before the slip the contact holds: a run that stops before it says so.
-    const run_result early = enclose(text, "--t-end 0.1", "early");
+    const run_result early = enclose(text, "--t-end 0.1");
     BOOST_TEST(early.status == 0, early.out);
     BOOST_TEST(early.summary["contacts"]["bowl"]["verdict"] == "holds", early.out);
     BOOST_TEST(truth_t(early.summary["contacts"]["bowl"]["largest_required_mu"].get<std::string>()) < truth_t("0.5"));
@@ -494,49 +543,49 @@ truth_t lifting_off_at(const truth_t& T, truth_t lo, truth_t hi, Loop&& loop_of)
   }
   return (lo + hi) / 2;
 }
-/// Runs `appell validity SCENE ARGS` into DIR; its exit status.
-int validity_run(const std::string& scene, const std::string& args, const std::filesystem::path& dir) {
-  std::filesystem::create_directories(dir);
-  const std::string cmd = std::string(APPELL_BINARY) + " validity " + scene + " " + args + " --quiet --out " + dir.string() +
-                          " >" + (dir / "stdout").string() + " 2>&1";
-  const int raw = std::system(cmd.c_str());
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+/// motion::validity of the scene file with the settings of `args` (run_result's statuses), and
+/// its report.
+struct validity_result : run_result {
+  motion::validity_report report;
+};
+validity_result validity_run(const std::string& scene, const std::string& args) {
+  const motion::settings s = settings_of(args);
+  try {
+    const motion::validity_report r = motion::validity(read_scene_file(scene), s);
+    const nlohmann::json j = motion::summary(r, s, scene);
+    return {{r.run.stopped.empty() ? 0 : 3, j, j.dump(2)}, r};
+  } catch (const input_error& e) {
+    return {{2, nullptr, e.what()}, {}};
+  }
 }
 
-/// validity.csv over [lo, hi] at resolution R against the boundary `star` (the contact holds below
-/// it, fails above): the pieces cover the range, every one that holds lies below star, every one
-/// that fails above it, the undecided ones are narrow.
-void check_validity_against_the_closed_form(const std::filesystem::path& dir, const truth_t& range_lo,
-                                            const truth_t& range_hi, const truth_t& resolution, const truth_t& star) {
-  const truth_t wy_star = star;
-  const nlohmann::json s = nlohmann::json::parse(slurp((dir / "summary.json").string()));
+/// The pieces of a validity run over [lo, hi] at resolution R against the boundary `star` (the
+/// contact holds below it, fails above): the pieces cover the range, every one that holds lies
+/// below star, every one that fails above it, the undecided ones are narrow.
+void check_validity_against_the_closed_form(const validity_result& v, const truth_t& range_lo, const truth_t& range_hi,
+                                            const truth_t& resolution, const truth_t& star) {
+  const nlohmann::json& s = v.summary;
   int holds_pieces = 0, fails_pieces = 0;
   std::size_t undecided_pieces = 0;
   truth_t covered_to(range_lo), undecided_from("1e9"), undecided_to("-1e9");
-  std::istringstream csv(slurp((dir / "validity.csv").string()));
-  std::string line;
-  std::getline(csv, line);
-  while (std::getline(csv, line)) {
-    std::vector<std::string> f;
-    std::stringstream ls(line);
-    for (std::string x; std::getline(ls, x, ',');) f.push_back(x);
-    BOOST_TEST_REQUIRE(f.size() >= 3);
-    const truth_t lo(f[0]), hi(f[1]);
+  for (const motion::piece_report& p : v.report.run.done) {
+    const truth_t lo(p.lo), hi(p.hi);
     BOOST_TEST(lo <= covered_to, "a gap before " << lo);  // the pieces cover the range
     covered_to = std::max(covered_to, hi);
-    if (f[2] == "holds") {
+    if (p.verdict == "holds") {
       ++holds_pieces;
-      BOOST_TEST(hi < wy_star, "holds on [" << lo << ", " << hi << "] past the boundary " << wy_star);
-    } else if (f[2] == "fails") {
+      BOOST_TEST(hi < star, "holds on [" << lo << ", " << hi << "] past the boundary " << star);
+    } else if (p.verdict == "fails") {
       ++fails_pieces;
-      BOOST_TEST(lo > wy_star, "fails on [" << lo << ", " << hi << "] before the boundary " << wy_star);
+      BOOST_TEST(lo > star, "fails on [" << lo << ", " << hi << "] before the boundary " << star);
     } else {
-      BOOST_TEST(f[2] == "undecided");
+      BOOST_TEST(p.verdict == "undecided");
       BOOST_TEST(hi - lo <= resolution * (1 + truth_t("1e-9")), "an undecided piece wider than the resolution");
       // why it stayed undecided (issue 60, point 10): the margin whose enclosure holds 0, its
       // midpoint and width, and the piece width that may decide it
-      BOOST_TEST(line.find("holds 0 (midpoint ") != std::string::npos, line);
-      BOOST_TEST(line.find(" wide; ") != std::string::npos, line);
+      BOOST_TEST(p.why.find("holds 0 (midpoint ") != std::string::npos, p.why);
+      BOOST_TEST(p.why.find(" wide; ") != std::string::npos, p.why);
+      BOOST_TEST(p.why.rfind("contact ", 0) == 0, p.why);
       ++undecided_pieces;
       undecided_from = std::min(undecided_from, lo);
       undecided_to = std::max(undecided_to, hi);
@@ -544,38 +593,33 @@ void check_validity_against_the_closed_form(const std::filesystem::path& dir, co
   }
   BOOST_TEST(covered_to >= range_hi);
   BOOST_TEST(s["undecided_pieces"].size() == undecided_pieces);
-  if (undecided_pieces > 0) {
-    const std::string out = slurp((dir / "stdout").string());
-    BOOST_TEST(out.find("why undecided (the first piece; all in validity.csv): contact ") != std::string::npos, out);
-  }
   BOOST_TEST_REQUIRE(holds_pieces > 0);
   BOOST_TEST_REQUIRE(fails_pieces > 0);
   const truth_t holds_to(s["ranges"]["holds"].back()[1].get<std::string>()), fails_from(s["ranges"]["fails"].front()[0].get<std::string>());
   BOOST_TEST(holds_to < fails_from);
-  BOOST_TEST_MESSAGE(dir.filename().string() << ": validity over [" << range_lo << ", " << range_hi << "]: holds up to "
-                                             << holds_to << ", fails from " << fails_from << ", the boundary " << wy_star
-                                             << " (undecided in [" << undecided_from
-                                             << ", " << undecided_to << "]); " << s["pieces"] << " pieces in " << s["seconds"]
-                                             << " s on " << s["threads"] << " thread(s), " << s["seconds_per_piece"]
-                                             << " s per piece");
+  BOOST_TEST_MESSAGE(s["field"].get<std::string>() << ": validity over [" << range_lo << ", " << range_hi << "]: holds up to "
+                                                   << holds_to << ", fails from " << fails_from << ", the boundary " << star
+                                                   << " (undecided in [" << undecided_from << ", " << undecided_to << "]); "
+                                                   << s["pieces"] << " pieces in " << s["seconds"] << " s on " << s["threads"]
+                                                   << " thread(s), " << s["seconds_per_piece"] << " s per piece");
 }
 
-/// validity.csv without its last column (each piece's seconds).
-std::string pieces_without_seconds(const std::filesystem::path& dir) {
-  std::istringstream csv(slurp((dir / "validity.csv").string()));
+/// The pieces without their seconds, one line each.
+std::string pieces_without_seconds(const validity_result& v) {
   std::string out;
-  for (std::string line; std::getline(csv, line);) out += line.substr(0, line.rfind(',')) + "\n";
+  for (const motion::piece_report& p : v.report.run.done)
+    out += p.lo + "," + p.hi + "," + p.verdict + "," + p.holds_until + "," + p.fail_from + "," + p.fail_to + "," + p.why + "," +
+           std::to_string(p.steps) + "\n";
   return out;
 }
 
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(validity_splits_the_initial_spin_at_the_closed_form_s_boundary) {
-  const auto dir = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts" / "validity";
-  const int status = validity_run(APPELL_SOURCE_DIR + "/data/scenes/system_sphere_in_bowl_contact.json",
-                                  "--vary wy=23:27.5 --t-end 0.8 --resolution 0.25", dir);
-  BOOST_TEST_REQUIRE(status == 0, slurp((dir / "stdout").string()));
-  check_validity_against_the_closed_form(dir, truth_t("23"), truth_t("27.5"), truth_t("0.25"), critical_spin());
+  const validity_result v = validity_run(APPELL_SOURCE_DIR + "/data/scenes/system_sphere_in_bowl_contact.json",
+                                         "--vary wy=23:27.5 --t-end 0.8 --resolution 0.25");
+  BOOST_TEST_REQUIRE(v.status == 0, v.out);
+  check_validity_against_the_closed_form(v, truth_t("23"), truth_t("27.5"), truth_t("0.25"), critical_spin());
 }
 
 namespace {
@@ -663,7 +707,6 @@ BOOST_AUTO_TEST_CASE(validity_over_a_model_parameter_splits_at_the_closed_form_s
   // onto the surface of centres r = 1 - a, A = 2/5 M a^2 following, the spin wy = 45 kept: v0 =
   // 45 a). Without mu the contact fails where N < 0: the loop's lift-off (loop_truth), whose time
   // decreases in g and in a; the contact holds on [0, T] below the parameter where it is T.
-  const auto base = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts";
   const truth_t T("0.6");
   const std::string system = APPELL_SOURCE_DIR + "/data/scenes/system_sphere_in_bowl_lift_off.json";
   const truth_t g_star = lifting_off_at(T, truth_t(6), truth_t(9), [](const truth_t& g) {
@@ -671,9 +714,9 @@ BOOST_AUTO_TEST_CASE(validity_over_a_model_parameter_splits_at_the_closed_form_s
     L.g = g;
     return L;
   });
-  BOOST_TEST_REQUIRE(validity_run(system, "--vary g=6:9 --t-end 0.6 --resolution 0.25", base / "validity_g") == 0,
-                     slurp((base / "validity_g" / "stdout").string()));
-  check_validity_against_the_closed_form(base / "validity_g", truth_t(6), truth_t(9), truth_t("0.25"), g_star);
+  const validity_result vg = validity_run(system, "--vary g=6:9 --t-end 0.6 --resolution 0.25");
+  BOOST_TEST_REQUIRE(vg.status == 0, vg.out);
+  check_validity_against_the_closed_form(vg, truth_t(6), truth_t(9), truth_t("0.25"), g_star);
   const std::string built_in = APPELL_SOURCE_DIR + "/data/scenes/rolling_sphere_bowl_lift_off.json";
   const truth_t a_star = lifting_off_at(T, truth_t("0.076"), truth_t("0.092"), [](const truth_t& a) {
     loop_truth L;
@@ -681,11 +724,11 @@ BOOST_AUTO_TEST_CASE(validity_over_a_model_parameter_splits_at_the_closed_form_s
     L.v0 = 45 * a;
     return L;
   });
-  BOOST_TEST_REQUIRE(validity_run(built_in, "--vary sphere.radius=0.076:0.092 --t-end 0.6 --resolution 0.0008", base / "validity_radius") == 0,
-                     slurp((base / "validity_radius" / "stdout").string()));
-  check_validity_against_the_closed_form(base / "validity_radius", truth_t("0.076"), truth_t("0.092"), truth_t("0.0008"), a_star);
+  const validity_result va = validity_run(built_in, "--vary sphere.radius=0.076:0.092 --t-end 0.6 --resolution 0.0008");
+  BOOST_TEST_REQUIRE(va.status == 0, va.out);
+  check_validity_against_the_closed_form(va, truth_t("0.076"), truth_t("0.092"), truth_t("0.0008"), a_star);
   const std::string system_scene = APPELL_SOURCE_DIR + "/data/scenes/system_sphere_in_bowl_contact.json";
-  // Refused, exit 2 naming why: a parameter defined from others, a radius reaching the bowl's or
+  // Refused (input_error) naming why: a parameter defined from others, a radius reaching the bowl's or
   // not positive, a name that is neither a state component nor a parameter, a parameter that a
   // holonomic constraint involves (the disk's radius in z = a cos theta).
   const std::vector<std::tuple<std::string, std::string, std::string>> refused = {
@@ -697,9 +740,9 @@ BOOST_AUTO_TEST_CASE(validity_over_a_model_parameter_splits_at_the_closed_form_s
       {built_in, "parameters.sphere.radius=0.05:0.06", "nor a parameter of the model"},
       {APPELL_SOURCE_DIR + "/data/scenes/system_rolling_disk_friction.json", "a=0.2:0.4", "enters the holonomic constraint ground"}};
   for (const auto& [scene, vary, why] : refused) {
-    const auto dir = base / "refused_parameter";
-    BOOST_TEST(validity_run(scene, "--vary " + vary + " --t-end 0.1", dir) == 2, vary);
-    BOOST_TEST(slurp((dir / "stdout").string()).find(why) != std::string::npos, slurp((dir / "stdout").string()));
+    const validity_result v = validity_run(scene, "--vary " + vary + " --t-end 0.1");
+    BOOST_TEST(v.status == 2, vary);
+    BOOST_TEST(v.out.find(why) != std::string::npos, v.out);
   }
 }
 
@@ -727,34 +770,22 @@ truth_t largest_friction_ratio_up_to(const truth_t& T) {
 BOOST_AUTO_TEST_CASE(the_mu_flag_judges_every_contact_with_its_value) {
   // --mu MU in place of the scene's mu (0.5): the built-in sphere's loop needs at most mu* =
   // 0.198304 up to T = 0.3 (the closed form above), so --mu 0.15 fails and --mu 0.25 holds; the
-  // summary says the mu it used. Refused: a negative or non-decimal mu, --mu with --vary mu, a
-  // scene without contacts, a command that judges none along a motion.
+  // summary says the mu it used. Refused: a scene without contacts.
   const truth_t mu_star = largest_friction_ratio_up_to(truth_t("0.3"));
   BOOST_TEST_REQUIRE(truth_t("0.15") < mu_star);
   BOOST_TEST_REQUIRE(mu_star < truth_t("0.25"));
   const std::string text = scene_text("rolling_sphere_bowl_contact.json");
   for (const std::string mu : {"0.15", "0.25"}) {
-    const run_result r = enclose(text, "--t-end 0.3 --mu " + mu, "mu_flag_" + mu);
+    const run_result r = enclose(text, "--t-end 0.3 --mu " + mu);
     BOOST_TEST_REQUIRE(r.status == 0, r.out);
     const nlohmann::json& c = r.summary["contacts"]["surface"];
     BOOST_TEST(c["verdict"] == (mu == "0.15" ? "fails" : "holds"), mu << ": " << r.out);
     BOOST_TEST(c["mu"] == mu);
   }
-  const auto base = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts";
-  const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/rolling_sphere_bowl_contact.json";
-  const std::vector<std::pair<std::string, std::string>> refused = {
-      {"validity " + scene + " --vary omega_y=40:45 --t-end 0.1 --mu -0.1", "--mu: expected a decimal >= 0"},
-      {"validity " + scene + " --vary omega_y=40:45 --t-end 0.1 --mu 1e", "--mu: expected a decimal >= 0"},
-      {"validity " + scene + " --vary mu=0:0.4 --t-end 0.1 --mu 0.3", "--mu: fixes mu"},
-      {"enclose " + APPELL_SOURCE_DIR + "/data/scenes/euler_body.json --t-end 0.1 --mu 0.3", "--mu: the scene has no contacts"},
-      {"simulate " + scene + " --t-end 0.1 --mu 0.3", "--mu: applies to enclose and validity"}};
-  for (const auto& [args, why] : refused) {
-    const std::string cmd = std::string(APPELL_BINARY) + " " + args + " --out " + (base / "refused_mu").string() + " >" +
-                            (base / "refused_mu.txt").string() + " 2>&1";
-    const int raw = std::system(cmd.c_str());
-    BOOST_TEST((WIFEXITED(raw) && WEXITSTATUS(raw) == 2), args);
-    BOOST_TEST(slurp((base / "refused_mu.txt").string()).find(why) != std::string::npos, slurp((base / "refused_mu.txt").string()));
-  }
+  // mu with no contact to judge (the flags' other refusals: tests/cli.cpp)
+  const run_result none = enclose(scene_text("euler_body.json"), "--t-end 0.1 --mu 0.3");
+  BOOST_TEST(none.status == 2);
+  BOOST_TEST(none.out.find("--mu: the scene has no contacts") != std::string::npos, none.out);
 }
 
 BOOST_AUTO_TEST_CASE(validity_of_the_built_in_sphere_gives_the_same_pieces_on_one_thread_and_on_three) {
@@ -766,27 +797,21 @@ BOOST_AUTO_TEST_CASE(validity_of_the_built_in_sphere_gives_the_same_pieces_on_on
   const truth_t mu_star = largest_friction_ratio_up_to(truth_t("0.3"));
   const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/rolling_sphere_bowl_contact.json";
   const std::string args = "--vary mu=0:0.4 --t-end 0.3 --resolution 0.01";
-  const auto base = std::filesystem::path(APPELL_TEST_TMPDIR) / "contacts";
+  std::vector<validity_result> runs;
   for (const std::string jobs : {"1", "3"}) {
-    const auto dir = base / ("validity_" + jobs);
-    BOOST_TEST_REQUIRE(validity_run(scene, args + " --jobs " + jobs, dir) == 0, slurp((dir / "stdout").string()));
-    std::istringstream csv(slurp((dir / "validity.csv").string()));
-    std::string line;
-    std::getline(csv, line);
+    runs.push_back(validity_run(scene, args + " --jobs " + jobs));
+    const validity_result& v = runs.back();
+    BOOST_TEST_REQUIRE(v.status == 0, v.out);
     int holds_pieces = 0, fails_pieces = 0;
     truth_t covered_to = 0;
-    while (std::getline(csv, line)) {
-      std::vector<std::string> f;
-      std::stringstream ls(line);
-      for (std::string x; std::getline(ls, x, ',');) f.push_back(x);
-      BOOST_TEST_REQUIRE(f.size() >= 3);
-      const truth_t plo(f[0]), phi(f[1]);
+    for (const motion::piece_report& p : v.report.run.done) {
+      const truth_t plo(p.lo), phi(p.hi);
       BOOST_TEST(plo <= covered_to, "a gap before " << plo);
       covered_to = std::max(covered_to, phi);
-      if (f[2] == "holds") {
+      if (p.verdict == "holds") {
         ++holds_pieces;
         BOOST_TEST(plo > mu_star, "holds for mu in [" << plo << ", " << phi << "], mu* = " << mu_star);
-      } else if (f[2] == "fails") {
+      } else if (p.verdict == "fails") {
         ++fails_pieces;
         BOOST_TEST(phi < mu_star, "fails for mu in [" << plo << ", " << phi << "], mu* = " << mu_star);
       } else {
@@ -796,22 +821,19 @@ BOOST_AUTO_TEST_CASE(validity_of_the_built_in_sphere_gives_the_same_pieces_on_on
     BOOST_TEST(covered_to >= truth_t("0.4"));
     BOOST_TEST(holds_pieces > 0);
     BOOST_TEST(fails_pieces > 0);
-    const nlohmann::json s = nlohmann::json::parse(slurp((dir / "summary.json").string()));
+    const nlohmann::json& s = v.summary;
     BOOST_TEST(s["threads"] == std::stoi(jobs));
     BOOST_TEST_MESSAGE("built-in validity over mu, " << jobs << " thread(s): " << s["ranges"] << ", mu* = " << mu_star << "; "
                                                      << s["pieces"] << " pieces in " << s["seconds"] << " s");
   }
-  BOOST_TEST(pieces_without_seconds(base / "validity_1") == pieces_without_seconds(base / "validity_3"));
+  BOOST_TEST(pieces_without_seconds(runs[0]) == pieces_without_seconds(runs[1]));
   // A range that would leave a constraint is refused: the centre (on the surface of centres) and
   // omega's component along the normal (omega . n = 0; n is vertical at the bottom).
   for (const std::string field : {"center_x", "center_z", "omega_z"}) {
-    const auto dir = base / ("refused_" + field);
-    BOOST_TEST(validity_run(scene, "--vary " + field + "=0:0.1 --t-end 0.1", dir) == 2, field);
-    BOOST_TEST(slurp((dir / "stdout").string()).find("--vary: " + field + " enters a constraint") != std::string::npos,
-               slurp((dir / "stdout").string()));
+    const validity_result v = validity_run(scene, "--vary " + field + "=0:0.1 --t-end 0.1");
+    BOOST_TEST(v.status == 2, field);
+    BOOST_TEST(v.out.find("--vary: " + field + " enters a constraint") != std::string::npos, v.out);
   }
-  BOOST_TEST(validity_run(scene, args + " --jobs 0", base / "refused_jobs") == 2);
-  BOOST_TEST(validity_run(scene, args + " --jobs +2", base / "refused_jobs") == 2);
 }
 
 BOOST_AUTO_TEST_CASE(the_built_in_sphere_looping_in_a_bowl_loses_its_contact_when_the_closed_form_says) {
@@ -821,7 +843,7 @@ BOOST_AUTO_TEST_CASE(the_built_in_sphere_looping_in_a_bowl_loses_its_contact_whe
   // The lift-off (no mu) enclosed with `args`: the first failure located within `width` around t*.
   auto lift_off_located = [&](const std::string& args, const std::string& name, const char* width) {
     const truth_t t_star = L.time_to(L.lift_off());
-    const run_result r = enclose(replaced(text, "{\"mu\": \"0.5\"}", "{}"), args + " --until-contact-fails", name);
+    const run_result r = enclose(replaced(text, "{\"mu\": \"0.5\"}", "{}"), args + " --until-contact-fails");
     BOOST_TEST_REQUIRE(r.status == 0, r.out);
     const nlohmann::json& c = r.summary["contacts"]["surface"];
     BOOST_TEST_REQUIRE(c["verdict"] == "fails", r.out);
@@ -837,7 +859,7 @@ BOOST_AUTO_TEST_CASE(the_built_in_sphere_looping_in_a_bowl_loses_its_contact_whe
   lift_off_located("--scalar mpfi --bits 128 --t-end 0.8 --locate 1e-15", "builtin_lift_off_128", "1e-15");
   {
     const truth_t t_slip = L.time_to(L.slip(truth_t("0.5")));
-    const run_result r = enclose(text, "--t-end 0.5 --locate 1e-6", "builtin_slip");
+    const run_result r = enclose(text, "--t-end 0.5 --locate 1e-6");
     BOOST_TEST_REQUIRE(r.status == 0, r.out);
     const nlohmann::json& c = r.summary["contacts"]["surface"];
     BOOST_TEST_REQUIRE(c["verdict"] == "fails", r.out);
@@ -846,7 +868,7 @@ BOOST_AUTO_TEST_CASE(the_built_in_sphere_looping_in_a_bowl_loses_its_contact_whe
     BOOST_TEST(t_slip <= to);
     BOOST_TEST(to - from <= truth_t("1e-6"));
     BOOST_TEST_MESSAGE("built-in slip at t = " << t_slip << ": located in [" << from << ", " << to << "]");
-    const run_result early = enclose(text, "--t-end 0.1", "builtin_early");
+    const run_result early = enclose(text, "--t-end 0.1");
     BOOST_TEST(early.status == 0, early.out);
     BOOST_TEST(early.summary["contacts"]["surface"]["verdict"] == "holds", early.out);
   }
@@ -914,11 +936,6 @@ BOOST_AUTO_TEST_CASE(bad_contacts_are_refused_naming_the_field) {
   refused(replaced(plane, "\"normal\": \"contact\"", "\"normal\": [\"0\", \"0\", \"0*x\"]"), "contacts.table.normal");
   // without a body, every constraint must be a point_velocity one at one point
   refused(replaced(plane, "\"body\": \"sphere\", \"point\": [\"x\", \"y\", \"z - a\"], ", ""), "point_velocity");
-  // --locate and --until-contact-fails belong to enclose
-  const std::string cmd = std::string(APPELL_BINARY) + " simulate " + APPELL_SOURCE_DIR +
-                          "/data/scenes/system_rolling_sphere_plane_contact.json --t-end 1 --locate 1e-3 --out /tmp/x >/dev/null 2>&1";
-  const int raw = std::system(cmd.c_str());
-  BOOST_TEST(WEXITSTATUS(raw) == 2);
 }
 
 // A contact on a point mass (issue 60, point 8): a bead on a frictionless dome, one holonomic

@@ -28,6 +28,7 @@
 #include "write_whole.hpp"
 #include "plot.hpp"
 #include "motion_commands.hpp"
+#include "progress.hpp"
 
 namespace appell::cli {
 
@@ -95,7 +96,7 @@ int horizon(const horizon_options& given) {
     if (it->rigorous) throw input_error("--scalars: the study runs point scalars; " + s + " is an interval type (see enclose)");
   }
   const scene_input scene = read_scene_file(o.scene);
-  const std::optional<motion_closed_form> closed = motion_closed_form_of(scene);  // the model's, where it has one
+  const std::optional<motion_closed_form> closed = motion::closed_form_of(scene);  // the model's, where it has one
   if (closed) {  // the closed form is the reference, and it knows the period
     for (const auto& [flag, given] : {std::pair{"--reference-order", o.reference.order.has_value()},
                                       std::pair{"--reference-tol", o.reference.tol.has_value()},
@@ -110,12 +111,21 @@ int horizon(const horizon_options& given) {
   if (every > t_end) throw input_error("--every: the output step " + o.every + " is larger than the horizon " + o.t_end);
   if (t_end / every > 1e6) throw input_error("--every: more than 10^6 output times; choose a larger step");
 
-  std::vector<horizon_track> tracks;
+  // Each track's progress line: "horizon (dd): t = 3.1 of 10 (31%), about 2 min 5 s left".
+  std::optional<progress> line;
+  auto shown = [&](const std::string& what) -> std::function<void(double)> {
+    line.emplace(what, o.quiet);
+    return [&line, t_end](double fraction) {
+      if (!line->due()) return;
+      char detail[96];
+      std::snprintf(detail, sizeof detail, "t = %.6g of %.6g", fraction * t_end, t_end);
+      line->show(fraction, detail);
+    };
+  };
+  std::vector<motion::horizon_track> tracks;
   for (const auto& s : o.scalars)
-    tracks.push_back(with_scalar(s, std::nullopt, [&]<class T>(std::type_identity<T>) {
-      return run_horizon_track<T>(scene, o.t_end, o.every, o.quiet);
-    }));
-  horizon_track reference;
+    tracks.push_back(motion::track(scene, s, std::nullopt, o.t_end, o.every, {}, shown("horizon (" + s + ")")));
+  motion::horizon_track reference;
   std::string reference_kind;
   std::vector<std::size_t> compared;  // the state's components compared
   if (closed) {
@@ -123,19 +133,18 @@ int horizon(const horizon_options& given) {
     compared = closed->compared;
   } else {
     if (!scalar_built<mpfr>) throw input_error(left_out_scalar_message("the reference (simulate in mpfr)", "mpfr"));
-    reference = with_scalar("mpfr", 256u, [&]<class T>(std::type_identity<T>) {
-      return run_horizon_track<T>(scene, o.t_end, o.every, o.quiet, o.reference);
-    });
+    reference = motion::track(scene, "mpfr", 256u, o.t_end, o.every, o.reference, shown("horizon (mpfr)"));
     reference_kind = "simulate in mpfr at 256 bits";
     if (o.reference.order || o.reference.tol)  // the default's text as before
       reference_kind += ", order " + std::to_string(reference.order) + ", tolerance " + to_decimal(reference.tol);
   }
+  line.reset();  // the last track's progress line erased
 
   // errors[k][i]: scalar k at output i
   std::vector<std::vector<double>> errors(tracks.size());
   std::vector<std::vector<double>> times(tracks.size());
   for (std::size_t k = 0; k < tracks.size(); ++k) {
-    const horizon_track& tr = tracks[k];
+    const motion::horizon_track& tr = tracks[k];
     for (std::size_t i = 0; i < tr.t.size(); ++i) {
       std::vector<ref_t> truth;
       if (closed) {
@@ -179,7 +188,7 @@ int horizon(const horizon_options& given) {
   write_whole(dir, "horizon.csv", csv.str());
   if (!closed) {  // the reference's states, in full (exact decimals of its 256-bit values), for reuse and checks
     std::string text = "t";
-    for (const auto& f : motion_state_fields(scene)) text += "," + f;
+    for (const auto& f : motion::state_fields(scene)) text += "," + f;
     text += "\n";
     for (std::size_t i = 0; i < reference.t.size(); ++i) {
       text += reference.t[i];

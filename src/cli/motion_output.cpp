@@ -17,20 +17,6 @@ namespace appell::cli {
 
 namespace {
 
-/// summary.json's scalar fields, as `appell eval`'s: "bits" the bits used, "bits_requested"
-/// where they differ from --bits.
-void scalar_fields(nlohmann::json& j, const run_identity& id) {
-  j["scalar"] = id.scalar;
-  j["bits"] = id.bits;
-  if (id.bits_requested) j["bits_requested"] = id.bits_requested;
-}
-
-nlohmann::json state_object(const std::vector<std::pair<std::string, std::string>>& state) {
-  nlohmann::json j = nlohmann::json::object();
-  for (const auto& [name, value] : state) j[name] = value;
-  return j;
-}
-
 /// A double in 6 significant digits (a resolution, a width: for reading, not for reading back).
 std::string short_number(double x) {
   char b[32];
@@ -47,7 +33,8 @@ std::string csv_header(const std::vector<std::string>& header) {
 /// DIR/contacts.png from contacts.csv's rows: per contact, the normal force over each step
 /// (its bounds) and, with mu, the margin mu - required mu (or the required mu without it);
 /// a margin below 0, or a normal force below 0, is a contact that fails.
-plot_outcome plot_contacts(const std::filesystem::path& dir, const std::string& csv, const std::vector<contact_report>& contacts,
+plot_outcome plot_contacts(const std::filesystem::path& dir, const std::string& csv,
+                           const std::vector<motion::contact_report>& contacts,
                            const std::string& title) {
   std::ostringstream dat;
   std::string force_plot, margin_plot;
@@ -127,39 +114,30 @@ plot_outcome plot_enclosures(const std::filesystem::path& png, const std::string
 
 }  // namespace
 
-std::string run_identity::bits_text() const {
-  return std::to_string(bits) + " bits" + (bits_requested ? " (" + std::to_string(bits_requested) + " requested)" : "");
+void csv_rows::row(const std::string& table, const std::vector<std::string>& cells) {
+  std::string& t = text_[table];
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (i) t += ',';
+    t += cells[i];
+  }
+  t += '\n';
 }
 
-motion_outcome write_simulate(const simulate_report& r, const motion_options& o) {
-  nlohmann::json inv = nlohmann::json::array();
-  for (const auto& q : r.invariants)
-    inv.push_back({{"name", q.name},
-                   {"initial", q.initial},
-                   {"final", q.final},
-                   {q.zero_in_truth ? "max_abs_value" : "max_relative_drift", q.worst}});
+const std::string& csv_rows::text(const std::string& table) const {
+  static const std::string none;
+  const auto it = text_.find(table);
+  return it == text_.end() ? none : it->second;
+}
+
+motion_outcome write_simulate(const motion::simulate_report& r, const csv_rows& rows, const motion_options& o) {
   const bool complete = r.failure.empty();
-  nlohmann::json summary = {{"command", "simulate"}, {"scene", o.scene}, {"model", r.id.model}};
-  scalar_fields(summary, r.id);
-  summary.update({{"order", r.id.order},
-                  {"tol", r.id.tol},
-                  {"t_end", o.t_end},
-                  {"every", o.every},
-                  {"complete", complete},
-                  {"reason", r.failure},
-                  {"t_reached", r.t_reached},
-                  {"steps", complete ? nlohmann::json(r.steps) : nlohmann::json()},
-                  {"seconds", r.seconds},
-                  {"min_step", complete ? nlohmann::json(r.min_step) : nlohmann::json()},
-                  {"max_step", complete ? nlohmann::json(r.max_step) : nlohmann::json()},
-                  {"final_state", state_object(r.final_state)},
-                  {"invariants", inv}});
+  const nlohmann::json summary = motion::summary(r, o, o.scene);
   const std::filesystem::path dir(o.out);
   std::filesystem::create_directories(dir);
-  write_whole(dir, "trajectory.csv", csv_header(r.header) + r.rows);
+  write_whole(dir, "trajectory.csv", csv_header(r.header) + rows.text("trajectory"));
   write_whole(dir, "summary.json", summary.dump(2) + "\n");
   std::string plotted;
-  const bool moved = std::count(r.rows.begin(), r.rows.end(), '\n') >= 2;  // at least one step after t = 0
+  const bool moved = r.rows >= 2;  // at least one step after t = 0
   const bool drifted = std::any_of(r.invariants.begin(), r.invariants.end(), [](const auto& q) { return q.worst > 0; });
   if (!r.invariants.empty() && !moved) {
     plotted = " (no plot: the run stopped before its first step)";
@@ -192,61 +170,32 @@ motion_outcome write_simulate(const simulate_report& r, const motion_options& o)
   return {complete ? appell::exit_code(appell::exit_status::done) : appell::exit_code(appell::exit_status::no_certificate), out.str()};
 }
 
-motion_outcome write_enclose(const enclose_report& r, const motion_options& o) {
-  nlohmann::json contacts_json = nlohmann::json::object();
+motion_outcome write_enclose(const motion::enclose_report& r, const csv_rows& rows, const motion_options& o) {
   std::ostringstream contact_lines;
   for (const auto& c : r.contacts) {
-    nlohmann::json j = {{"verdict", c.verdict}, {"refined_steps", c.refined}};
-    if (!c.mu_text.empty()) j["mu"] = c.mu_text;
-    if (c.least_normal) j["least_normal_force"] = *c.least_normal;
-    j["largest_required_mu"] = c.largest_mu ? nlohmann::json(*c.largest_mu) : nlohmann::json();
     contact_lines << "  contact " << c.name << ": ";
-    if (c.verdict == "fails") {
-      j["first_failure"] = {{"from", c.holding_lo}, {"to", *c.fails_by}};
-      if (!c.located.empty()) j["located"] = c.located;
+    if (c.verdict == "fails")
       contact_lines << "FAILS: the first failure lies in [" << c.holding_lo << ", " << *c.fails_by << "]"
                     << (c.located.empty() ? "" : " (" + c.located + ")");
-    } else if (c.verdict == "undecided") {
-      j["undecided_from"] = c.holding_lo;
+    else if (c.verdict == "undecided")
       contact_lines << "holds up to t = " << c.holding_lo << ", undecided from there";
-    } else {
-      j["holds_until"] = c.holding_hi;
+    else
       contact_lines << "holds up to t = " << c.holding_hi;
-    }
     if (c.least_normal) contact_lines << "; least normal force >= " << *c.least_normal;
     if (c.largest_mu) contact_lines << "; required mu <= " << *c.largest_mu;
     if (!c.mu_text.empty()) contact_lines << " (mu = " << c.mu_text << ")";
     contact_lines << "\n";
-    contacts_json[c.name] = j;
   }
-  nlohmann::json widths = nlohmann::json::object();
-  for (std::size_t i = 0; i < r.value_names.size(); ++i) widths[r.value_names[i]] = r.widest_over[i];
-  nlohmann::json summary = {{"command", "enclose"}, {"scene", o.scene}, {"model", r.id.model}};
-  scalar_fields(summary, r.id);
-  summary.update({{"order", r.id.order},
-                  {"tol", r.id.tol},
-                  {"t_end", o.t_end},
-                  {"complete", r.complete},
-                  {"reason", r.reason},
-                  {"t_reached", r.t_reached},
-                  {"steps", r.steps},
-                  {"rejected_steps", r.rejected},
-                  {"seconds", r.seconds},
-                  {"final_state", state_object(r.final_state)},
-                  {"final_largest_width", r.final_width},
-                  {"largest_width_over_a_step", widths}});
-  if (!r.contacts.empty()) summary["contacts"] = contacts_json;
-  if (!r.contact_stop.empty()) summary["stopped_at_contact_failure"] = true;
+  const nlohmann::json summary = motion::summary(r, o, o.scene);
+  const std::string& steps = rows.text("steps");
+  const std::string& contact_rows = rows.text("contacts");
   const std::filesystem::path dir(o.out);
   std::filesystem::create_directories(dir);
-  write_whole(dir, "steps.csv", csv_header(r.header) + r.rows);
-  if (!r.contacts.empty())
-    write_whole(dir, "contacts.csv",
-                "contact,t0,t1,normal_force_lo,normal_force_hi,tangential_force_lo,tangential_force_hi,required_mu_lo,"
-                "required_mu_hi,verdict\n" + r.contact_rows);
+  write_whole(dir, "steps.csv", csv_header(r.header) + steps);
+  if (!r.contacts.empty()) write_whole(dir, "contacts.csv", csv_header(motion::contact_columns()) + contact_rows);
   write_whole(dir, "summary.json", summary.dump(2) + "\n");
   std::string plotted;
-  if (r.rows.empty()) {  // nothing to draw: say so, rather than gnuplot's complaint about an empty range
+  if (r.rows == 0) {  // nothing to draw: say so, rather than gnuplot's complaint about an empty range
     plotted = " (no plot: the run stopped before any step)";
   } else {
   // The motion and the results (a body's reactions among them): each value's enclosure over
@@ -260,11 +209,11 @@ motion_outcome write_enclose(const enclose_report& r, const motion_options& o) {
   for (std::size_t k = 0; k < r.result_values && first_result + 2 * k + 1 < r.header.size(); ++k)
     result_columns.emplace_back(r.value_names[k], first_result + 2 * k + 1);
   plotted = plot_note(
-      plot_enclosures(dir / "motion.png", r.id.model + ", " + r.id.scalar + ": the state over each step", r.rows, state_columns),
+      plot_enclosures(dir / "motion.png", r.id.model + ", " + r.id.scalar + ": the state over each step", steps, state_columns),
       dir / "motion.png");
   if (!result_columns.empty())
     plotted += plot_note(plot_enclosures(dir / "results.png", r.id.model + ", " + r.id.scalar + ": the results over each step",
-                                         r.rows, result_columns),
+                                         steps, result_columns),
                          dir / "results.png");
   plotted +=
       plot_note(render_png(dir / "widths.png",
@@ -277,7 +226,7 @@ motion_outcome write_enclose(const enclose_report& r, const motion_options& o) {
                            900, 500),
                 dir / "widths.png");
   if (!r.contacts.empty())
-    plotted += plot_note(plot_contacts(dir, r.contact_rows, r.contacts, r.id.model + ", " + r.id.scalar), dir / "contacts.png");
+    plotted += plot_note(plot_contacts(dir, contact_rows, r.contacts, r.id.model + ", " + r.id.scalar), dir / "contacts.png");
   }
   std::ostringstream out;
   out << "enclose " << r.id.model << " in " << r.id.scalar << " (" << r.id.bits_text() << "), order " << r.id.order << ": "
@@ -294,9 +243,13 @@ motion_outcome write_enclose(const enclose_report& r, const motion_options& o) {
   return {r.complete || !r.contact_stop.empty() ? appell::exit_code(appell::exit_status::done) : appell::exit_code(appell::exit_status::no_certificate), out.str()};
 }
 
-motion_outcome write_validity(const validity_report& r, const motion_options& o) {
-  const std::vector<piece_report>& done = r.run.done;
-  // The pieces, and the ranges of each verdict (adjacent pieces merged).
+motion_outcome write_validity(const motion::validity_report& r, const motion_options& o) {
+  const std::vector<motion::piece_report>& done = r.run.done;
+  const nlohmann::json summary = motion::summary(r, o, o.scene);
+  const nlohmann::json& ranges = summary["ranges"];
+  const nlohmann::json& undecided_why = summary["undecided_pieces"];
+  const double suggested = summary["suggested_resolution"].is_null() ? 0.0 : summary["suggested_resolution"].get<double>();
+  // The pieces, and the plot's boxes by verdict.
   std::ostringstream csv, dat[3];
   csv << "lo,hi,verdict,holds_until,first_failure_from,first_failure_to,why,steps,seconds\n";
   auto quoted = [](const std::string& t) {  // a CSV field: in quotes, a quote doubled
@@ -304,48 +257,16 @@ motion_outcome write_validity(const validity_report& r, const motion_options& o)
     for (const char c : t) q += c == '"' ? std::string("\"\"") : std::string(1, c);
     return q + "\"";
   };
-  // Why the undecided pieces stayed so, and the narrowest piece width their margins suggest.
-  nlohmann::json undecided_why = nlohmann::json::array();
-  double suggested = 0;
-  bool some_undecidable = false;
-  nlohmann::json ranges = {{"holds", nlohmann::json::array()}, {"fails", nlohmann::json::array()}, {"undecided", nlohmann::json::array()}};
-  std::string last;
-  double piece_seconds = 0;
-  for (const piece_report& p : done) {
+  bool some_undecidable = false;  // an undecided piece for which no width is suggested
+  for (const motion::piece_report& p : done) {
     const std::string& v = p.verdict;
     csv << p.lo << "," << p.hi << "," << v << "," << p.holds_until << "," << p.fail_from << "," << p.fail_to << ","
         << (v == "undecided" ? quoted(p.why) : "") << "," << p.steps << "," << p.seconds << "\n";
-    if (v == "undecided") {
-      undecided_why.push_back({{"lo", p.lo}, {"hi", p.hi}, {"why", p.why}});
-      if (p.suggested > 0) suggested = suggested > 0 ? std::min(suggested, p.suggested) : p.suggested;
-      else some_undecidable = true;
-    }
-    nlohmann::json& list = ranges[v];
-    if (v == last && !list.empty()) list.back()[1] = p.hi;
-    else list.push_back({p.lo, p.hi});
-    last = v;
-    piece_seconds += p.seconds;
+    if (v == "undecided" && !(p.suggested > 0)) some_undecidable = true;
     const int k = v == "holds" ? 0 : v == "fails" ? 1 : 2;
     const double x = (p.x_lo + p.x_hi) / 2, dx = (p.x_hi - p.x_lo) / 2;
     dat[k] << x << " " << (p.y0 + p.y1) / 2 << " " << x - dx << " " << x + dx << " " << p.y0 << " " << p.y1 << "\n";
   }
-  nlohmann::json summary = {{"command", "validity"}, {"scene", o.scene}, {"model", r.id.model}};
-  scalar_fields(summary, r.id);
-  summary.update({{"field", o.vary_field},
-                  {"range", {o.vary_lo, o.vary_hi}},
-                  {"t_end", o.t_end},
-                  {"resolution", r.resolution},
-                  {"pieces", done.size()},
-                  {"complete", r.run.stopped.empty()},
-                  {"reason", r.run.stopped},
-                  {"pieces_not_run", r.run.not_run},
-                  {"ranges", ranges},
-                  {"undecided_pieces", undecided_why},
-                  {"suggested_resolution", suggested > 0 ? nlohmann::json(suggested) : nlohmann::json()},
-                  {"threads", r.threads},
-                  {"processes", r.processes},
-                  {"seconds", r.seconds},
-                  {"seconds_per_piece", done.empty() ? 0.0 : piece_seconds / static_cast<double>(done.size())}});
   const std::filesystem::path dir(o.out);
   std::filesystem::create_directories(dir);
   write_whole(dir, "validity.csv", csv.str());

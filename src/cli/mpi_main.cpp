@@ -32,7 +32,7 @@
 
 #include "exit_status.hpp"
 #include "motion_commands.hpp"
-#include "pieces.hpp"
+#include "appell/motion/pieces.hpp"
 #include "reference.hpp"
 
 namespace {
@@ -92,7 +92,7 @@ struct rank_text {
 };
 
 /// The other ranks as validity's remote workers (rank w + 1 is worker w), seen from rank 0.
-class mpi_pieces final : public appell::cli::remote_pieces {
+class mpi_pieces final : public appell::motion::remote_pieces {
  public:
   explicit mpi_pieces(boost::mpi::communicator& world) : world_(world) {}
   int workers() const override { return world_.size() - 1; }
@@ -124,19 +124,19 @@ int validity(int argc, char** argv, boost::mpi::communicator& world) {
   }
   if (o.jobs == 0) o.jobs = 1;  // one thread of rank 0's besides its leading: a rank per core is MPI's way
   mpi_pieces remote(world);
-  appell::cli::piece_network net;
+  appell::motion::piece_network net;
   net.threads = o.jobs;
   if (root) {
     net.remote = &remote;
   } else {
     o.quiet = true;
-    net.serve = [&](const appell::cli::piece_runner& run) {
+    net.serve = [&](const appell::motion::piece_runner& run) {
       for (;;) {
         const boost::mpi::status st = world.probe(0, boost::mpi::any_tag);
         std::string path;
         world.recv(0, st.tag(), path);
         if (st.tag() == tag_stop) return;
-        appell::cli::piece_report r = appell::cli::run_piece_reporting(run, path);
+        appell::motion::piece_report r = appell::motion::run_piece_reporting(run, path);
         if (!r.error.empty()) r.error = "rank " + std::to_string(world.rank()) + ": " + r.error;
         world.send(0, tag_report, r.to_message());
       }

@@ -125,11 +125,11 @@ std::uint64_t uniform_up_to(std::mt19937_64& rng, std::uint64_t range) {
 /// The states of --trajectory T --every DT: the scene's motion by simulate in dd, each value
 /// the double nearest to it (what an engine in binary64 would be given), as a states table.
 csv_table trajectory_states(const reference_options& o, const scene_input& scene) {
-  const auto fields = motion_state_fields(scene);  // input_error naming model when it does not move
+  const auto fields = motion::state_fields(scene);  // input_error naming model when it does not move
   const double t_end = positive_decimal("--trajectory", o.trajectory), every = positive_decimal("--every", o.every);
   if (every > t_end) throw input_error("--every: the output step " + o.every + " is larger than the horizon " + o.trajectory);
   if (t_end / every > 1e6) throw input_error("--every: more than 10^6 states; choose a larger step");
-  const horizon_track tr = run_horizon_track<dd>(scene, o.trajectory, o.every, true);
+  const motion::horizon_track tr = motion::track(scene, "dd", std::nullopt, o.trajectory, o.every);
   csv_table t;
   t.path = "--trajectory";
   t.header.push_back("state");

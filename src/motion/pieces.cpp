@@ -1,4 +1,4 @@
-#include "pieces.hpp"
+#include "appell/motion/pieces.hpp"
 
 #include <algorithm>
 #include <cfenv>
@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <thread>
 
-namespace appell::cli {
+namespace appell::motion {
 
 std::string piece_report::to_message() const {
   const nlohmann::json j = {{"path", path},   {"verdict", verdict}, {"lo", lo},         {"hi", hi},       {"holds_until", holds_until},
@@ -180,4 +180,4 @@ pieces_outcome run_pieces(const piece_runner& run, const piece_network& net, con
   return out;
 }
 
-}  // namespace appell::cli
+}  // namespace appell::motion

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-namespace appell::cli {
+namespace appell::motion {
 
 /// What running one piece found, in decimals (outward-rounded bounds) and doubles for the plot.
 struct piece_report {
@@ -76,4 +76,4 @@ struct pieces_outcome {
 /// error once every piece in flight has come back.
 pieces_outcome run_pieces(const piece_runner& run, const piece_network& net, const std::function<void(double)>& progress);
 
-}  // namespace appell::cli
+}  // namespace appell::motion

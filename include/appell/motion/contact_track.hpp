@@ -1,4 +1,5 @@
-// contact_track.hpp -- `appell enclose`'s verdict on each contact of a scene
+// contact_track.hpp -- the verdict of an enclosed motion (motion::enclose, motion::validity) on
+// each contact of a scene
 // (SCENES.md "contacts"), from the enclosures of its normal force N and friction
 // force F_t over every whole step (reactions/contact.hpp judges them):
 //   holds      up to T: every step proves N > 0 and |F_t| < mu N;
@@ -21,12 +22,11 @@
 #include <vector>
 
 #include "appell/ode/enclose.hpp"
-#include "appell/ode/enclose.hpp"
 #include "appell/ode/taylor.hpp"
 #include "appell/reactions/contact.hpp"
 #include "appell/scalar/format.hpp"
 
-namespace appell::cli::motion_detail {
+namespace appell::motion::detail {
 
 /// A contact's normal force and tangential force's length in one set of results
 /// (`<name>_normal_force`, `<name>_friction_force` [3]).
@@ -88,10 +88,10 @@ struct contact_track {
     return judge_contact(v.normal, v.tangential, mu ? &*mu : nullptr);
   }
 
-  /// One main step [t0, t1] from `start` to `end`: its values over the step and at its end;
-  /// a row of contacts.csv.
-  void step(const I& t0, const I& t1, const vector_t<I>& start, const vector_t<I>& end, const contact_values<I>& over,
-            const contact_values<I>& at_end, std::ostringstream& csv) {
+  /// One main step [t0, t1] from `start` to `end`: its values over the step and at its end.
+  /// Returns the step's row of the "contacts" table (contact_columns).
+  std::vector<std::string> step(const I& t0, const I& t1, const vector_t<I>& start, const vector_t<I>& end,
+                                const contact_values<I>& over, const contact_values<I>& at_end) {
     const contact_verdict v = verdict_of(over);
     if (!least_normal || lower(over.normal) < lower(*least_normal)) least_normal = over.normal;
     std::string mu_lo, mu_hi;
@@ -103,14 +103,22 @@ struct contact_track {
     } else {
       mu_unbounded = true;
     }
-    csv << name << "," << lower_string(t0) << "," << upper_string(t1) << "," << lower_string(over.normal) << ","
-        << upper_string(over.normal) << "," << lower_string(over.tangential) << "," << upper_string(over.tangential) << ","
-        << mu_lo << "," << mu_hi << "," << verdict_name(v) << "\n";
+    std::vector<std::string> row{name,
+                                 lower_string(t0),
+                                 upper_string(t1),
+                                 lower_string(over.normal),
+                                 upper_string(over.normal),
+                                 lower_string(over.tangential),
+                                 upper_string(over.tangential),
+                                 std::move(mu_lo),
+                                 std::move(mu_hi),
+                                 verdict_name(v)};
     record r{t0, t1, start, end, v, verdict_of(at_end), {}, over};
     if (v == contact_verdict::fails) r.fails_at = t0;
     else if (r.at_end == contact_verdict::fails) r.fails_at = t1;
     if (r.fails_at) any_fails = true;
     steps.push_back(std::move(r));
+    return row;
   }
 
   /// The first undecided steps enclosed again from their start in `pieces` shorter horizons
@@ -253,4 +261,4 @@ struct contact_track {
   }
 };
 
-}  // namespace appell::cli::motion_detail
+}  // namespace appell::motion::detail

@@ -1,54 +1,56 @@
-// The body of `appell simulate` / `appell enclose` / the horizon's tracks for one
-// model in one scalar: included by the generated units (cmake/instantiate.cmake), each of
-// which includes the models' motion headers first (io/model_motion.hpp).
+// The motion's runs for one model in one scalar (motion.hpp's calls): simulate, enclose with
+// the contacts' verdicts, validity's pieces, the horizon's tracks.  Included only by the units
+// CMake generates per model and scalar (cmake/instantiate.cmake), each of which includes the
+// models' homes first (appell_models.hpp); motion.cpp declares them and dispatches to them.
 #pragma once
-
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <iostream>
 #include <sstream>
 
-#include "motion_commands.hpp"
-
 #include "appell/io/model_motion.hpp"
+#include "appell/motion/contact_track.hpp"
+#include "appell/motion/motion.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/taylor.hpp"
-#include "contact_track.hpp"
-#include "motion_output.hpp"
-#include "pieces.hpp"
-#include "progress.hpp"
+#include "appell/scalar/decimal.hpp"
 
-namespace appell::cli {
+namespace appell::motion {
 
-namespace motion_detail {
+/// What one model x scalar run is asked for, and where its report goes (one of the three).
+enum class run_kind { simulate, enclose, validity };
+struct run_request {
+  run_kind kind = run_kind::simulate;
+  const settings* s = nullptr;
+  row_sink* rows = nullptr;
+  simulate_report* simulated = nullptr;
+  enclose_report* enclosed = nullptr;
+  validity_report* validated = nullptr;
+};
 
-/// The motion commands' progress (progress.hpp): "simulate: t = 3.1 of 10 (31%), about 2 min
-/// 5 s left".  With max_seconds, the call past that much time throws ode::run_stopped, which the
-/// motion commands turn into an incomplete run with its files.
-class progress_meter {
+namespace detail {
+
+/// The run's progress: settings::progress with the fraction done, and, past settings::
+/// max_seconds, ode::run_stopped (the run then reports what it reached).
+class progress_gate {
  public:
-  progress_meter(std::string what, double horizon, bool quiet, std::optional<double> max_seconds = {})
-      : line_(std::move(what), quiet), horizon_(horizon), max_seconds_(max_seconds) {}
+  progress_gate(const settings& s, double horizon)
+      : s_(s), horizon_(horizon), started_(std::chrono::steady_clock::now()) {}
   void operator()(double fraction) {
-    if (max_seconds_ && line_.elapsed() >= *max_seconds_) {
+    if (s_.max_seconds && std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count() >= *s_.max_seconds) {
       char why[160];
-      std::snprintf(why, sizeof why, "--max-seconds %.6g reached at t = %.6g", *max_seconds_, fraction * horizon_);
+      std::snprintf(why, sizeof why, "--max-seconds %.6g reached at t = %.6g", *s_.max_seconds, fraction * horizon_);
       throw ode::run_stopped(why);
     }
-    if (!line_.due()) return;
-    char detail[96];
-    std::snprintf(detail, sizeof detail, "t = %.6g of %.6g", fraction * horizon_, horizon_);
-    line_.show(fraction, detail);
+    if (s_.progress) s_.progress(fraction);
   }
 
  private:
-  progress line_;
+  const settings& s_;
   double horizon_;
-  std::optional<double> max_seconds_;
+  std::chrono::steady_clock::time_point started_;
 };
 
 /// The state as the scene gives it.  A problem that integrates other variables (the heavy top
@@ -76,7 +78,7 @@ void column_names(const std::vector<ode::named_values<S>>& group, const std::str
 }
 
 
-/// The bits of the run, captured by run_model_motion before the evaluation scope raises mpfi's
+/// The bits of the run, captured by run_model before the evaluation scope raises mpfi's
 /// working precision by its guard bits: `used`, the scalar's bits (what the run reports as its
 /// bits, as `appell eval` does), and `asked`, mp_precision_bits() at the same moment (the --bits
 /// asked for, for runtime-precision scalars).  0: not captured.
@@ -85,7 +87,7 @@ struct run_bits_t {
 };
 inline thread_local run_bits_t run_bits;
 
-/// The run's scalar and settings, for its report (motion_output.hpp): "bits" the bits used and
+/// The run's scalar and settings, for its report (motion.hpp): "bits" the bits used and
 /// "bits_requested" where --bits asked for another count, as `appell eval` reports them.
 template <Scalar T>
 run_identity identity_of(const scene_input& scene, int order, double tol) {
@@ -117,7 +119,8 @@ double default_tol() {
 }
 
 template <Scalar T, class P>
-motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scene_input& scene, const motion_options& o) {
+simulate_report simulate_problem(const P& prob, const vector_t<T>& x0, const scene_input& scene, const settings& o,
+                                 row_sink& sink) {
   const T t_end = from_decimal<T>(o.t_end);
   const T every = from_decimal<T>(o.every);
   const int order = o.order.value_or(default_order<T>());
@@ -125,86 +128,94 @@ motion_outcome simulate_problem(const P& prob, const vector_t<T>& x0, const scen
   std::vector<std::string> header{"t"};
   const std::vector<std::string> names = reported_names(prob);
   for (const auto& s : names) header.push_back(s);
-  std::vector<ode::sample<T>> rows;
-  progress_meter meter("simulate", approx_double(t_end), o.quiet, o.max_seconds);
-  ode::simulate_stats st;
-  const auto started = std::chrono::steady_clock::now();
-  std::string failure;  // why the run stopped before T (the rows up to there are still written)
-  try {
-    st = ode::simulate(prob, x0, t_end, every, order, tol,
-                       [&](const ode::sample<T>& s) {
-                         // a result or invariant that is not finite in T ends the run there (exit 3
-                         // naming it; the rows before it are written): never a number that is not one
-                         for (const auto* group : {&s.results, &s.invariants})
-                           for (const auto& g : *group)
-                             for (const T& v : g.values) require_finite(v, g.name + " at t = " + to_string(s.t));
-                         rows.push_back(s);
-                         rows.back().x = reported(prob, s.x);
-                       },
-                       [&](double f) { meter(f); });
-  } catch (const std::exception& e) {
-    // the motion failed on its way (the state no longer finite, a step collapse near a
-    // singularity, an expression refusing its arguments) or was stopped (--max-seconds):
-    // what was computed is written
-    const bool motion_failure = dynamic_cast<const certification_error*>(&e) || dynamic_cast<const domain_error*>(&e) ||
-                                dynamic_cast<const std::invalid_argument*>(&e) || dynamic_cast<const ode::run_stopped*>(&e);
-    if (!motion_failure || rows.empty()) throw;  // a bug, or not even the initial state
-    failure = e.what();
-    // the integrator's counts went with its exception: the time is measured here, the steps
-    // (and their sizes) are not known, null in summary.json
-    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  }
-  column_names(rows.front().results, "", header);
-  column_names(rows.front().invariants, "", header);
-  // The report (motion_output.hpp): every number as text, or a double for the plot.
-  simulate_report r;
-  r.id = identity_of<T>(scene, order, tol);
-  r.failure = failure;
-  r.header = header;
-  std::ostringstream csv;
+  // The first and the last rows (the drift is measured from the first, the report ends at the
+  // last); every row goes to the sink as it comes.
+  std::optional<ode::sample<T>> first, last;
+  long count = 0;
   // drift data: t and |I(t) - I(0)| / max(|I(0)|, 1e-300) per invariant (|I(t)| for one that is 0 in truth)
   std::ostringstream dat;
-  std::vector<double> worst(rows.front().invariants.size(), 0.0);
-  for (const auto& row : rows) {
-    csv << to_string(row.t);
-    for (std::size_t i = 0; i < names.size(); ++i) csv << "," << to_string(row.x(static_cast<Eigen::Index>(i)));
-    for (const auto& g : row.results)
-      for (const T& v : g.values) csv << "," << to_string(v);
-    for (const auto& g : row.invariants)
-      for (const T& v : g.values) csv << "," << to_string(v);
-    csv << "\n";
-    dat << approx_double(row.t);
-    for (std::size_t q = 0; q < row.invariants.size(); ++q) {
+  std::vector<double> worst;
+  auto take = [&](ode::sample<T> s) {
+    s.x = reported(prob, s.x);
+    if (!first) {
+      first = s;
+      column_names(s.results, "", header);
+      column_names(s.invariants, "", header);
+      sink.columns("trajectory", header);
+      worst.assign(s.invariants.size(), 0.0);
+    }
+    std::vector<std::string> cells;
+    cells.reserve(header.size());
+    cells.push_back(to_string(s.t));
+    for (std::size_t i = 0; i < names.size(); ++i) cells.push_back(to_string(s.x(static_cast<Eigen::Index>(i))));
+    for (const auto* group : {&s.results, &s.invariants})
+      for (const auto& g : *group)
+        for (const T& v : g.values) cells.push_back(to_string(v));
+    sink.row("trajectory", cells);
+    ++count;
+    dat << approx_double(s.t);
+    for (std::size_t q = 0; q < s.invariants.size(); ++q) {
       using std::abs;
-      const T i0 = rows.front().invariants[q].values[0];
-      const double d = approx_double(T(abs(T(row.invariants[q].values[0] - i0))));
-      const bool absolute = rows.front().invariants[q].zero_in_truth;
-      const double rel = absolute ? std::fabs(approx_double(row.invariants[q].values[0]))
-                                  : d / std::max(std::fabs(approx_double(i0)), 1e-300);
+      const T i0 = first->invariants[q].values[0];
+      const double d = approx_double(T(abs(T(s.invariants[q].values[0] - i0))));
+      const bool absolute = first->invariants[q].zero_in_truth;
+      const double rel = absolute ? std::fabs(approx_double(s.invariants[q].values[0])) : d / std::max(std::fabs(approx_double(i0)), 1e-300);
       worst[q] = std::max(worst[q], rel);
       if (rel > 0) dat << " " << rel;
       else dat << " NaN";  // exactly 0: no point on the log scale (a floor would crush it)
     }
     dat << "\n";
+    last = std::move(s);
+  };
+  progress_gate gate(o, approx_double(t_end));
+  ode::simulate_stats st;
+  const auto started = std::chrono::steady_clock::now();
+  std::string failure;  // why the run stopped before T (the rows up to there are still reported)
+  try {
+    st = ode::simulate(prob, x0, t_end, every, order, tol,
+                       [&](const ode::sample<T>& s) {
+                         // a result or invariant that is not finite in T ends the run there (the
+                         // rows before it stand): never a number that is not one
+                         for (const auto* group : {&s.results, &s.invariants})
+                           for (const auto& g : *group)
+                             for (const T& v : g.values) require_finite(v, g.name + " at t = " + to_string(s.t));
+                         take(s);
+                       },
+                       [&](double f) { gate(f); });
+  } catch (const std::exception& e) {
+    // the motion failed on its way (the state no longer finite, a step collapse near a
+    // singularity, an expression refusing its arguments) or was stopped (max_seconds): what was
+    // computed stands
+    const bool motion_failure = dynamic_cast<const certification_error*>(&e) || dynamic_cast<const domain_error*>(&e) ||
+                                dynamic_cast<const std::invalid_argument*>(&e) || dynamic_cast<const ode::run_stopped*>(&e);
+    if (!motion_failure || !first) throw;  // a bug, or not even the initial state
+    failure = e.what();
+    // the integrator's counts went with its exception: the time is measured here, the steps
+    // (and their sizes) are not known, null in summary.json
+    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   }
-  r.rows = csv.str();
+  simulate_report r;
+  r.id = identity_of<T>(scene, order, tol);
+  r.failure = failure;
+  r.header = header;
+  r.rows = count;
   r.drift = dat.str();
   for (std::size_t q = 0; q < worst.size(); ++q)
-    r.invariants.push_back({rows.front().invariants[q].name, to_string(rows.front().invariants[q].values[0]),
-                            to_string(rows.back().invariants[q].values[0]), rows.front().invariants[q].zero_in_truth, worst[q]});
-  for (std::size_t i = 0; i < names.size(); ++i) r.final_state.emplace_back(names[i], to_string(rows.back().x(static_cast<Eigen::Index>(i))));
-  r.t_reached = to_string(rows.back().t);
+    r.invariants.push_back({first->invariants[q].name, to_string(first->invariants[q].values[0]),
+                            to_string(last->invariants[q].values[0]), first->invariants[q].zero_in_truth, worst[q]});
+  for (std::size_t i = 0; i < names.size(); ++i) r.final_state.emplace_back(names[i], to_string(last->x(static_cast<Eigen::Index>(i))));
+  r.t_reached = to_string(last->t);
   r.steps = st.steps;
   r.seconds = st.seconds;
   r.min_step = st.min_step;
   r.max_step = st.max_step;
-  return write_simulate(r, o);
+  return r;
 }
 
 /// The contacts a motion judges: each one's name and mu, --mu in place of the scene's (empty:
 /// the model has none).
 template <class P>
-std::vector<std::pair<std::string, std::string>> contacts_to_judge(const P& prob, const motion_options& o) {
+std::vector<std::pair<std::string, std::string>> contacts_to_judge(const P& prob, const settings& o) {
   std::vector<std::pair<std::string, std::string>> contacts;
   if constexpr (requires { prob.contacts(); }) contacts = prob.contacts();
   if (o.mu)
@@ -212,13 +223,10 @@ std::vector<std::pair<std::string, std::string>> contacts_to_judge(const P& prob
   return contacts;
 }
 
-template <Scalar I>
-std::string bounds(const I& x) {
-  return lower_string(x) + "," + upper_string(x);
-}
 
 template <Scalar I, class P>
-motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene_input& scene, const motion_options& o) {
+enclose_report enclose_problem(const P& prob, const vector_t<I>& x0, const scene_input& scene, const settings& o,
+                               row_sink& sink) {
   const I t_end = from_decimal<I>(o.t_end);
   const int order = o.order.value_or(default_order<I>());
   const double tol = o.tol.value_or(default_tol<I>());
@@ -233,7 +241,8 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
     header.push_back(s + "_over_lo");
     header.push_back(s + "_over_hi");
   }
-  std::ostringstream body, dat;
+  std::ostringstream dat;
+  long count = 0;
   bool first = true;
   double worst_end = 0;
   std::vector<std::string> group_header;
@@ -241,7 +250,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   std::vector<std::string> value_names;
   std::size_t result_values = 0;  // value_names: the results' first, then the invariants'
   vector_t<I> last_end = reported(prob, x0);
-  progress_meter meter("enclose", approx_double(t_end), o.quiet, o.max_seconds);
+  progress_gate gate(o, approx_double(t_end));
   // The contacts' verdicts (contact_track.hpp), when the scene has contacts.
   std::vector<contact_track<I>> tracks;
   for (const auto& [name, mu] : contacts_to_judge(prob, o)) {
@@ -252,6 +261,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
     tracks.push_back(std::move(c));
   }
   if (o.mu && tracks.empty()) throw input_error("--mu: the scene has no contacts to judge (SCENES.md, \"contacts\")");
+  if (!tracks.empty()) sink.columns("contacts", contact_columns());
   auto contact_at = [&](const vector_t<I>& x, const std::string& name) {
     std::vector<ode::named_values<I>> r;
     try {
@@ -261,7 +271,6 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
     }
     return find_contact(r, name);
   };
-  std::ostringstream contact_csv, contact_dat;
   std::string contact_stop;  // --until-contact-fails: why the run stops after this step
   vector_t<I> step_start = x0;
   std::string t_reached = "0";  // the last step's end, rounded down
@@ -279,19 +288,26 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
             group_header.push_back(nm + "_hi");
           }
           worst_over.assign(names.size(), 0.0);
+          std::vector<std::string> columns = header;
+          columns.insert(columns.end(), group_header.begin(), group_header.end());
+          sink.columns("steps", columns);
           first = false;
         }
-        body << lower_string(s.t0) << "," << upper_string(s.t1);
+        std::vector<std::string> cells{lower_string(s.t0), upper_string(s.t1)};
+        auto bounds = [&](const I& x) {
+          cells.push_back(lower_string(x));
+          cells.push_back(upper_string(x));
+        };
         t_reached = lower_string(s.t1);
         const vector_t<I> end = reported(prob, s.end), over = reported(prob, s.over);
-        for (Eigen::Index i = 0; i < n; ++i) body << "," << bounds(end(i));
-        for (Eigen::Index i = 0; i < n; ++i) body << "," << bounds(over(i));
+        for (Eigen::Index i = 0; i < n; ++i) bounds(end(i));
+        for (Eigen::Index i = 0; i < n; ++i) bounds(over(i));
         std::size_t v = 0;
         double wr = 0;  // the invariants' largest width over the step (their uncertainty: constant in truth)
         auto emit_group = [&](const std::vector<ode::named_values<I>>& g, bool invariant) {
           for (const auto& nv : g)
             for (const I& x : nv.values) {
-              body << "," << bounds(x);
+              bounds(x);
               const double w = approx_double(I(scalar_traits<I>::width(x)));
               worst_over[v] = std::max(worst_over[v], w);
               if (invariant) wr = std::max(wr, w);
@@ -300,7 +316,8 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
         };
         emit_group(s.results, false);
         emit_group(s.invariants, true);
-        body << "\n";
+        sink.row("steps", cells);
+        ++count;
         const double we = ode::detail::max_width(end);
         worst_end = std::max(worst_end, we);
         dat << approx_double(s.t1) << " " << std::max(we, 1e-300) << " " << std::max(wr, 1e-300) << "\n";
@@ -308,7 +325,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
         for (auto& c : tracks) {
           const contact_values<I> over = find_contact(s.results, c.name);
           const bool failed_before = c.any_fails;
-          c.step(s.t0, s.t1, step_start, s.end, over, contact_at(s.end, c.name), contact_csv);
+          sink.row("contacts", c.step(s.t0, s.t1, step_start, s.end, over, contact_at(s.end, c.name)));
           if (o.until_contact_fails && !failed_before && c.any_fails && contact_stop.empty())
             contact_stop = "contact " + c.name + " fails (--until-contact-fails) by t = " + upper_string(*c.steps.back().fails_at);
         }
@@ -316,7 +333,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
       },
       [&](double f) {
         if (!contact_stop.empty()) throw ode::run_stopped(contact_stop);
-        meter(f);
+        gate(f);
       });
   // Undecided steps enclosed again in 8 pieces; then --locate: each failing contact's first
   // failure narrowed by enclosing again from its last holding state over shorter horizons.
@@ -333,7 +350,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
     c.finish(x0);
     if (o.locate) c.locate(*o.locate, run, at);
   }
-  // The report (motion_output.hpp): every number as text, or a double for the plots.
+  // The report: every number as text, or a double for the plots.
   enclose_report r;
   r.id = identity_of<I>(scene, order, tol);
   for (const auto& c : tracks) {
@@ -355,14 +372,13 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   }
   r.header = header;
   r.header.insert(r.header.end(), group_header.begin(), group_header.end());
-  r.rows = body.str();
+  r.rows = count;
   r.widths = dat.str();
   r.value_names = value_names;
   r.result_values = result_values;
   r.widest_over = worst_over;
   for (std::size_t i = 0; i < names.size(); ++i) r.final_state.emplace_back(names[i], to_string(last_end(static_cast<Eigen::Index>(i))));
   r.final_width = ode::detail::max_width(last_end);
-  r.contact_rows = contact_csv.str();
   r.contact_stop = contact_stop;
   r.complete = st.complete;
   r.reason = st.reason;
@@ -370,7 +386,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   r.steps = st.steps;
   r.rejected = st.rejected;
   r.seconds = st.seconds;
-  return write_enclose(r, o);
+  return r;
 }
 
 /// `appell validity`: over which range of one field do the scene's contacts hold on [0, T]?
@@ -381,7 +397,7 @@ motion_outcome enclose_problem(const P& prob, const vector_t<I>& x0, const scene
 /// (then `undecided`). The pieces run on the threads of --jobs and, under appell-mpi, on every
 /// rank (pieces.hpp): a piece is rebuilt from its path in the halving tree wherever it runs.
 template <Scalar I, class P>
-motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scene_input& scene, const motion_options& o) {
+validity_report validity_problem(const P& prob, const vector_t<I>& x0, const scene_input& scene, const settings& o) {
   if constexpr (!requires { prob.contacts(); }) {
     throw input_error("validity: the model " + scene.model + " has no contacts (a system file's \"contacts\")");
   } else {
@@ -432,7 +448,7 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
     const auto started = std::chrono::steady_clock::now();
     // One piece, from its path: run on any thread or rank (everything shared is read only).
     const piece_runner run_piece = [&](const std::string& path) {
-      // Upward rounding over the whole piece, as on the thread that opened run_model_motion's
+      // Upward rounding over the whole piece, as on the thread that opened run_model's
       // evaluation scope: a piece runs the same operations on every thread and rank (and interval
       // operations need not read or switch the mode one by one).
       std::optional<upward_rounding> mode;
@@ -467,14 +483,13 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
         }
         return find_contact(r, name);
       };
-      std::ostringstream sink;
       bool out_of_time = false, proved_failure = false;
       vector_t<I> step_start = x;
       const ode::enclose_stats st = ode::enclose(
           model, x, t_end, order, tol, o.max_width, 2,
           [&](const ode::enclosed_step<I>& s) {
             for (auto& c : tracks) {
-              c.step(s.t0, s.t1, step_start, s.end, find_contact(s.results, c.name), contact_at(s.end, c.name), sink);
+              (void)c.step(s.t0, s.t1, step_start, s.end, find_contact(s.results, c.name), contact_at(s.end, c.name));
               proved_failure = proved_failure || c.any_fails;
             }
             step_start = s.end;
@@ -553,33 +568,38 @@ motion_outcome validity_problem(const P& prob, const vector_t<I>& x0, const scen
       return p;
     };
     piece_network here;
-    here.threads = o.jobs;
+    here.threads = std::max(1, o.jobs);
     const piece_network& net = o.pieces ? *o.pieces : here;
     if (net.serve) {  // a rank that runs the pieces it is sent (appell-mpi); the leading rank writes
       net.serve(run_piece);
-      return {0, ""};
+      validity_report served;
+      served.served = true;
+      return served;
     }
-    progress_meter meter("validity", 1.0, o.quiet);
     validity_report r;
-    r.run = run_pieces(run_piece, net, [&](double f) { meter(f); });
+    r.run = run_pieces(run_piece, net, [&](double f) {
+      if (o.progress) o.progress(f);
+    });
     r.id = identity_of<I>(scene, order, tol);
     r.resolution = resolution;
     r.t_end = T;
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     r.threads = std::max(1, net.threads);
     r.processes = net.remote ? net.remote->workers() + 1 : 1;
-    return write_validity(r, o);
+    return r;
   }
 }
 
 template <Scalar T, class P>
-motion_outcome run_problem(const P& prob, const vector_t<T>& x0, const scene_input& scene, const motion_options& o) {
+void run_problem(const P& prob, const vector_t<T>& x0, const scene_input& scene, const run_request& q) {
+  const settings& o = *q.s;
   if constexpr (scalar_traits<T>::is_interval) {
-    if (o.command != "enclose" && o.command != "validity")
+    if (q.kind == run_kind::simulate)
       throw input_error("--scalar: simulate runs point scalars (double, long-double, dd, float128, mpfr); use enclose for " +
                         std::string(scalar_traits<T>::name));
     auto run = [&](const auto& p, const vector_t<T>& x) {
-      return o.command == "validity" ? validity_problem<T>(p, x, scene, o) : enclose_problem<T>(p, x, scene, o);
+      if (q.kind == run_kind::validity) *q.validated = validity_problem<T>(p, x, scene, o);
+      else *q.enclosed = enclose_problem<T>(p, x, scene, o, *q.rows);
     };
     if constexpr (requires { prob.template with_capacity<6>(); }) {
       // A state whose size is known at run time (a system file): its Jacobians and slopes are
@@ -595,64 +615,74 @@ motion_outcome run_problem(const P& prob, const vector_t<T>& x0, const scene_inp
       throw input_error("enclose: the motion's state has " + std::to_string(n) +
                         " components; enclose carries at most 12 (the coordinates, the free speeds and t)");
     } else {
-      return run(prob, x0);
+      run(prob, x0);
     }
   } else {
-    if (o.command != "simulate")
+    if (q.kind != run_kind::simulate)
       throw input_error("--scalar: enclose needs an interval scalar (interval or mpfi), not " + std::string(scalar_traits<T>::name));
-    return simulate_problem<T>(prob, x0, scene, o);
+    *q.simulated = simulate_problem<T>(prob, x0, scene, o, *q.rows);
   }
 }
 
-}  // namespace motion_detail
+}  // namespace detail
 
-/// The motion of Model's scene in T (the model moves: io/model_motion.hpp).
+/// The run `q` asks for, of Model's scene in T (the model moves: io/model_motion.hpp).
 template <class Model, Scalar T>
-motion_outcome run_model_motion(const scene_input& scene, const motion_options& o) {
+void run_model(const scene_input& scene, const run_request& q) {
   if constexpr (!moving_model<Model>) {
-    throw std::logic_error("run_model_motion: model " + scene.model + " does not move");
+    throw std::logic_error("run_model: model " + scene.model + " does not move");
   } else {
-    motion_detail::run_bits = {scalar_traits<T>::precision_bits(), mp_precision_bits()};
+    detail::run_bits = {scalar_traits<T>::precision_bits(), mp_precision_bits()};
     const evaluation_scope<T> scope;
     const auto m = Model::template prepare<T>(scene.as<typename Model::input>());
     const auto [prob, x0] = model_motion<Model>::template start<T>(m);
-    return motion_detail::run_problem<T>(prob, x0, scene, o);
+    detail::run_problem<T>(prob, x0, scene, q);
   }
 }
 
+/// A horizon track of Model's scene in T (motion::track).
 template <class Model, Scalar T>
-horizon_track run_model_horizon_track(const scene_input& scene, const std::string& t_end, const std::string& every,
-                                      bool quiet, const track_settings& settings) {
+horizon_track run_model_track(const scene_input& scene, const std::string& t_end, const std::string& every,
+                              const track_settings& settings, const std::function<void(double)>& progress) {
   horizon_track tr;
   if constexpr (scalar_traits<T>::is_interval) {
     throw input_error("--scalars: the study runs point scalars, not " + std::string(scalar_traits<T>::name));
   } else if constexpr (!moving_model<Model>) {
-    throw std::logic_error("run_model_horizon_track: model " + scene.model + " does not move");
+    throw std::logic_error("run_model_track: model " + scene.model + " does not move");
   } else {
     const evaluation_scope<T> scope;
     tr.scalar = scalar_traits<T>::name;
     tr.bits = scalar_traits<T>::precision_bits();
-    tr.order = settings.order.value_or(motion_detail::default_order<T>());
-    const double tol = settings.tol.value_or(motion_detail::default_tol<T>());
+    tr.order = settings.order.value_or(detail::default_order<T>());
+    const double tol = settings.tol.value_or(detail::default_tol<T>());
     tr.tol = tol;
-    motion_detail::progress_meter meter("horizon (" + tr.scalar + ")", from_decimal<double>(t_end), quiet);
     const auto m = Model::template prepare<T>(scene.as<typename Model::input>());
     const auto [prob, x0] = model_motion<Model>::template start<T>(m);
-    const std::size_t n = motion_detail::reported_names(prob).size();
+    const std::size_t n = detail::reported_names(prob).size();
     const ode::simulate_stats st = ode::simulate(
         prob, x0, from_decimal<T>(t_end), from_decimal<T>(every), tr.order, tol,
         [&](const ode::sample<T>& s) {
           tr.t.push_back(lower_string(s.t));
           std::vector<std::string> v;
-          const vector_t<T> x = motion_detail::reported(prob, s.x);
+          const vector_t<T> x = detail::reported(prob, s.x);
           for (std::size_t i = 0; i < n; ++i) v.push_back(lower_string(x(static_cast<Eigen::Index>(i))));
           tr.x.push_back(std::move(v));
         },
-        [&](double f) { meter(f); });
+        [&](double f) {
+          if (progress) progress(f);
+        });
     tr.steps = st.steps;
     tr.seconds = st.seconds;
   }
   return tr;
 }
 
-}  // namespace appell::cli
+/// Declares the runs of one model in every built scalar, compiled elsewhere (the generated units).
+#define APPELL_DETAIL_EXTERN_RUN(Model, T, name)                                                              \
+  extern template void ::appell::motion::run_model<Model, T>(const ::appell::scene_input&,                    \
+                                                             const ::appell::motion::run_request&);           \
+  extern template ::appell::motion::horizon_track appell::motion::run_model_track<Model, T>(                 \
+      const ::appell::scene_input&, const std::string&, const std::string&, const ::appell::motion::track_settings&, \
+      const std::function<void(double)>&);
+
+}  // namespace appell::motion
