@@ -3,6 +3,7 @@
 #include "linearize_report.hpp"
 
 #include "appell/io/scene.hpp"
+#include "appell/motion/motion.hpp"  // left_out_message
 #include "commands.hpp"
 #include "flags.hpp"
 
@@ -18,8 +19,12 @@ std::string linearize(const linearize_options& o) {
   if (!in.linearize)
     throw input_error(!in.linearize_refusal.empty() ? in.linearize_refusal
                                                     : "linearize: the scene has no \"linearize\" section (SCENES.md)");
+#ifdef APPELL_EVAL_ONLY
+  throw input_error(motion::left_out_message("linearize"));
+#else
   return with_scalar(o.scalar, o.bits,
                      [&]<class T>(std::type_identity<T>) { return linearize_report<T>(in, o.format); });
+#endif
 }
 
 int linearize_command(int argc, char** argv, int first) {

@@ -42,6 +42,11 @@ R with_moving_model(const scene_input& scene, const std::string& command, F&& f,
 
 /// The run `q` in the scalar its settings name, on the scene's model.
 void run(const scene_input& scene, const run_request& q, const char* command) {
+#ifdef APPELL_EVAL_ONLY
+  (void)scene;
+  (void)q;
+  throw input_error(left_out_message(command));
+#else
   std::string scalar = q.s->scalar;
   if (scalar.empty()) scalar = q.kind == run_kind::simulate ? "double" : "interval";
   with_scalar(scalar, q.s->bits, [&]<class T>(std::type_identity<T>) {
@@ -55,6 +60,7 @@ void run(const scene_input& scene, const run_request& q, const char* command) {
           },
           all_models{});
   });
+#endif
 }
 
 /// The settings a run needs, or input_error naming the field.
@@ -63,6 +69,20 @@ void require_horizon(const settings& s) {
 }
 
 }  // namespace
+
+bool motion_built() {
+#ifdef APPELL_EVAL_ONLY
+  return false;
+#else
+  return true;
+#endif
+}
+
+std::string left_out_message(const std::string& command) {
+  return command +
+         ": this build of appell evaluates scenes only (-DAPPELL_EVAL_ONLY=ON, scripts/run.sh's first build); "
+         "scripts/build.sh -DAPPELL_EVAL_ONLY=OFF -DAPPELL_SCALARS=all builds every command (scripts/test.sh does)";
+}
 
 std::string run_identity::bits_text() const {
   return std::to_string(bits) + " bits" + (bits_requested ? " (" + std::to_string(bits_requested) + " requested)" : "");
@@ -108,6 +128,16 @@ validity_report validity(const scene_input& scene, const settings& s) {
 horizon_track track(const scene_input& scene, const std::string& scalar, std::optional<unsigned> bits,
                     const std::string& t_end, const std::string& every, const track_settings& settings,
                     const std::function<void(double)>& progress) {
+#ifdef APPELL_EVAL_ONLY
+  (void)scene;
+  (void)scalar;
+  (void)bits;
+  (void)t_end;
+  (void)every;
+  (void)settings;
+  (void)progress;
+  throw input_error(left_out_message("the motion (horizon, reference --trajectory)"));
+#else
   return with_scalar(scalar, bits, [&]<class T>(std::type_identity<T>) -> horizon_track {
     if constexpr (!scalar_built<T>) {
       throw input_error(left_out_scalar_message("--scalars", scalar_traits<T>::name));
@@ -120,6 +150,7 @@ horizon_track track(const scene_input& scene, const std::string& scalar, std::op
           all_models{});
     }
   });
+#endif
 }
 
 std::string moving_model_names() {
