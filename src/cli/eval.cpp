@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "appell/io/evaluation_text.hpp"
 #include "appell/io/files.hpp"
 #include "appell/io/scene.hpp"
 #include "appell/io/urdf.hpp"
@@ -42,10 +43,7 @@ int eval_command(int argc, char** argv, int first) {
         return read_scene(root);
       };
       const scene_input scene = read();
-      out = with_scalar(scalar, bits, [&]<class T>(std::type_identity<T>) {
-        const evaluation<T> e = evaluate<T>(scene);
-        return format == "json" ? format_json<T>(scene, e) : format_text<T>(scene, e);
-      });
+      out = evaluation_text(scene, scalar, bits, format);
     }
     return print_result(out);
   });

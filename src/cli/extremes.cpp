@@ -18,6 +18,7 @@
 
 #include "appell/studies/accuracy.hpp"
 #include "appell/studies/extreme_sweeps.hpp"
+#include "appell/studies/scalar_runs.hpp"
 #include "commands.hpp"
 #include "flags.hpp"
 #include "figure.hpp"
@@ -28,34 +29,6 @@
 
 namespace appell::cli {
 namespace {
-
-struct outcome {
-  std::string status = "ok";  // ok | refused | bad input
-  double digits = NAN, rel_width = NAN, amplification = NAN;  // amplification: NaN where unmeasured
-  std::string why;
-};
-
-template <class T>
-outcome run(const scene_input& scene, const std::vector<mpfr_value>* ref) {
-  outcome o;
-  try {
-    const evaluation<T> e = evaluate<T>(scene);
-    if (ref) {
-      const studies::accuracy a = studies::measure_accuracy(e, *ref, 616.0);  // 2048 bits ~ 616 digits
-      o.digits = a.digits;
-      o.rel_width = a.rel_width;
-    }
-    for (const auto& c : e.checks)
-      if (c.name == "error_amplification") o.amplification = approx_double(c.values[0]);
-  } catch (const input_error& x) {
-    o.status = "bad input";
-    o.why = x.what();
-  } catch (const std::exception& x) {
-    o.status = "refused";
-    o.why = x.what();
-  }
-  return o;
-}
 
 }  // namespace
 
@@ -95,13 +68,10 @@ int extremes(const extremes_options& o) {
       std::cout << std::left << std::setw(22) << figure(p.x, 4);
       for (const std::string& name : scalars) {
         const bool mp = name.size() > 3 && name.compare(name.size() - 3, 3, "113") == 0;
-        unsigned bits = 0;
-        const outcome out = with_scalar(mp ? name.substr(0, name.size() - 3) : name,
-                                        mp ? std::optional<unsigned>(113) : std::nullopt,
-                                        [&]<class T>(std::type_identity<T>) {
-                                          bits = scalar_traits<T>::precision_bits();
-                                          return run<T>(scene, r);
-                                        });
+        // 2048 bits ~ 616 digits
+        const studies::scalar_outcome out = studies::evaluate_against(
+            scene, r, 616.0, mp ? name.substr(0, name.size() - 3) : name, mp ? std::optional<unsigned>(113) : std::nullopt);
+        const unsigned bits = out.bits;
         csv << w.name << "," << p.param << "," << p.x << "," << name << "," << bits << "," << out.status << ","
             << figure(out.digits, 4) << "," << figure(out.rel_width) << "," << figure(out.amplification) << ",\""
             << out.why << "\"\n";

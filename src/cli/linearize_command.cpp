@@ -1,9 +1,7 @@
 #include "linearize_command.hpp"
 
-#include "linearize_report.hpp"
-
 #include "appell/io/scene.hpp"
-#include "appell/motion/motion.hpp"  // left_out_message
+#include "appell/models/system_linearization.hpp"
 #include "commands.hpp"
 #include "flags.hpp"
 
@@ -15,16 +13,7 @@ std::string linearize(const linearize_options& o) {
   const scene_input scene = read_scene_file(o.scene);
   if (scene.model != "system")
     throw input_error("model: linearize needs a system file (model \"system\"), not '" + scene.model + "'");
-  const system_input& in = scene.as<system_input>();
-  if (!in.linearize)
-    throw input_error(!in.linearize_refusal.empty() ? in.linearize_refusal
-                                                    : "linearize: the scene has no \"linearize\" section (SCENES.md)");
-#ifdef APPELL_EVAL_ONLY
-  throw input_error(motion::left_out_message("linearize"));
-#else
-  return with_scalar(o.scalar, o.bits,
-                     [&]<class T>(std::type_identity<T>) { return linearize_report<T>(in, o.format); });
-#endif
+  return linearization_text(scene.as<system_input>(), o.scalar, o.bits, o.format);
 }
 
 int linearize_command(int argc, char** argv, int first) {

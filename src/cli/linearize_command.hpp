@@ -18,10 +18,6 @@ struct linearize_options {
   std::string format = "json";
 };
 
-/// The report in scalar T, formatted (linearize_report.hpp).
-template <Scalar T>
-std::string linearize_report(const system_input& in, const std::string& format);
-
 /// Reads the scene and prints the report; the exit status of the one-line contract.
 std::string linearize(const linearize_options& o);
 

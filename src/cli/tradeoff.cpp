@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "appell/studies/accuracy.hpp"
+#include "appell/studies/scalar_runs.hpp"
 #include "commands.hpp"
 #include "flags.hpp"
 #include "figure.hpp"
@@ -53,41 +54,19 @@ struct contestant {
   std::function<void()> batch;  ///< runs r.batch evaluations
 };
 
-// Called inside with_scalar: for mpfr and mpfi the precision is already set.
-template <class T>
-contestant enter(const scene_input& scene, const std::vector<mpfr_value>& ref) {
+// One scalar entered: its row and its batch (studies::prepare_timing).
+contestant enter(const scene_input& scene, const std::vector<mpfr_value>& ref, const std::string& scalar,
+                 std::optional<unsigned> bits) {
+  // 4096 bits ~ 1233 digits
+  const studies::timed_scalar t = studies::prepare_timing(scene, ref, 1233.0, scalar, bits);
   contestant c;
-  c.r.scalar = scalar_traits<T>::name;
-  c.r.bits = scalar_traits<T>::precision_bits();
-  const unsigned bits = scalar_traits<T>::runtime_precision ? mp_precision_bits() : 0;
-  try {
-    auto prepared = std::make_shared<prepared_scene<T>>(prepare<T>(scene));
-    const studies::accuracy a = studies::measure_accuracy(compute<T>(*prepared), ref, 1233.0);  // 4096 bits ~ 1233 digits
-    c.r.digits = a.digits;
-    c.r.rel_width = a.rel_width;
-    auto run = [prepared, bits](long n) {
-      std::optional<mp_precision_scope> s;
-      if (bits) s.emplace(bits);
-      for (long i = 0; i < n; ++i) (void)compute<T>(*prepared);
-    };
-    // batch size: enough evaluations for >= 1 ms (shorter batches, run right after a
-    // heavy scalar's, paid for cold caches: interval/double read 3.9-4.0 at 100 us
-    // against 3.3-3.5 in appell_bench's long runs)
-    using clock = std::chrono::steady_clock;
-    long batch = 1;
-    for (;;) {
-      const auto t0 = clock::now();
-      run(batch);
-      const double us = std::chrono::duration<double, std::micro>(clock::now() - t0).count();
-      if (us >= 1000 || batch >= (1 << 20)) break;
-      batch *= 2;
-    }
-    run(3 * batch);  // warm-up
-    c.r.batch = batch;
-    c.batch = [run, batch] { run(batch); };
-  } catch (const std::exception& e) {
-    c.r.note = e.what();
-  }
+  c.r.scalar = t.scalar;
+  c.r.bits = t.bits;
+  c.r.digits = t.digits;
+  c.r.rel_width = t.rel_width;
+  c.r.batch = t.batch;
+  c.r.note = t.note;
+  c.batch = t.run_batch;
   return c;
 }
 
@@ -116,8 +95,7 @@ int tradeoff(const tradeoff_options& o) {
               "preparing " + std::to_string(j + 1) + "/" + std::to_string(jobs.size()) + ", " + jobs[j].name +
                   (jobs[j].bits ? " " + std::to_string(jobs[j].bits) : std::string()));
     const std::optional<unsigned> bits = jobs[j].bits ? std::optional<unsigned>(jobs[j].bits) : std::nullopt;
-    field.push_back(with_scalar(jobs[j].name, bits,
-                                [&]<class T>(std::type_identity<T>) { return enter<T>(scene, ref); }));
+    field.push_back(enter(scene, ref, jobs[j].name, bits));
   }
   // Round robin: each repetition times one batch of every scalar in turn, so a
   // slow spell of the machine falls on all of them and the ratios stay fair.

@@ -12,6 +12,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "appell/build_options.hpp"
 #include "appell/motion/engine.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/standard_scalars.hpp"
@@ -69,20 +70,6 @@ void require_horizon(const settings& s) {
 }
 
 }  // namespace
-
-bool motion_built() {
-#ifdef APPELL_EVAL_ONLY
-  return false;
-#else
-  return true;
-#endif
-}
-
-std::string left_out_message(const std::string& command) {
-  return command +
-         ": this build of appell evaluates scenes only (-DAPPELL_EVAL_ONLY=ON, scripts/run.sh's first build); "
-         "scripts/build.sh -DAPPELL_EVAL_ONLY=OFF -DAPPELL_SCALARS=all builds every command (scripts/test.sh does)";
-}
 
 std::string run_identity::bits_text() const {
   return std::to_string(bits) + " bits" + (bits_requested ? " (" + std::to_string(bits_requested) + " requested)" : "");

@@ -207,10 +207,4 @@ std::optional<motion_closed_form> closed_form_of(const scene_input& scene);
 /// The models that move, in the registry's order ("euler_body, heavy_top, ...").
 std::string moving_model_names();
 
-/// Whether this build has the motion (a build of the evaluation alone, CMake's APPELL_EVAL_ONLY,
-/// leaves it and linearize out: the calls above then throw input_error with left_out_message).
-bool motion_built();
-/// "COMMAND: this build of appell evaluates scenes only (...); ... builds every command".
-std::string left_out_message(const std::string& command);
-
 }  // namespace appell::motion

@@ -1,15 +1,19 @@
-// linearize_report<T> (src/cli/linearize_command.hpp): the report of linearize_scene<T>
-// (computed in the library, one unit per scalar) as JSON or text.
-#pragma once
+// The report of `appell linearize` (models/system_linearization.hpp): linearize_scene<T>
+// (computed in the library's generated units, one per scalar) as JSON or text, in the scalar
+// named at run time.
+#include "appell/models/system_linearization.hpp"
 
 #include <sstream>
 
-#include "linearize_command.hpp"
+#include "appell/build_options.hpp"
+#include "appell/scalar/standard_scalars.hpp"
 
-namespace appell::cli {
+namespace appell {
+
+namespace {
 
 template <Scalar T>
-std::string linearize_report(const system_input& in, const std::string& format) {
+std::string report_in(const system_input& in, const std::string& format) {
   const linearization_report<T> report = linearize_scene<T>(in);
   const linearize_input& li = *in.linearize;
   const system_definition& d = *in.def;
@@ -114,4 +118,21 @@ std::string linearize_report(const system_input& in, const std::string& format) 
   return s.str();
 }
 
-}  // namespace appell::cli
+}  // namespace
+
+std::string linearization_text(const system_input& in, const std::string& scalar, std::optional<unsigned> bits,
+                              const std::string& format) {
+  if (format != "json" && format != "text") throw input_error("--format: expected json or text, got '" + format + "'");
+  if (!in.linearize)
+    throw input_error(!in.linearize_refusal.empty() ? in.linearize_refusal
+                                                    : "linearize: the scene has no \"linearize\" section (SCENES.md)");
+#ifdef APPELL_EVAL_ONLY
+  (void)scalar;
+  (void)bits;
+  throw input_error(left_out_message("linearize"));
+#else
+  return with_scalar(scalar, bits, [&]<class T>(std::type_identity<T>) { return report_in<T>(in, format); });
+#endif
+}
+
+}  // namespace appell

@@ -1,0 +1,36 @@
+// Certified reference values (`appell reference`, docs/reference-values.md): one state of a scene
+// evaluated in an interval scalar, each result's components as a quantity an engine is scored
+// against: its enclosure's bounds rounded outward to decimal, the double nearest the enclosure
+// and that double's error bound, and the tolerance a double-precision engine is held to (from the
+// problem's conditioning and appell's own interval<double> enclosure).  Scalar-free at its
+// boundary: the scalar by name; compiled once (src/studies/certify.cpp).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "appell/io/scene.hpp"
+
+namespace appell {
+
+/// One quantity of one state: a result's component ("pivot_force[0]"), or a derived value's.
+struct certified_quantity {
+  std::string name, lower, upper, nearest_double, rel_error_bound, tolerance;
+  bool decided = false;  ///< every point of [lower, upper] rounds to nearest_double
+  bool derived = false;  ///< of the derived state (evaluation::derived), not a result
+};
+
+/// A state's quantities, results first, then the derived values, and the state's
+/// error_amplification (io/amplification.hpp).
+struct certified_state {
+  double amplification = 0;
+  std::vector<certified_quantity> quantities;
+};
+
+/// The scene's state certified in `scalar` ("interval", or "mpfi" at `bits`, default 256).
+/// input_error for another scalar or a scene it refuses; certification_error or domain_error
+/// where the enclosure cannot be formed.
+certified_state certify(const scene_input& scene, const std::string& scalar, std::optional<unsigned> bits = std::nullopt);
+
+}  // namespace appell
