@@ -65,7 +65,6 @@ int score(const score_options& o) {
                                              "decided", "rel_error_bound", "tolerance", "reason"};
   if (ref.header != expected) throw input_error(ref_path + " line 1: not a reference.csv written by appell reference");
   std::map<std::pair<std::string, std::string>, reference_value> values;
-  std::map<std::string, int> quantity_names;
   std::vector<std::string> reference_quantities;  ///< every quantity of the reference, in its order
   std::map<std::string, bool> state_certified;
   std::vector<std::string> certified_states;  ///< in the reference's order
@@ -83,7 +82,6 @@ int score(const score_options& o) {
     if (row[8] == "inf") v.tolerance_finite = false;
     else decimal_to_mpfr(row[8], v.tolerance, MPFR_RNDU);
     values.emplace(std::make_pair(row[0], row[1]), std::move(v));
-    quantity_names.emplace(row[1], static_cast<int>(quantity_names.size()));
   }
   const csv_table other = read_csv(o.other, "the values to score");
   if (other.header.empty() || other.header[0] != "state")
