@@ -115,12 +115,7 @@ int horizon(const horizon_options& given) {
   std::optional<progress> line;
   auto shown = [&](const std::string& what) -> std::function<void(double)> {
     line.emplace(what, o.quiet);
-    return [&line, t_end](double fraction) {
-      if (!line->due()) return;
-      char detail[96];
-      std::snprintf(detail, sizeof detail, "t = %.6g of %.6g", fraction * t_end, t_end);
-      line->show(fraction, detail);
-    };
+    return [&line, t_end](double fraction) { line->show_time(fraction, t_end); };
   };
   std::vector<motion::horizon_track> tracks;
   for (const auto& s : o.scalars)

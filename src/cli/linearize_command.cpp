@@ -8,8 +8,6 @@
 namespace appell::cli {
 
 std::string linearize(const linearize_options& o) {
-  if (o.format != "json" && o.format != "text")
-    throw input_error("--format: expected json or text, got '" + o.format + "'");
   const scene_input scene = read_scene_file(o.scene);
   if (scene.model != "system")
     throw input_error("model: linearize needs a system file (model \"system\"), not '" + scene.model + "'");

@@ -157,12 +157,7 @@ int motion(const motion_options& given) {
   // fraction of its range decided).
   const double shown_horizon = o.command == "validity" ? 1.0 : horizon;
   progress line(o.command, o.quiet);
-  o.progress = [&](double fraction) {
-    if (!line.due()) return;
-    char detail[96];
-    std::snprintf(detail, sizeof detail, "t = %.6g of %.6g", fraction * shown_horizon, shown_horizon);
-    line.show(fraction, detail);
-  };
+  o.progress = [&](double fraction) { line.show_time(fraction, shown_horizon); };
   motion_outcome r;
   if (o.command == "simulate") {
     csv_rows rows;

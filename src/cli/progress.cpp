@@ -50,4 +50,11 @@ void progress::show(double fraction, const std::string& detail) {
   std::cerr << "\r" << line << std::string(pad, ' ') << std::flush;
 }
 
+void progress::show_time(double fraction, double horizon) {
+  if (!due()) return;
+  char detail[96];
+  std::snprintf(detail, sizeof detail, "t = %.6g of %.6g", fraction * horizon, horizon);
+  show(fraction, detail);
+}
+
 }  // namespace appell::cli

@@ -19,6 +19,9 @@ class progress {
   /// Reports `fraction` (0 to 1) of the work done, `detail` saying what that is ("t = 3.1 of
   /// 10", "1200/100000 states, 950 per second").  Cheap when nothing is due.
   void show(double fraction, const std::string& detail);
+  /// A motion's progress: "t = 3.1 of 10" for `fraction` of [0, horizon] (nothing formed
+  /// when no line is due).
+  void show_time(double fraction, double horizon);
   /// Whether a line would be printed now (to skip forming `detail` otherwise).
   bool due() const;
   /// Erases the line (the work is over; also done by the destructor).

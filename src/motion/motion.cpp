@@ -50,16 +50,15 @@ void run(const scene_input& scene, const run_request& q, const char* command) {
 #else
   std::string scalar = q.s->scalar;
   if (scalar.empty()) scalar = q.kind == run_kind::simulate ? "double" : "interval";
+  // with_scalar refuses a scalar the build left out, without instantiating the lambda in it
   with_scalar(scalar, q.s->bits, [&]<class T>(std::type_identity<T>) {
-    // with_scalar has refused a scalar the build left out; the branch keeps it uninstantiated
-    if constexpr (scalar_built<T>)
-      with_moving_model<bool>(
-          scene, command,
-          [&]<class Model>(std::type_identity<Model>) {
-            run_model<Model, T>(scene, q);
-            return true;
-          },
-          all_models{});
+    with_moving_model<bool>(
+        scene, command,
+        [&]<class Model>(std::type_identity<Model>) {
+          run_model<Model, T>(scene, q);
+          return true;
+        },
+        all_models{});
   });
 #endif
 }
@@ -125,17 +124,11 @@ horizon_track track(const scene_input& scene, const std::string& scalar, std::op
   (void)progress;
   throw input_error(left_out_message("the motion (horizon, reference --trajectory)"));
 #else
-  return with_scalar(scalar, bits, [&]<class T>(std::type_identity<T>) -> horizon_track {
-    if constexpr (!scalar_built<T>) {
-      throw input_error(left_out_scalar_message("--scalars", scalar_traits<T>::name));
-    } else {
-      return with_moving_model<horizon_track>(
-          scene, "horizon",
-          [&]<class Model>(std::type_identity<Model>) {
-            return run_model_track<Model, T>(scene, t_end, every, settings, progress);
-          },
-          all_models{});
-    }
+  return with_scalar(scalar, bits, [&]<class T>(std::type_identity<T>) {
+    return with_moving_model<horizon_track>(
+        scene, "horizon",
+        [&]<class Model>(std::type_identity<Model>) { return run_model_track<Model, T>(scene, t_end, every, settings, progress); },
+        all_models{});
   });
 #endif
 }
@@ -175,12 +168,13 @@ std::optional<motion_closed_form> closed_form_of(const scene_input& scene) {
 
 namespace {
 
-/// The scalar's fields, as `appell eval`'s: "bits" the bits used, "bits_requested" where they
-/// differ from the bits asked for.
-void scalar_fields(nlohmann::json& j, const run_identity& id) {
-  j["scalar"] = id.scalar;
-  j["bits"] = id.bits;
+/// What every summary opens with: the command, the scene and its model, and the scalar's fields
+/// as `appell eval`'s ("bits" the bits used, "bits_requested" where they differ from the bits
+/// asked for).
+nlohmann::json summary_head(const char* command, const std::string& scene, const run_identity& id) {
+  nlohmann::json j = {{"command", command}, {"scene", scene}, {"model", id.model}, {"scalar", id.scalar}, {"bits", id.bits}};
   if (id.bits_requested) j["bits_requested"] = id.bits_requested;
+  return j;
 }
 
 nlohmann::json state_object(const std::vector<std::pair<std::string, std::string>>& state) {
@@ -199,8 +193,7 @@ nlohmann::json summary(const simulate_report& r, const settings& s, const std::s
                    {"final", q.final},
                    {q.zero_in_truth ? "max_abs_value" : "max_relative_drift", q.worst}});
   const bool complete = r.failure.empty();
-  nlohmann::json j = {{"command", "simulate"}, {"scene", scene}, {"model", r.id.model}};
-  scalar_fields(j, r.id);
+  nlohmann::json j = summary_head("simulate", scene, r.id);
   j.update({{"order", r.id.order},
             {"tol", r.id.tol},
             {"t_end", s.t_end},
@@ -236,8 +229,7 @@ nlohmann::json summary(const enclose_report& r, const settings& s, const std::st
   }
   nlohmann::json widths = nlohmann::json::object();
   for (std::size_t i = 0; i < r.value_names.size(); ++i) widths[r.value_names[i]] = r.widest_over[i];
-  nlohmann::json j = {{"command", "enclose"}, {"scene", scene}, {"model", r.id.model}};
-  scalar_fields(j, r.id);
+  nlohmann::json j = summary_head("enclose", scene, r.id);
   j.update({{"order", r.id.order},
             {"tol", r.id.tol},
             {"t_end", s.t_end},
@@ -276,8 +268,7 @@ nlohmann::json summary(const validity_report& r, const settings& s, const std::s
     last = v;
     piece_seconds += p.seconds;
   }
-  nlohmann::json j = {{"command", "validity"}, {"scene", scene}, {"model", r.id.model}};
-  scalar_fields(j, r.id);
+  nlohmann::json j = summary_head("validity", scene, r.id);
   j.update({{"field", s.vary_field},
             {"range", {s.vary_lo, s.vary_hi}},
             {"t_end", s.t_end},
