@@ -61,7 +61,7 @@ auto closed(const top_on_cone_model::prepared<T>& m) {
   static const independent::example_one_cone<T> cone;
   T f, fp, fpp;
   cone.all(m.theta, f, fp, fpp);
-  const heavy_top<T>& t = m.top;
+  const symmetric_top<T>& t = m.top;
   return independent::top_on_cone(t.A, t.C, t.mass, t.l, t.g, m.theta, m.theta_dot, m.phi_dot, f, fp, fpp);
 }
 

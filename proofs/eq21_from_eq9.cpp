@@ -15,7 +15,7 @@
 
 #include "appell/dynamics/gibbs_appell.hpp"
 #include "appell/scalar/rational.hpp"
-#include "appell/scenes/free_body.hpp"
+#include "appell/dynamics/free_body.hpp"
 #include "eq9.hpp"
 #include "proof.hpp"
 

@@ -10,8 +10,8 @@
 #include "appell/dynamics/speeds.hpp"
 #include "appell/dynamics/virtual_work.hpp"
 #include "appell/scalar/rational.hpp"
-#include "appell/scenes/euler_body.hpp"
-#include "appell/scenes/free_body.hpp"
+#include "appell/models/euler_body.hpp"
+#include "appell/dynamics/free_body.hpp"
 #include "proof.hpp"
 
 using namespace appell;

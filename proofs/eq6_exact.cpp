@@ -22,8 +22,8 @@
 #include "appell/dynamics/acceleration_energy.hpp"
 #include "appell/dynamics/euler_theorem.hpp"
 #include "appell/scalar/rational.hpp"
-#include "appell/scenes/euler_body.hpp"
-#include "appell/scenes/free_body.hpp"
+#include "appell/models/euler_body.hpp"
+#include "appell/dynamics/free_body.hpp"
 #include "eq9.hpp"
 #include "proof.hpp"
 

@@ -24,7 +24,7 @@ inline void for_each_sub_box(int splits, const std::function<void(const top_box_
   const scene_input s = read_scene_file(APPELL_SOURCE_DIR + "/data/scenes/top_on_cone.json");
   const auto& in = s.as<top_on_cone_input>();
   using T = interval;
-  const heavy_top<T> top{value<T>(in.A), value<T>(in.C), value<T>(in.mass), value<T>(in.l), value<T>(in.gravity)};
+  const symmetric_top<T> top{value<T>(in.A), value<T>(in.C), value<T>(in.mass), value<T>(in.l), value<T>(in.gravity)};
   const expression_cone<T> cone{compiled_expression<T>(*in.f), compiled_expression<T>(*in.fprime),
                                 compiled_expression<T>(*in.fsecond)};
   auto piece = [&](const char* lo, const char* hi, int i, int n) {  // i-th of n equal pieces of [lo, hi]
@@ -55,7 +55,7 @@ inline void for_each_sub_box(int splits, const std::function<void(const top_box_
           r.couple = motion.couple;
           vector_t<T> q(3);
           q << state.psi, state.theta, state.phi;
-          heavy_top<T>::axes(q, r.n, r.ez);
+          symmetric_top<T>::axes(q, r.n, r.ez);
           r.e3 = vec3<T>(T(0), T(0), T(1));
           visit(r);
         }

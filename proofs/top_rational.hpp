@@ -1,5 +1,5 @@
 // proofs/top_rational.hpp -- the top of Example I in exact rational arithmetic,
-// run through the shipped code: appell::heavy_top and appell::top_on_cone_motion
+// run through the shipped code: appell::symmetric_top and appell::top_on_cone_motion
 // with the coordinates tau_psi = tan(psi/2), tau_theta = tan(theta/2)
 // (appell::half_angle_tangents: sin = 2 tau / (1 + tau^2), cos = (1 - tau^2) / (1 + tau^2),
 // tau' = (1 + tau^2)/2 angle'), speeds still (psi', theta', phi').  The cone is
@@ -12,12 +12,12 @@
 #pragma once
 
 #include "appell/scalar/rational.hpp"
-#include "appell/scenes/top_on_cone.hpp"
+#include "appell/models/top_on_cone.hpp"
 
 namespace appell::proof {
 
 using Q = rational_q;
-using rational_top = heavy_top<Q, half_angle_tangents>;
+using rational_top = symmetric_top<Q, half_angle_tangents>;
 
 /// The shipped cone, f' and f'' as functions of tau_theta.
 struct rational_cone {

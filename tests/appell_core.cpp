@@ -17,7 +17,7 @@
 #include "appell/reactions/wrench.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/format.hpp"
-#include "appell/scenes/top_on_cone.hpp"
+#include "appell/models/top_on_cone.hpp"
 
 using namespace appell;
 
@@ -27,7 +27,7 @@ double uniform(double a, double b) { return std::uniform_real_distribution<doubl
 
 // The heavy top without constraint: a rich enough system (trigonometric kinematics, gravity).
 template <class T>
-heavy_top<T> top() {
+symmetric_top<T> top() {
   return {from_decimal<T>("0.08"), from_decimal<T>("0.02"), from_decimal<T>("1.5"), from_decimal<T>("0.2"),
           from_decimal<T>("9.81")};
 }

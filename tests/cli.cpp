@@ -20,7 +20,7 @@
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/json.hpp"
-#include "appell/ode/closed_forms.hpp"
+#include "appell/models/euler_body.hpp"  // euler_free_body_solution
 #include "appell/scalar/standard_scalars.hpp"
 
 namespace {

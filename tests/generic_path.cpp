@@ -18,9 +18,9 @@
 #include <random>
 
 #include "appell/scalar/standard_scalars.hpp"
-#include "appell/scenes/euler_body.hpp"
-#include "appell/scenes/rolling_sphere.hpp"
-#include "appell/scenes/top_on_cone.hpp"
+#include "appell/models/euler_body.hpp"
+#include "appell/models/rolling_sphere.hpp"
+#include "appell/models/top_on_cone.hpp"
 #include "independent/hand_derived.hpp"
 #include "../examples/planar_chain.hpp"
 
@@ -123,10 +123,10 @@ void differentiation_on_random_states(int states) {
     const euler_system<T> euler{{vec3<T>(T(uniform(1, 2)), T(uniform(1, 2)), T(uniform(1, 2))),
                                  vec3<T>(T(uniform(-1, 1)), T(uniform(-1, 1)), T(uniform(-1, 1)))}};
     expect_same_differentiation<T>(euler, q3, u3, t);
-    const heavy_top<T> top{T(uniform(0.05, 0.2)), T(uniform(0.01, 0.1)), T(uniform(0.5, 2)), T(uniform(0.05, 0.3)),
+    const symmetric_top<T> top{T(uniform(0.05, 0.2)), T(uniform(0.01, 0.1)), T(uniform(0.5, 2)), T(uniform(0.05, 0.3)),
                            T(9.81)};
     expect_same_differentiation<T>(top, q3, u3, t);
-    const heavy_top_resal<T> resal{top.A, top.C, top.mass, top.l, top.g};
+    const symmetric_top_resal<T> resal{top.A, top.C, top.mass, top.l, top.g};
     expect_same_differentiation<T>(resal, q3, u3, t);
     const hand_cone<T> cone;
     expect_same_differentiation<T>(change_speeds(resal, cone_speeds<hand_cone<T>>{&cone}, 3), q3, u3, t);
@@ -268,7 +268,7 @@ BOOST_AUTO_TEST_CASE(generic_path_encloses_and_agrees_with_the_closed_forms) {
       const double th = uniform(0.3, 2.8), thd = uniform(-3, 3), phd = uniform(-50, 50);
       auto run = [&]<class T>(std::type_identity<T>) {
         const hand_cone<T> cone;
-        const heavy_top<T> top{T(A), T(C), T(m), T(l), T(9.81)};
+        const symmetric_top<T> top{T(A), T(C), T(m), T(l), T(9.81)};
         const top_on_cone_state<T> s{cone.f(T(th)), T(th), T(0), T(thd), T(phd)};
         return top_on_cone_motion(top, cone, s);
       };

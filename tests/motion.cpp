@@ -19,7 +19,6 @@
 #include <boost/multiprecision/mpfr.hpp>
 #include <random>
 
-#include "appell/ode/closed_forms.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/models/euler_body.hpp"
 #include "appell/models/heavy_top.hpp"
@@ -182,7 +181,7 @@ BOOST_AUTO_TEST_CASE(heavy_top_invariants_stay_inside_their_initial_values) {
       });
   BOOST_TEST_REQUIRE(st.complete, st.reason);
   BOOST_TEST_MESSAGE("heavy_top: energy and momenta over " << steps << " steps to T = 10, widest " << widest);
-  // theta and theta' at T = 10 hold the nutation in Jacobi elliptic functions (closed_forms.hpp)
+  // theta and theta' at T = 10 hold the nutation in Jacobi elliptic functions (heavy_top_nutation, models/heavy_top.hpp)
   const ode::heavy_top_nutation<truth_t> nutation(truth_t(1), truth_t(2), truth_t(1), truth_t(1), truth_t("0.5"), truth_t(0),
                                                   truth_t(5));
   const std::array<truth_t, 2> th = nutation.at(truth_t(10));

@@ -16,7 +16,6 @@
 #include <random>
 #include <string>
 
-#include "appell/ode/closed_forms.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/models/euler_body.hpp"
 #include "pendulum_problem.hpp"

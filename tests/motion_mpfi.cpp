@@ -8,7 +8,6 @@
 #include <boost/multiprecision/mpfr.hpp>
 #include <random>
 
-#include "appell/ode/closed_forms.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/scalar/decimal.hpp"

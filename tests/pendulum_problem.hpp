@@ -5,6 +5,7 @@
 // each program that runs it instantiates them.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,9 @@
 #include "appell/dynamics/gibbs_appell.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/taylor.hpp"
+
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/jacobi_elliptic.hpp>
 
 namespace appell::ode {
 
@@ -85,6 +89,27 @@ struct pendulum_problem {
     S s, c;
     sin_cos(x(0), s, c);
     out.push_back({"energy", {S(mass) * S(l) * S(l) * x(1) * x(1) / S(2) - S(mass) * S(g) * S(l) * c}});
+  }
+};
+
+/// The simple pendulum theta'' = -(g/l) sin theta released at rest from theta0 in (0, pi):
+/// sin(theta/2) = k sn(K(k) - w t, k), k = sin(theta0/2), w = sqrt(g/l); theta' from the energy's sign.
+template <class R>
+struct pendulum_solution {
+  R theta0, w;
+  R modulus() const {
+    using std::sin;
+    return sin(theta0 / 2);
+  }
+  R period() const { return 4 * boost::math::ellint_1(modulus()) / w; }
+  /// (theta, theta') at t.
+  std::array<R, 2> at(const R& t) const {
+    using std::asin;
+    R cn, dn;
+    const R k = modulus();
+    const R sn = boost::math::jacobi_elliptic(k, boost::math::ellint_1(k) - w * t, &cn, &dn);
+    // d/dt [2 asin(k sn(u))] with u = K - w t: 2 k cn dn (-w) / sqrt(1 - k^2 sn^2) = -2 k w cn (dn / dn).
+    return {2 * asin(k * sn), -2 * k * w * cn};
   }
 };
 

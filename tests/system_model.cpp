@@ -263,6 +263,8 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused_naming_the_field) {
   expect_refused(replace(base, R"~("l": "0.5")~", R"~("l": "0.5*theta")~"), "parameters.l");
   expect_refused(replace(base, R"~("m": "2")~", R"~("m": "2", "theta": "1")~"), "used twice");
   expect_refused(replace(base, R"~(["theta", "s"])~", R"~(["theta", "t"])~"), "reserved");
+  // the names a projected state's derived results add after the coordinates' and speeds' own
+  expect_refused(replace(base, R"~(["theta", "s"])~", R"~(["theta", "coordinates_moved"])~"), "reserved");
   expect_refused(replace(base, R"~("mass": "m/10")~", R"~("mass": "m - 2")~"), "bodies.bead.mass: must be positive");
   expect_refused(replace(base, R"~("m*l^2/12", "m*l^2/12", "0")~", R"~("1", "1", "3")~"), "triangle inequalities");
   expect_refused(replace(base, R"~("s - 0.3")~", R"~("s - 0.31")~"), "constraint stop does not hold");

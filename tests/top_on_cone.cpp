@@ -175,7 +175,7 @@ void direct_call_matches_eval(const scene_input& scene) {
   std::vector<T> direct;
   {
     const evaluation_scope<T> policy;
-    const heavy_top<T> top{from_decimal<T>(in.A.text), from_decimal<T>(in.C.text), from_decimal<T>(in.mass.text),
+    const symmetric_top<T> top{from_decimal<T>(in.A.text), from_decimal<T>(in.C.text), from_decimal<T>(in.mass.text),
                            from_decimal<T>(in.l.text), from_decimal<T>(in.gravity.text)};
     const expression_cone<T> cone{compiled_expression<T>(*in.f), compiled_expression<T>(*in.fprime),
                                   compiled_expression<T>(*in.fsecond)};
@@ -232,7 +232,7 @@ BOOST_AUTO_TEST_CASE(cotton_with_library_built_speeds_equals_cotton_with_the_pap
   const scene_input s = read_scene_file(APPELL_SOURCE_DIR + "/data/scenes/top_on_cone.json");
   const auto& in = s.as<top_on_cone_input>();
   using T = interval;
-  const heavy_top<T> top{value<T>(in.A), value<T>(in.C), value<T>(in.mass), value<T>(in.l), value<T>(in.gravity)};
+  const symmetric_top<T> top{value<T>(in.A), value<T>(in.C), value<T>(in.mass), value<T>(in.l), value<T>(in.gravity)};
   const T theta = value<T>(in.theta), thd = value<T>(in.theta_dot), phd = value<T>(in.phi_dot);
   vector_t<T> q(3), u(3);
   q << in.f->eval(theta), theta, value<T>(in.phi);

@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "appell/io/json_text.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 #include "flags.hpp"
@@ -242,7 +243,7 @@ int horizon(const horizon_options& given) {
     summary["reference_seconds"] = reference.seconds;
   }
   if (!o.period.empty()) summary["period_given"] = o.period;
-  write_whole(dir, "summary.json", summary.dump(2) + "\n");
+  write_whole(dir, "summary.json", json_text(summary, json_style::indented));
 
   // The plot: each scalar's error (solid) and its Brouwer line (dashed, the same colour), with a
   // key entry saying what the dashed lines are.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "appell/errors.hpp"
+#include "appell/io/json_text.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "plot.hpp"
 #include "write_whole.hpp"
@@ -135,7 +136,7 @@ motion_outcome write_simulate(const motion::simulate_report& r, const csv_rows& 
   const std::filesystem::path dir(o.out);
   std::filesystem::create_directories(dir);
   write_whole(dir, "trajectory.csv", csv_header(r.header) + rows.text("trajectory"));
-  write_whole(dir, "summary.json", summary.dump(2) + "\n");
+  write_whole(dir, "summary.json", json_text(summary, json_style::indented));
   std::string plotted;
   const bool moved = r.rows >= 2;  // at least one step after t = 0
   const bool drifted = std::any_of(r.invariants.begin(), r.invariants.end(), [](const auto& q) { return q.worst > 0; });
@@ -193,7 +194,7 @@ motion_outcome write_enclose(const motion::enclose_report& r, const csv_rows& ro
   std::filesystem::create_directories(dir);
   write_whole(dir, "steps.csv", csv_header(r.header) + steps);
   if (!r.contacts.empty()) write_whole(dir, "contacts.csv", csv_header(motion::contact_columns()) + contact_rows);
-  write_whole(dir, "summary.json", summary.dump(2) + "\n");
+  write_whole(dir, "summary.json", json_text(summary, json_style::indented));
   std::string plotted;
   if (r.rows == 0) {  // nothing to draw: say so, rather than gnuplot's complaint about an empty range
     plotted = " (no plot: the run stopped before any step)";
@@ -270,7 +271,7 @@ motion_outcome write_validity(const motion::validity_report& r, const motion_opt
   const std::filesystem::path dir(o.out);
   std::filesystem::create_directories(dir);
   write_whole(dir, "validity.csv", csv.str());
-  write_whole(dir, "summary.json", summary.dump(2) + "\n");
+  write_whole(dir, "summary.json", json_text(summary, json_style::indented));
   std::string plotted;
   if (done.empty()) {  // nothing decided to draw: say so, rather than gnuplot's complaint about an empty range
     plotted = " (no plot: the run stopped before any piece was decided)";

@@ -29,6 +29,7 @@
 #include "appell/io/scene.hpp"
 #include "appell/io/urdf.hpp"
 #include "appell/io/files.hpp"
+#include "appell/io/json_text.hpp"
 #include "appell/studies/certify.hpp"
 #include "csv.hpp"
 #include "commands.hpp"
@@ -54,61 +55,6 @@ std::string sha256(const std::string& data) {
   for (unsigned int i = 0; i < length; ++i) out << std::hex << std::setw(2) << std::setfill('0') << static_cast<int>(md[i]);
   return out.str();
 }
-
-// ---------------------------------------------------------------------------
-// A state's line of reference.jsonl, written directly: the bytes nlohmann::ordered_json's dump()
-// writes for the same object (the dataset's contract), without building its tree (which took 30%
-// of a state's time in `interval`: docs/reference-values.md).
-
-/// Appends a string as JSON: printable ASCII other than '"' and '\\' as it is (nlohmann's dump
-/// writes those bytes unchanged), anything else through nlohmann's own serializer (escapes, UTF-8 checks).
-void append_json_string(std::string& out, std::string_view v) {
-  // One table lookup a byte (the four comparisons a byte took 7% of a state's instructions).
-  static constexpr auto plain = [] {
-    std::array<bool, 256> t{};
-    for (int c = 0x20; c <= 0x7e; ++c) t[static_cast<std::size_t>(c)] = c != '"' && c != '\\';
-    return t;
-  }();
-  for (const char c : v)
-    if (!plain[static_cast<unsigned char>(c)]) {
-      out += nlohmann::json(std::string(v)).dump();
-      return;
-    }
-  out += '"';
-  out += v;
-  out += '"';
-}
-
-/// A JSON object of serialized values, in insertion order; a key given again replaces its value
-/// in place (as assignment to an ordered_json's key does).
-class json_line {
- public:
-  void add(std::string_view key, std::string value) {
-    for (auto& [k, v] : members_)
-      if (k == key) {
-        v = std::move(value);
-        return;
-      }
-    members_.emplace_back(std::string(key), std::move(value));
-  }
-  bool empty() const { return members_.empty(); }
-  void append_to(std::string& out) const {
-    std::size_t bytes = 2;
-    for (const auto& [k, v] : members_) bytes += k.size() + v.size() + 4;
-    out.reserve(out.size() + bytes);
-    out += '{';
-    for (std::size_t i = 0; i < members_.size(); ++i) {
-      if (i) out += ',';
-      append_json_string(out, members_[i].first);
-      out += ':';
-      out += members_[i].second;
-    }
-    out += '}';
-  }
-
- private:
-  std::vector<std::pair<std::string, std::string>> members_;
-};
 
 /// One state's row of the dataset: its name, its inputs, and what certify found (or why not).
 struct state_record {
@@ -286,35 +232,27 @@ reference_state_output reference_run::compute(std::size_t i) const {
     s.reason = std::string("cannot certify: ") + e.what();
   }
   // The dataset's lines for this state: the same text whichever process computes them. The JSON
-  // line is the bytes nlohmann::ordered_json's dump() gives for the object (its keys in insertion
-  // order, a key given again replacing the value in place: json_line), written straight into the
-  // line when its keys are distinct, which the fixed keys, the states' columns (refused when named
-  // twice) and, in every model, the quantities' names are.
+  // line is written as it is built (json_line_writer: the bytes of the tree's `line` text), every
+  // object's keys distinct but, in a model that names a quantity twice, the quantities' (that
+  // group goes through the tree, which keeps the later value in the first one's place).
   reference_state_output out;
   out.certified = s.certified;
   std::string& csv = out.csv;
   std::string& js = out.jsonl;
   js.reserve(256 + 256 * s.quantities.size());
-  js += "{\"state\":";
-  append_json_string(js, s.name);
-  js += s.certified ? ",\"status\":\"certified\",\"inputs\":{" : ",\"status\":\"refused\",\"inputs\":{";
-  for (std::size_t k = 0; k < s.inputs.size(); ++k) {
-    if (k) js += ',';
-    append_json_string(js, s.inputs[k].first);
-    js += ':';
-    append_json_string(js, s.inputs[k].second);
-  }
-  js += '}';
+  json_line_writer w(js);
+  w.open_object().key("state").string(s.name).key("status").string(s.certified ? "certified" : "refused");
+  w.key("inputs").open_object();
+  for (const auto& [field, value] : s.inputs) w.key(field).string(value);
+  w.close_object();
   if (!s.certified) {
-    js += ",\"reason\":";
-    append_json_string(js, s.reason);
+    w.key("reason").string(s.reason);
     csv += csv_field(s.name);
     csv += ",,refused,,,,,,,";
     csv += csv_field(s.reason);
     csv += '\n';
   } else {
-    js += ",\"error_amplification\":";
-    js += nlohmann::json(s.amplification).dump();
+    w.key("error_amplification").number(s.amplification);
     const std::string state_field = csv_field(s.name);
     for (const certified_quantity& q : s.quantities) {
       csv += state_field;
@@ -332,54 +270,39 @@ reference_state_output reference_run::compute(std::size_t i) const {
       csv += q.tolerance;
       csv += ",\n";
     }
-    // a quantity's object: its keys are distinct, so written in order (json_line's bytes)
-    auto append_quantity = [](std::string& j, const certified_quantity& q) {
-      j += "{\"lower\":";
-      append_json_string(j, q.lower);
-      j += ",\"upper\":";
-      append_json_string(j, q.upper);
-      j += ",\"double\":";
-      append_json_string(j, q.nearest_double);
-      j += q.decided ? ",\"decided\":true" : ",\"decided\":false";
-      if (!q.rel_error_bound.empty()) {
-        j += ",\"rel_error_bound\":";
-        append_json_string(j, q.rel_error_bound);
-      }
-      j += ",\"tolerance\":";
-      append_json_string(j, q.tolerance);
-      j += '}';
+    auto write_quantity = [](json_line_writer& to, const certified_quantity& q) {
+      to.open_object().key("lower").string(q.lower).key("upper").string(q.upper).key("double").string(q.nearest_double);
+      to.key("decided").boolean(q.decided);
+      if (!q.rel_error_bound.empty()) to.key("rel_error_bound").string(q.rel_error_bound);
+      to.key("tolerance").string(q.tolerance).close_object();
     };
     for (const bool derived : {false, true}) {
       std::vector<const certified_quantity*> group;
       for (const certified_quantity& q : s.quantities)
         if (q.derived == derived) group.push_back(&q);
       if (derived && group.empty()) break;  // no "derived" object
-      js += derived ? ",\"derived\":" : ",\"quantities\":";
+      w.key(derived ? "derived" : "quantities");
       bool distinct = true;
       for (std::size_t a = 0; a < group.size() && distinct; ++a)
         for (std::size_t b = a + 1; b < group.size() && distinct; ++b) distinct = group[a]->name != group[b]->name;
       if (distinct) {
-        js += '{';
-        for (std::size_t k = 0; k < group.size(); ++k) {
-          if (k) js += ',';
-          append_json_string(js, group[k]->name);
-          js += ':';
-          append_quantity(js, *group[k]);
-        }
-        js += '}';
-      } else {  // a name given twice: its later value in the place of the first (json_line)
-        json_line object;
-        std::string j;
+        w.open_object();
+        for (const certified_quantity* q : group) write_quantity(w.key(q->name), *q);
+        w.close_object();
+      } else {  // a name given twice: its later value in the place of the first, as the tree does
+        nlohmann::ordered_json object = nlohmann::ordered_json::object();
         for (const certified_quantity* q : group) {
-          j.clear();
-          append_quantity(j, *q);
-          object.add(q->name, j);
+          std::string j;
+          json_line_writer one(j);
+          write_quantity(one, *q);
+          object[q->name] = nlohmann::ordered_json::parse(j);
         }
-        object.append_to(js);
+        w.raw(json_text(object, json_style::line));
       }
     }
   }
-  js += "}\n";
+  w.close_object();
+  js += '\n';
   return out;
 }
 
@@ -442,7 +365,7 @@ int reference_run::write(const std::vector<reference_state_text>& outputs, int p
   std::filesystem::create_directories(dir);
   write_whole_pieces(dir, "reference.csv", csv);
   write_whole_pieces(dir, "reference.jsonl", jsonl);
-  write_whole(dir, "manifest.json", manifest.dump(2) + "\n");
+  write_whole(dir, "manifest.json", json_text(manifest, json_style::indented));
   // The states drawn (--box) or followed (--trajectory), in the format --states reads: an engine
   // computes the same states from this file, and `reference --states DIR/states.csv` certifies
   // them again.  A states file given stays where it is.

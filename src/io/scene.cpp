@@ -46,6 +46,10 @@ void require_angle_in_range(const object_reader& r, const std::string& key, cons
     throw input_error(r.path(key) + ": an angle beyond 2^40 rad, got " + printable(d.text));
 }
 
+std::string detail::component_name(const std::string& name, bool is_vector, std::size_t i) {
+  return is_vector ? name + "[" + std::to_string(i) + "]" : name;
+}
+
 const model_entry& find_model(const std::string& name) {
   std::string known;
   for (const model_entry* m : registered_models()) {

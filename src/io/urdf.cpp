@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 
+#include "appell/io/json_text.hpp"
 #include "appell/io/model.hpp"
 #include "appell/models/system.hpp"
 #include "appell/scalar/decimal.hpp"
@@ -318,25 +319,7 @@ std::string urdf_to_system(const urdf_robot& robot, const urdf_scene_options& o)
       if (j.type != "fixed") acc[names.at(j.name) + "_ddot"] = o.accelerations.at(j.name);
     doc["accelerations"] = acc;
   }
-  std::string text = "{";
-  bool first = true;  // one top-level field per line, bodies one per line: a file a person can read
-  for (auto it = doc.begin(); it != doc.end(); ++it) {
-    text += first ? "" : ",\n ";
-    first = false;
-    text += json(it.key()).dump() + ": ";
-    if (it.key() == "bodies") {
-      text += "{";
-      bool fb = true;
-      for (auto b = it.value().begin(); b != it.value().end(); ++b) {
-        text += (fb ? "\n   " : ",\n   ") + json(b.key()).dump() + ": " + b.value().dump();
-        fb = false;
-      }
-      text += "}";
-    } else {
-      text += it.value().dump();
-    }
-  }
-  return text + "}\n";
+  return json_text(doc, json_style::document);  // a file a person can read: each body on a line
 }
 
 namespace {

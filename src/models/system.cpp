@@ -10,7 +10,7 @@
 // derivative defined, masses positive, inertia tensors positive semidefinite,
 // the state on every constraint, and the constraints independent.  What
 // 256 bits cannot tell from exact is taken as exact (as for the cone of
-// top_on_cone); the scalar the user asks for certifies the rest.
+// Example I's built-in model); the scalar the user asks for certifies the rest.
 #include "system_reading.hpp"
 
 #include <algorithm>
@@ -23,7 +23,10 @@ namespace appell {
 namespace system_reading {
 
 const std::set<std::string>& reserved_names() {
-  static const std::set<std::string> r{"pi", "t", "sin", "cos", "tan", "exp", "log", "sqrt", "rx", "ry", "rz"};
+  // coordinates_moved and speeds_moved: what a projected state's derived results add after the
+  // coordinates' and speeds' names (models/system.hpp)
+  static const std::set<std::string> r{"pi",   "t",  "sin", "cos", "tan", "exp", "log", "sqrt", "rx", "ry", "rz",
+                                       "coordinates_moved", "speeds_moved"};
   return r;
 }
 

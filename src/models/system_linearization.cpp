@@ -1,11 +1,12 @@
 // The report of `appell linearize` (models/system_linearization.hpp): linearize_scene<T>
-// (computed in the library's generated units, one per scalar) as JSON or text, in the scalar
-// named at run time.
+// (computed in the library's generated units, one per scalar) as JSON (io/json_text.hpp's writer)
+// or text, in the scalar named at run time.
 #include "appell/models/system_linearization.hpp"
 
 #include <sstream>
 
 #include "appell/build_options.hpp"
+#include "appell/io/json_text.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 
 namespace appell {
@@ -24,13 +25,7 @@ std::string report_in(const system_input& in, const std::string& format) {
   const auto& critical = report.critical;
   const P from = report.from, to = report.to;
   const bool json = format == "json";
-  auto number = [&](const T& x) {
-    if (!json) return to_string(x);
-    if constexpr (scalar_traits<T>::is_interval)
-      return "{\"lo\": \"" + lower_string(x) + "\", \"hi\": \"" + upper_string(x) + "\"}";
-    else
-      return "{\"value\": \"" + to_string(x) + "\"}";
-  };
+  auto number_of = [](const T& x) { return number_json(printed(x)); };
   auto bound_text = [&](const P& p) { return lower_string(detail::from_bound<T>(p)); };
   const auto& names = d.names;
   auto coordinate = [&](int i) { return names[static_cast<std::size_t>(d.vars.q(i))]; };
@@ -41,58 +36,57 @@ std::string report_in(const system_input& in, const std::string& format) {
     return cs.kind == critical_speed<T>::zero_root ? "zero_root" : "imaginary_pair";
   };
 
-  std::ostringstream s;
   if (json) {
-    s << "{\"model\": \"system\", " << format_scalar_fields<T>() << ",\n  \"coordinates\": [";
-    for (Eigen::Index i = 0; i < m; ++i) s << (i ? ", " : "") << "\"" << coordinate(li.def.coordinates[static_cast<std::size_t>(i)]) << "\"";
-    s << "], \"speed\": \"" << speed_name << "\", \"gravity\": \"" << g_name << "\",\n"
-      << "  \"form\": \"M q'' + v C1 q' + (g K0 + v^2 K2) q = f\",\n";
-    for (const auto& [name, X] : {std::pair<const char*, const matrix_t<T>*>{"M", &r.M}, {"C1", &r.C1}, {"K0", &r.K0}, {"K2", &r.K2}}) {
-      s << "  \"" << name << "\": [";
+    using J = nlohmann::ordered_json;
+    auto matrix = [&](const matrix_t<T>& X) {
+      J rows = J::array();
       for (Eigen::Index i = 0; i < m; ++i) {
-        s << (i ? ", [" : "[");
-        for (Eigen::Index j = 0; j < m; ++j) s << (j ? ", " : "") << number((*X)(i, j));
-        s << "]";
+        J row = J::array();
+        for (Eigen::Index j = 0; j < m; ++j) row.push_back(number_of(X(i, j)));
+        rows.push_back(std::move(row));
       }
-      s << "],\n";
-    }
-    s << "  \"eigenvalues\": [";
+      return rows;
+    };
+    J j;
+    j["model"] = "system";
+    add_scalar_fields(j, identity_of<T>());
+    J coordinates = J::array();
+    for (Eigen::Index i = 0; i < m; ++i) coordinates.push_back(coordinate(li.def.coordinates[static_cast<std::size_t>(i)]));
+    j["coordinates"] = std::move(coordinates);
+    j["speed"] = speed_name;
+    j["gravity"] = g_name;
+    j["form"] = "M q'' + v C1 q' + (g K0 + v^2 K2) q = f";
+    for (const auto& [name, X] : {std::pair<const char*, const matrix_t<T>*>{"M", &r.M}, {"C1", &r.C1}, {"K0", &r.K0}, {"K2", &r.K2}})
+      j[name] = matrix(*X);
+    J eigenvalues = J::array();
     for (std::size_t k = 0; k < spectra.size(); ++k) {
       const auto [unstable, stable] = stability_of(spectra[k]);
-      s << (k ? ",\n    " : "\n    ") << "{\"speed\": \"" << speed_texts[k] << "\", \"stable\": " << (stable ? "true" : "false")
-        << ", \"certainly_unstable\": " << unstable << ", \"values\": [";
-      for (std::size_t e = 0; e < spectra[k].size(); ++e) {
-        const auto& x = spectra[k][e];
-        s << (e ? ", " : "") << "{\"re\": " << number((x.real_part)) << ", \"im\": " << number((x.imaginary_part));
-        if constexpr (scalar_traits<T>::is_interval) s << ", \"isolated\": " << (x.isolated ? "true" : "false");
-        s << "}";
+      J values = J::array();
+      for (const auto& x : spectra[k]) {
+        J v = {{"re", number_of(x.real_part)}, {"im", number_of(x.imaginary_part)}};
+        if constexpr (scalar_traits<T>::is_interval) v["isolated"] = x.isolated;
+        values.push_back(std::move(v));
       }
-      s << "]}";
+      eigenvalues.push_back({{"speed", speed_texts[k]}, {"stable", stable}, {"certainly_unstable", unstable}, {"values", std::move(values)}});
     }
-    s << "],\n  \"critical_speeds\": {\"from\": \"" << bound_text(from) << "\", \"to\": \"" << bound_text(to)
-      << "\", \"steps\": " << li.steps << ", \"found\": [";
-    for (std::size_t k = 0; k < critical.size(); ++k) {
-      const auto& cs = critical[k];
-      s << (k ? ",\n    " : "\n    ") << "{\"kind\": \"" << kind_name(cs) << "\", \"speed\": " << number((cs.speed));
-      if constexpr (scalar_traits<T>::is_interval) s << ", \"unique\": " << (cs.unique ? "true" : "false");
-      s << ", \"certainly_unstable_below\": " << cs.unstable_below << ", \"certainly_unstable_above\": " << cs.unstable_above << "}";
+    j["eigenvalues"] = std::move(eigenvalues);
+    J found = J::array();
+    for (const auto& cs : critical) {
+      J c = {{"kind", kind_name(cs)}, {"speed", number_of(cs.speed)}};
+      if constexpr (scalar_traits<T>::is_interval) c["unique"] = cs.unique;
+      c["certainly_unstable_below"] = cs.unstable_below;
+      c["certainly_unstable_above"] = cs.unstable_above;
+      found.push_back(std::move(c));
     }
-    s << "]},\n  \"checks\": {";
-    bool first = true;
+    j["critical_speeds"] = {{"from", bound_text(from)}, {"to", bound_text(to)}, {"steps", li.steps}, {"found", std::move(found)}};
+    J checks = J::object();
     for (const auto& [name, X] : {std::pair<const char*, const matrix_t<T>*>{"stiffness_at_twice_the_speed", &r.stiffness_residual},
-                                  {"damping_at_twice_the_speed", &r.damping_residual}, {"damping_at_rest", &r.damping_at_rest}}) {
-      s << (first ? "\n    \"" : ",\n    \"") << name << "\": [";
-      first = false;
-      for (Eigen::Index i = 0; i < m; ++i) {
-        s << (i ? ", [" : "[");
-        for (Eigen::Index j = 0; j < m; ++j) s << (j ? ", " : "") << number(((*X)(i, j)));
-        s << "]";
-      }
-      s << "]";
-    }
-    s << "}}\n";
-    return s.str();
+                                  {"damping_at_twice_the_speed", &r.damping_residual}, {"damping_at_rest", &r.damping_at_rest}})
+      checks[name] = matrix(*X);
+    j["checks"] = std::move(checks);
+    return json_text(j, json_style::document);
   }
+  std::ostringstream s;
   s << "linearized about " << speed_name << " = " << li.u[static_cast<std::size_t>(li.def.speed)].text << " in "
     << scalar_traits<T>::name << " (" << scalar_traits<T>::precision_bits() << " bits, "
     << (scalar_traits<T>::is_rigorous ? "rigorous enclosures" : "point values") << ")\n"

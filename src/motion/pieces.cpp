@@ -12,13 +12,15 @@
 #include <stdexcept>
 #include <thread>
 
+#include "appell/io/json_text.hpp"
+
 namespace appell::motion {
 
 std::string piece_report::to_message() const {
   const nlohmann::json j = {{"path", path},   {"verdict", verdict}, {"lo", lo},         {"hi", hi},       {"holds_until", holds_until},
                             {"fail_from", fail_from}, {"fail_to", fail_to}, {"why", why}, {"x_lo", x_lo}, {"x_hi", x_hi},
                             {"y0", y0},       {"y1", y1},           {"steps", steps},   {"seconds", seconds}, {"suggested", suggested}, {"error", error}};
-  return j.dump();
+  return json_text(j, json_style::line);
 }
 
 piece_report piece_report::from_message(const std::string& m) {

@@ -2,7 +2,7 @@
 // enclosure of its motion (appell::motion).
 #include <appell/io/scene.hpp>
 #include <appell/motion/motion.hpp>
-#include <appell/scenes/euler_body.hpp>
+#include <appell/models/euler_body.hpp>
 #include <iostream>
 
 int main(int argc, char** argv) {

@@ -12,8 +12,8 @@
 
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/functions.hpp"
-#include "appell/scenes/euler_body.hpp"
-#include "appell/scenes/rolling_sphere.hpp"
+#include "appell/models/euler_body.hpp"
+#include "appell/models/rolling_sphere.hpp"
 
 namespace appell::independent {
 

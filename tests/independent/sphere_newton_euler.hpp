@@ -12,7 +12,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "appell/scenes/rolling_sphere.hpp"
+#include "appell/models/rolling_sphere.hpp"
 
 namespace appell::independent {
 

@@ -1,6 +1,6 @@
 // appell/dynamics/gibbs_appell.hpp -- Gibbs-Appell equations of a user's system.
 //
-// A system is described once, as templated C++ (see examples/ and scenes/):
+// A system is described once, as templated C++ (see examples/ and models/):
 //
 //   struct my_system {
 //     int speeds() const;                                   // k = dim u

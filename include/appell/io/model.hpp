@@ -8,7 +8,7 @@
 //     template <Scalar T> struct prepared;           // the inputs in T
 //     template <Scalar T> static prepared<T> prepare(const input&);
 //     template <Scalar T> static evaluation<T> compute(const prepared<T>&);
-// compute<T> calls the model's one result function (scenes/<name>.hpp) and
+// compute<T> calls the model's one result function (in the model's home, models/<name>.hpp) and
 // names its results and checks; it applies no evaluation policy (appell::compute does).
 // A model whose checks cost work of their own may take the request instead,
 //     template <Scalar T> static evaluation<T> compute(const prepared<T>&, with_checks);
@@ -33,7 +33,7 @@ namespace appell {
 /// The type-erased functions of Model in scalar T.  Defined out of the class, so not inline:
 /// the extern template in each model's header then keeps every other unit from instantiating
 /// them (GCC instantiates the inline members of an extern template to inline them, and with
-/// them the model in all seven scalars: heavy_top.cpp, a model's reader, took 54 s to compile, 1.3 s without;
+/// them the model in all seven scalars: a model's reader took 40 times as long to compile;
 /// docs/architecture.md, "Build time").
 template <class Model, Scalar T>
 struct model_functions {

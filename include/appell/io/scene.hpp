@@ -8,7 +8,7 @@
 // prepare<T>() converts a scene's inputs to T once; compute<T>() runs the
 // model's dynamics, under the scalar's evaluation policy (scalar/policy.hpp);
 // evaluate<T>() does both and adds error_amplification for point types;
-// format_json<T>() prints the `appell eval` document.  These are instantiated
+// format_json() prints the `appell eval` document.  These are instantiated
 // once per standard scalar (scalar/standard_scalars.hpp) in generated units.
 #pragma once
 
@@ -43,7 +43,7 @@ struct scene_input {
   std::string model;
   std::shared_ptr<const model_input> input;
   const model_entry* entry = nullptr;
-  /// The inputs as the model's own struct (e.g. top_on_cone_input); std::logic_error if another model's.
+  /// The inputs as the model's own struct (the struct its home names `input`); std::logic_error if another model's.
   template <class In>
   const In& as() const {
     const auto* p = dynamic_cast<const In*>(input.get());
@@ -59,13 +59,30 @@ struct named_result {
   bool is_vector = false;
 };
 
+/// A number as appell's documents print it (io/json_text.hpp writes them): an interval's bounds
+/// as decimals rounded outward ({"lo", "hi"}; "[lo, hi]" in the text format), or a point value
+/// ({"value"}), each as to_string (scalar/format.hpp) gives it.
+struct printed_number {
+  bool interval = false;
+  std::string lo, hi;  ///< an interval's bounds; a point value's decimal in lo (hi empty)
+};
+
+template <Scalar T>
+printed_number printed(const T& x) {
+  if constexpr (scalar_traits<T>::is_interval)
+    return {true, lower_string(x), upper_string(x)};
+  else
+    return {false, to_string(x), ""};
+}
+
 /// A contact's verdict (reactions/contact.hpp): "holds", "fails" or "undecided", its mu as
-/// written (empty: none given), and the friction coefficient it requires as the eval document
-/// prints a number (empty where the normal force is not proved positive).  Kept out of the
-/// results, whose list must not depend on the values (reference, tradeoff and the error
-/// amplification compare the scalars' results by position).
+/// written (empty: none given), and the friction coefficient it requires (none where the normal
+/// force is not proved positive).  Kept out of the results, whose list must not depend on the
+/// values (reference, tradeoff and the error amplification compare the scalars' results by
+/// position).
 struct contact_judgement {
-  std::string name, verdict, mu, required_mu;
+  std::string name, verdict, mu;
+  std::optional<printed_number> required_mu;
 };
 
 /// One contact's judgement for eval's document from its normal force, its tangential force's
@@ -73,14 +90,8 @@ struct contact_judgement {
 /// coefficient it requires, |F_t| / N, where N is proved positive.
 template <Scalar T>
 contact_judgement judged_contact(const std::string& name, const T& normal, const T& tangential, const std::string& mu_text) {
-  std::string required;
-  if (certainly_positive(normal)) {
-    const T r = tangential / normal;
-    if constexpr (scalar_traits<T>::is_interval)
-      required = "{\"lo\": \"" + lower_string(r) + "\", \"hi\": \"" + upper_string(r) + "\"}";
-    else
-      required = "{\"value\": \"" + to_string(r) + "\"}";
-  }
+  std::optional<printed_number> required;
+  if (certainly_positive(normal)) required = printed(T(tangential / normal));
   std::optional<T> mu;
   if (!mu_text.empty()) mu = from_decimal<T>(mu_text);
   return {name, verdict_name(judge_contact(normal, tangential, mu ? &*mu : nullptr)), mu_text, required};
@@ -251,6 +262,12 @@ prepared_scene<T> prepare(const scene_input& scene) {
 /// compute_into writes the evaluation over `e`, an earlier evaluation of the same scene or an
 /// empty one, reusing its storage (a warm evaluation of a system file takes nothing from the
 /// heap for its names and values); `e` is unspecified after an exception.
+namespace detail {
+/// A result's component as a message names it, "name" or "name[i]" (compiled once: inlined in
+/// every scalar's compute_into, GCC 12 warned of a string copy it could not bound).
+std::string component_name(const std::string& name, bool is_vector, std::size_t i);
+}  // namespace detail
+
 template <Scalar T>
 void compute_into(const prepared_scene<T>& scene, evaluation<T>& e, with_checks checks = with_checks::yes) {
   const evaluation_scope<T> scope;
@@ -260,7 +277,7 @@ void compute_into(const prepared_scene<T>& scene, evaluation<T>& e, with_checks 
       for (std::size_t i = 0; i < r.values.size(); ++i) {
         scope.finish(r.values[i]);
         if (!is_finite(r.values[i]))  // the name made only for the message
-          require_finite(r.values[i], r.name + (r.is_vector ? "[" + std::to_string(i) + "]" : std::string()));
+          require_finite(r.values[i], detail::component_name(r.name, r.is_vector, i));
       }
 }
 template <Scalar T>
@@ -293,73 +310,64 @@ evaluation<T> evaluate(const scene_input& scene, with_checks checks = with_check
   return e;
 }
 
-/// The header of the `appell eval` document after the model: scalar, bits used
-/// (and bits_requested where a library limit made them differ), rigour.
+/// The scalar a document was computed in, as `appell eval` names it after the model: scalar,
+/// bits used (and bits_requested where a library limit made them differ), rigour.
+struct scalar_identity {
+  std::string name;
+  int bits = 0;
+  std::optional<int> bits_requested;
+  bool rigorous = false;
+};
+
 template <Scalar T>
-std::string format_scalar_fields() {
-  std::string s = "\"scalar\": \"" + std::string(scalar_traits<T>::name) +
-                  "\", \"bits\": " + std::to_string(scalar_traits<T>::precision_bits());
+scalar_identity identity_of() {
+  scalar_identity s{scalar_traits<T>::name, static_cast<int>(scalar_traits<T>::precision_bits()), std::nullopt,
+                    scalar_traits<T>::is_rigorous};
   if constexpr (scalar_traits<T>::runtime_precision)
-    if (scalar_traits<T>::precision_bits() != mp_precision_bits())
-      s += ", \"bits_requested\": " + std::to_string(mp_precision_bits());
-  return s + ", \"rigorous\": " + (scalar_traits<T>::is_rigorous ? "true" : "false");
+    if (scalar_traits<T>::precision_bits() != mp_precision_bits()) s.bits_requested = static_cast<int>(mp_precision_bits());
+  return s;
 }
 
-/// The `appell eval` JSON document (SCENES.md).
+/// An evaluation as its documents print it, free of the scalar.
+struct printed_result {
+  std::string name;
+  bool is_vector = false;
+  std::vector<printed_number> values;
+};
+struct printed_evaluation {
+  std::string model;
+  scalar_identity scalar;
+  std::vector<printed_result> results, checks, derived;
+  std::vector<contact_judgement> contacts;
+};
+
+template <Scalar T>
+printed_evaluation printed(const scene_input& scene, const evaluation<T>& e) {
+  auto group = [](const std::vector<named_result<T>>& items) {
+    std::vector<printed_result> out;
+    out.reserve(items.size());
+    for (const auto& r : items) {
+      printed_result p{r.name, r.is_vector, {}};
+      for (const T& x : r.values) p.values.push_back(printed(x));
+      out.push_back(std::move(p));
+    }
+    return out;
+  };
+  return {scene.model, identity_of<T>(), group(e.results), group(e.checks), group(e.derived), e.contacts};
+}
+
+/// The `appell eval` JSON document (SCENES.md), written by io/json_text.hpp's writer, and a
+/// human-readable rendering of the same numbers (src/io/evaluation_text.cpp).
+std::string format_json(const printed_evaluation& e);
+std::string format_text(const printed_evaluation& e);
+
 template <Scalar T>
 std::string format_json(const scene_input& scene, const evaluation<T>& e) {
-  auto number = [](const T& x) {
-    if constexpr (scalar_traits<T>::is_interval)
-      return "{\"lo\": \"" + lower_string(x) + "\", \"hi\": \"" + upper_string(x) + "\"}";
-    else
-      return "{\"value\": \"" + to_string(x) + "\"}";
-  };
-  auto group = [&](const std::vector<named_result<T>>& items) {
-    std::string s = "{";
-    for (std::size_t i = 0; i < items.size(); ++i) {
-      s += (i ? ",\n    \"" : "\n    \"") + items[i].name + "\": ";
-      if (items[i].is_vector) {
-        s += "[";
-        for (std::size_t j = 0; j < items[i].values.size(); ++j) s += (j ? ", " : "") + number(items[i].values[j]);
-        s += "]";
-      } else {
-        s += number(items[i].values[0]);
-      }
-    }
-    return s + "}";
-  };
-  std::string contacts;
-  for (std::size_t i = 0; i < e.contacts.size(); ++i)
-    contacts += std::string(i ? ",\n    \"" : ",\n  \"contacts\": {\n    \"") + e.contacts[i].name + "\": {\"verdict\": \"" +
-                e.contacts[i].verdict + "\"" + (e.contacts[i].mu.empty() ? "" : ", \"mu\": \"" + e.contacts[i].mu + "\"") +
-                (e.contacts[i].required_mu.empty() ? "" : ", \"required_mu\": " + e.contacts[i].required_mu) + "}" +
-                (i + 1 == e.contacts.size() ? "}" : "");
-  return "{\"model\": \"" + scene.model + "\", " + format_scalar_fields<T>() +
-         ",\n  \"results\": " + group(e.results) + ",\n  \"checks\": " + group(e.checks) +
-         (e.derived.empty() ? std::string() : ",\n  \"derived\": " + group(e.derived)) + contacts + "}\n";
+  return format_json(printed(scene, e));
 }
-
-/// A human-readable rendering of the same numbers.
 template <Scalar T>
 std::string format_text(const scene_input& scene, const evaluation<T>& e) {
-  std::string s = scene.model + " in " + scalar_traits<T>::name + " (" +
-                  std::to_string(scalar_traits<T>::precision_bits()) + " bits, " +
-                  (scalar_traits<T>::is_rigorous ? "rigorous enclosures" : "point values") + ")\n";
-  auto lines = [&](const std::vector<named_result<T>>& items, const char* heading) {
-    s += heading;
-    for (const auto& r : items)
-      for (std::size_t j = 0; j < r.values.size(); ++j)
-        s += "  " + r.name + (r.is_vector ? "[" + std::to_string(j) + "]" : "") + " = " +
-             to_string(r.values[j]) + "\n";
-  };
-  lines(e.results, "results:\n");
-  lines(e.checks, "checks (0 if consistent):\n");
-  if (!e.derived.empty()) lines(e.derived, "derived state:\n");
-  if (!e.contacts.empty()) s += "contacts (" + std::string(scalar_traits<T>::is_rigorous ? "proved" : "not proved: point values") + "):\n";
-  for (const auto& c : e.contacts)
-    s += "  " + c.name + ": " + c.verdict + (c.mu.empty() ? " (the normal force's sign only)" : " (mu = " + c.mu + ")") +
-         (c.required_mu.empty() ? "" : "; required mu " + c.required_mu) + "\n";
-  return s;
+  return format_text(printed(scene, e));
 }
 
 // The scene layer is instantiated once per standard scalar, in units CMake
@@ -369,8 +377,7 @@ std::string format_text(const scene_input& scene, const evaluation<T>& e) {
   prefix template void compute_into<T>(const prepared_scene<T>&, evaluation<T>&, with_checks); \
   prefix template evaluation<T> compute<T>(const prepared_scene<T>&, with_checks);         \
   prefix template evaluation<T> evaluate<T>(const scene_input&, with_checks);              \
-  prefix template std::string format_json<T>(const scene_input&, const evaluation<T>&);    \
-  prefix template std::string format_text<T>(const scene_input&, const evaluation<T>&);
+  prefix template printed_evaluation printed<T>(const scene_input&, const evaluation<T>&);
 #define APPELL_DETAIL_EXTERN_SCENE(ctx, T, name) APPELL_SCENE_TEMPLATES(extern, T)
 APPELL_STANDARD_SCALARS(APPELL_DETAIL_EXTERN_SCENE, )
 #undef APPELL_DETAIL_EXTERN_SCENE

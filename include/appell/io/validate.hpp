@@ -11,8 +11,8 @@ namespace appell {
 void require_positive(const object_reader& r, const std::string& key, const decimal_field& d,
                       const std::string& what = "");
 
-/// The fields of a symmetric top on a fixed point O of its axis (models top_on_cone and
-/// heavy_top): A about O, C about the axis, mass, l = OG.
+/// The fields of a symmetric top on a fixed point O of its axis (dynamics/symmetric_top.hpp):
+/// A about O, C about the axis, mass, l = OG.
 struct symmetric_top_fields {
   decimal_field A, C, mass, l;
 };

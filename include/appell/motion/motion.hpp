@@ -204,7 +204,7 @@ std::vector<std::string> state_fields(const scene_input& scene);
 /// The scene's motion in closed form where its model knows it (horizon's reference), else none.
 std::optional<motion_closed_form> closed_form_of(const scene_input& scene);
 
-/// The models that move, in the registry's order ("euler_body, heavy_top, ...").
+/// The models that move, in the registry's order, separated by ", ".
 std::string moving_model_names();
 
 }  // namespace appell::motion

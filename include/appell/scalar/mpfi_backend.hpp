@@ -4,7 +4,7 @@
 // value with mpfi_init2, which makes two heap allocations (one per bound) and
 // sets the value twice (NaN, then 0); the library's code creates a value per
 // operation, so that bookkeeping, not the arithmetic, was most of an mpfi
-// evaluation's time (callgrind, euler_body at 113 bits: malloc, free and
+// evaluation's time (callgrind, Euler's body at 113 bits: malloc, free and
 // mpfr_init2 above 60% of the instructions) and twice what an mpfr value costs.
 //
 // mpfi_backend keeps both bounds' significands inside the value up to

@@ -1,4 +1,4 @@
-// appell/scenes/free_body.hpp -- paper sec. 4: a free rigid body referred to
+// appell/dynamics/free_body.hpp -- paper sec. 4: a free rigid body referred to
 // axes Gxyz through its centre of mass that move relative to the body and to
 // space (rotation P, Q, R); moments and products of inertia A..F vary with time.
 //
