@@ -1,6 +1,7 @@
 // The motion's library calls (motion/motion.hpp): the scalar named at run time to a type
 // (with_scalar), the scene's model to its runs (one loop over the models CMake lists in
-// APPELL_MODELS: appell_models.hpp, generated; no list of names here), and the reports' summaries.
+// APPELL_MODELS: appell_models.hpp, generated; no list of names here; then the models a program
+// registered while it started, motion/registry.hpp), and the reports' summaries.
 // The runs themselves are instantiated per model and scalar in generated units
 // (motion/engine.hpp); this unit only declares them.
 #include "appell/motion/motion.hpp"
@@ -14,6 +15,7 @@
 
 #include "appell/build_options.hpp"
 #include "appell/motion/engine.hpp"
+#include "appell/motion/registry.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 #include "appell_models.hpp"
@@ -25,16 +27,25 @@ namespace appell::motion {
 
 namespace {
 
-/// Calls f(std::type_identity<Model>) for the scene's model if it moves; input_error naming
-/// `model` otherwise.
-template <class R, class F, class... Models>
-R with_moving_model(const scene_input& scene, const std::string& command, F&& f, type_list<Models...>) {
+/// The models registered while the program started (motion/registry.hpp), in their order.
+std::vector<registered_motion>& registered() {
+  static std::vector<registered_motion> models;
+  return models;
+}
+
+/// Calls f(std::type_identity<Model>) for the scene's model if it is a built-in one that moves,
+/// g(its registered motion) if it was registered; input_error naming `model` otherwise.
+template <class R, class F, class G, class... Models>
+R with_moving_model(const scene_input& scene, const std::string& command, F&& f, G&& g, type_list<Models...>) {
   std::optional<R> r;
+  const std::string& module = scene.entry ? scene.entry->module : scene.model;
   auto try_one = [&]<class Model>(std::type_identity<Model> m) {
     if constexpr (moving_model<Model>)
-      if (!r && (scene.entry ? scene.entry->module : scene.model) == Model::name) r.emplace(f(m));
+      if (!r && module == Model::name) r.emplace(f(m));
   };
   (try_one(std::type_identity<Models>{}), ...);
+  if (!r)
+    if (const registered_motion* m = find_registered_motion(module)) r.emplace(g(*m));
   if (!r)
     throw input_error("model: " + command + " moves the models " + moving_model_names() + "; '" + scene.model +
                       "' has no motion");
@@ -56,6 +67,10 @@ void run(const scene_input& scene, const run_request& q, const char* command) {
         scene, command,
         [&]<class Model>(std::type_identity<Model>) {
           run_model<Model, T>(scene, q);
+          return true;
+        },
+        [&](const registered_motion& m) {
+          m.run[standard_scalar_index<T>](scene, q);  // every built scalar's is compiled
           return true;
         },
         all_models{});
@@ -128,9 +143,25 @@ horizon_track track(const scene_input& scene, const std::string& scalar, std::op
     return with_moving_model<horizon_track>(
         scene, "horizon",
         [&]<class Model>(std::type_identity<Model>) { return run_model_track<Model, T>(scene, t_end, every, settings, progress); },
+        [&](const registered_motion& m) { return m.track[standard_scalar_index<T>](scene, t_end, every, settings, progress); },
         all_models{});
   });
 #endif
+}
+
+void register_motion(registered_motion m) {
+  bool taken = find_registered_motion(m.module) != nullptr;
+  [&]<class... Models>(type_list<Models...>) {
+    ((taken = taken || (moving_model<Models> && m.module == Models::name)), ...);
+  }(all_models{});
+  if (taken) throw std::logic_error("register_motion: a model named " + m.module + " moves already");
+  registered().push_back(std::move(m));
+}
+
+const registered_motion* find_registered_motion(const std::string& module) {
+  for (const registered_motion& m : registered())
+    if (m.module == module) return &m;
+  return nullptr;
 }
 
 std::string moving_model_names() {
@@ -139,6 +170,7 @@ std::string moving_model_names() {
     if constexpr (moving_model<Model>) names += (names.empty() ? "" : ", ") + std::string(Model::name);
   };
   [&]<class... Models>(type_list<Models...>) { (add(std::type_identity<Models>{}), ...); }(all_models{});
+  for (const registered_motion& m : registered()) names += (names.empty() ? "" : ", ") + m.module;
   return names;
 }
 
@@ -148,7 +180,7 @@ std::vector<std::string> state_fields(const scene_input& scene) {
       [&]<class Model>(std::type_identity<Model>) {
         return model_motion<Model>::state_fields(scene.as<typename Model::input>());
       },
-      all_models{});
+      [&](const registered_motion& m) { return m.state_fields(scene); }, all_models{});
 }
 
 std::optional<motion_closed_form> closed_form_of(const scene_input& scene) {
@@ -160,7 +192,7 @@ std::optional<motion_closed_form> closed_form_of(const scene_input& scene) {
         else
           return std::nullopt;
       },
-      all_models{});
+      [&](const registered_motion& m) { return m.closed_form(scene); }, all_models{});
 }
 
 // ---------------------------------------------------------------------------
