@@ -7,7 +7,7 @@
 //         // the problem and its initial state, packed in the order of the state table
 //     static std::vector<std::string> state_fields(const Model::input&);
 //         // the scene's state fields, in the order of the motion's state (reference --trajectory):
-//         // state_fields_of(<name>_state) for a model with a fixed state table
+//         // state_fields_of(<name>_state_table) for a model with a fixed state table
 // and ends its home with APPELL_EXTERN_MODEL_MOTION(Model): the problem's integrators are compiled
 // once per scalar, with the model (cmake/instantiate.cmake).
 //

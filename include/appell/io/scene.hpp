@@ -233,7 +233,8 @@ struct model_entry {
   std::string module;
 };
 
-/// Every model compiled into the library, in the order of CMake's APPELL_MODELS.
+/// Every model compiled into the library, in the order of CMake's APPELL_MODELS, then those a
+/// program registered while it started (io/model_registry.hpp).
 const std::vector<const model_entry*>& registered_models();
 /// The model called `name`; input_error naming the field `model` otherwise.
 const model_entry& find_model(const std::string& name);
