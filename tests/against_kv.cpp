@@ -5,9 +5,13 @@
 // rates), kv the equations written out by hand (Euler's, Lagrange's).  Two enclosures of the one
 // true state must meet in every component; both are narrow (below 1e-10 here), so a state off by
 // more than that in either, an error of the method or of the equations, shows as a miss.
+// And what mixing the two libraries taught: kv switches the rounding mode itself, and appell's
+// interval operations inside an upward_rounding scope trust it; enclose refuses to go on once the
+// mode was changed inside its scope, before or during the run.
 #define BOOST_TEST_MODULE against_kv
 #include <boost/test/unit_test.hpp>
 
+#include <cfenv>
 #include <iomanip>
 
 #include "appell/models/euler_body.hpp"
@@ -66,4 +70,32 @@ BOOST_AUTO_TEST_CASE(heavy_top_at_t_2_meets_kv) {
   const appell_end a = enclose_to(top, resal_t::from_euler_rates(x0), 2);
   BOOST_REQUIRE(a.complete);
   require_meet(resal_t::reported<interval>(a.end), bench::run_kv(bench::kv_problem::heavy_top, 2, 24, false));
+}
+
+BOOST_AUTO_TEST_CASE(enclose_refuses_a_rounding_mode_changed_inside_its_scope) {
+  std::fenv_t caller;
+  std::fegetenv(&caller);
+  const ode::euler_body_problem<interval> euler{{vec3<interval>(interval(1), interval(2), interval(3)), vec3<interval>::Zero()}};
+  const vector_t<interval> x0 = vector_t<interval>::Constant(3, interval(1));
+  auto names_the_mode = [](const certification_error& e) { return std::string(e.what()).find("rounding mode") != std::string::npos; };
+  {
+    const evaluation_scope<interval> scope;
+    long seen = 0;  // a step's callback switches to nearest after the third step, as kv does
+    BOOST_CHECK_EXCEPTION(ode::enclose(euler, x0, interval(10), 24, std::ldexp(1.0, -53), 1.0, 2,
+                                       [&](const ode::enclosed_step<interval>&) {
+                                         if (++seen == 3) std::fesetround(FE_TONEAREST);
+                                       }),
+                          certification_error, names_the_mode);
+    BOOST_CHECK_EQUAL(seen, 3);  // no step computed after the change reached the caller
+    std::fesetround(FE_TONEAREST);  // the mode changed before the call
+    BOOST_CHECK_EXCEPTION(ode::enclose(euler, x0, interval(10), 24, std::ldexp(1.0, -53), 1.0, 2,
+                                       [&](const ode::enclosed_step<interval>&) { ++seen; }),
+                          certification_error, names_the_mode);
+    BOOST_CHECK_EQUAL(seen, 3);
+  }
+  std::fesetenv(&caller);
+  // Outside any scope each interval operation sets the mode itself: the same run completes.
+  const appell_end a = enclose_to(euler, x0, 10);
+  BOOST_CHECK(a.complete);
+  require_meet(a.end, bench::run_kv(bench::kv_problem::euler_body, 10, 24, false));
 }

@@ -1,14 +1,26 @@
-// The sweeps of the stability study (appell/studies/extreme_sweeps.hpp).
+// The sweeps of the stability study (appell/studies/extreme_sweeps.hpp): the scenes are data,
+// data/extremes/sweeps.json, which CMake compiles into the library as text
+// (generated/extreme_sweeps_data.cpp); here each sweep's placeholders become the decimals of
+// their values at every k of the sweep.
 #include <mpfr.h>
 
 #include <cmath>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
 
 #include "appell/scalar/format.hpp"
 #include "appell/scalar/traits.hpp"
 #include "appell/studies/extreme_sweeps.hpp"
 
 namespace appell::studies {
+namespace detail {
+extern const char* const extreme_sweeps_json;  // data/extremes/sweeps.json
+}  // namespace detail
+
 namespace {
+
+using json = nlohmann::ordered_json;
 
 std::string pow10(int k) { return "1e" + std::to_string(k); }
 
@@ -26,72 +38,62 @@ std::string pi_minus(int k) {
 std::string one_minus(int k) { return "0." + std::string(static_cast<std::size_t>(k), '9'); }
 std::string three_plus(int k) { return "3." + std::string(static_cast<std::size_t>(k - 1), '0') + "1"; }
 
-std::string top(const std::string& cone, const std::string& theta, const std::string& phi_dot) {
-  return "{\"model\": \"top_on_cone\", \"top\": {\"A\": \"0.08\", \"C\": \"0.02\", \"mass\": \"1.5\", \"l\": \"0.2\"},"
-         " \"gravity\": \"9.81\", \"cone\": \"" + cone + "\", \"state\": {\"theta\": \"" + theta +
-         "\", \"phi\": \"0.3\", \"theta_dot\": \"1.2\", \"phi_dot\": \"" + phi_dot + "\"}}";
+[[noreturn]] void bad_data(const std::string& what) {
+  throw std::logic_error("data/extremes/sweeps.json (compiled into the library): " + what);
 }
-std::string euler(const std::string& C) {
-  return "{\"model\": \"euler_body\", \"inertia\": {\"A\": \"2\", \"B\": \"3\", \"C\": \"" + C +
-         "\"}, \"state\": {\"omega\": [\"0.1\", \"1.0\", \"0.2\"]}}";
+
+/// The decimal a placeholder stands for at k.
+std::string value_at(const std::string& placeholder, int k) {
+  if (placeholder == "10^-k") return pow10(-k);
+  if (placeholder == "10^k") return pow10(k);
+  if (placeholder == "pi-10^-k") return pi_minus(k);
+  if (placeholder == "1-10^-k") return one_minus(k);
+  if (placeholder == "3+10^-k") return three_plus(k);
+  bad_data("unknown placeholder {" + placeholder + "}");
 }
-std::string plane(const std::string& mass, const std::string& radius) {
-  return "{\"model\": \"rolling_sphere\", \"sphere\": {\"mass\": \"" + mass + "\", \"radius\": \"" + radius +
-         "\"}, \"surface\": {\"type\": \"plane\"}, \"gravity\": [\"1.2\", \"0\", \"-9.7\"],"
-         " \"state\": {\"center\": [\"0.3\", \"-1\", \"" + radius + "\"], \"omega\": [\"1.5\", \"-4\", \"0\"]}}";
+
+/// s with every {placeholder} replaced by its value at k.
+std::string substitute(const std::string& s, int k) {
+  std::string out;
+  std::size_t from = 0;
+  for (std::size_t open; (open = s.find('{', from)) != std::string::npos;) {
+    const std::size_t close = s.find('}', open);
+    if (close == std::string::npos) bad_data("an unclosed '{' in \"" + s + "\"");
+    out += s.substr(from, open - from);
+    out += value_at(s.substr(open + 1, close - open - 1), k);
+    from = close + 1;
+  }
+  return out + s.substr(from);
 }
-std::string bowl(int k) {
-  return "{\"model\": \"rolling_sphere\", \"sphere\": {\"mass\": \"2\", \"radius\": \"" + one_minus(k) +
-         "\"}, \"surface\": {\"type\": \"sphere\", \"radius\": \"1\", \"side\": \"inside\"},"
-         " \"gravity\": [\"0\", \"0\", \"-9.81\"], \"state\": {\"center\": [\"0\", \"0\", \"-" + pow10(-k) +
-         "\"], \"omega\": [\"0\", \"2\", \"0\"]}}";
+
+/// The scene at k: every string of it substituted, keys and order kept.
+json scene_at(const json& scene, int k) {
+  if (scene.is_string()) return substitute(scene.get<std::string>(), k);
+  json out = scene;
+  if (scene.is_object())
+    for (auto& [key, value] : out.items()) value = scene_at(value, k);
+  if (scene.is_array())
+    for (auto& value : out) value = scene_at(value, k);
+  return out;
 }
 
 }  // namespace
 
 std::vector<sweep> extreme_sweeps() {
-  std::vector<sweep> s;
-  {
-    sweep w{"top_theta_to_0", "top: axis near vertical, theta = 10^-k (Euler-angle singularity)", "log10 theta", {}};
-    for (int k : {1, 2, 4, 6, 8, 10, 12}) w.points.push_back({pow10(-k), static_cast<double>(-k), top("0.5*theta + 0.1*sin(2*theta)", pow10(-k), "40")});
-    s.push_back(w);
+  const json data = json::parse(detail::extreme_sweeps_json);
+  std::vector<sweep> sweeps;
+  for (const json& s : data.at("sweeps")) {
+    sweep w{s.at("name").get<std::string>(), s.at("what").get<std::string>(), s.at("x_label").get<std::string>(), {}};
+    const std::string x = s.at("x").get<std::string>();
+    if (x != "k" && x != "-k") bad_data("sweep " + w.name + ": x is \"k\" or \"-k\", not \"" + x + "\"");
+    for (const json& kj : s.at("k")) {
+      const int k = kj.get<int>();
+      w.points.push_back({substitute(s.at("param").get<std::string>(), k), static_cast<double>(x == "k" ? k : -k),
+                          scene_at(s.at("scene"), k).dump()});
+    }
+    sweeps.push_back(std::move(w));
   }
-  {
-    sweep w{"top_theta_to_pi", "top: axis near downward vertical, theta = pi - 10^-k", "log10 (pi - theta)", {}};
-    for (int k : {1, 2, 4, 6, 8, 10, 12}) w.points.push_back({"pi-" + pow10(-k), static_cast<double>(-k), top("0.5*theta + 0.1*sin(2*theta)", pi_minus(k), "40")});
-    s.push_back(w);
-  }
-  {
-    sweep w{"top_steep_cone", "top: cone psi = K theta with a huge slope K", "log10 K", {}};
-    for (int k : {0, 2, 4, 6, 8}) w.points.push_back({pow10(k), static_cast<double>(k), top(pow10(k) + "*theta", "0.7", "40")});
-    s.push_back(w);
-  }
-  {
-    sweep w{"top_spin", "top: spin phi' from 1e-6 to 1e7", "log10 phi'", {}};
-    for (int k : {-6, -3, 0, 2, 4, 6, 7}) w.points.push_back({pow10(k), static_cast<double>(k), top("0.5*theta + 0.1*sin(2*theta)", "0.7", pow10(k))});
-    s.push_back(w);
-  }
-  {
-    sweep w{"euler_near_equal_inertias", "Euler's body: B = 3, C = 3 + 10^-k (near-equal inertias)", "log10 (C - B)", {}};
-    for (int k : {1, 3, 5, 7, 9, 11, 13, 15}) w.points.push_back({three_plus(k), static_cast<double>(-k), euler(three_plus(k))});
-    s.push_back(w);
-  }
-  {
-    sweep w{"sphere_mass_scale", "sphere on a plane: mass from 1e-12 to 1e12", "log10 mass", {}};
-    for (int k : {-12, -8, -4, 0, 4, 8, 12}) w.points.push_back({pow10(k), static_cast<double>(k), plane(pow10(k), "0.2")});
-    s.push_back(w);
-  }
-  {
-    sweep w{"sphere_radius_to_0", "sphere on a plane: radius a = 10^-k", "log10 a", {}};
-    for (int k : {1, 3, 5, 7, 9, 11}) w.points.push_back({pow10(-k), static_cast<double>(-k), plane("1.5", pow10(-k))});
-    s.push_back(w);
-  }
-  {
-    sweep w{"bowl_gap_to_0", "sphere in a bowl: b - a = 10^-k (sphere nearly as large as the bowl)", "log10 (b - a)", {}};
-    for (int k : {1, 3, 5, 7, 9, 11}) w.points.push_back({pow10(-k), static_cast<double>(-k), bowl(k)});
-    s.push_back(w);
-  }
-  return s;
+  return sweeps;
 }
 
 }  // namespace appell::studies

@@ -96,6 +96,16 @@ scene_input make_scene(typename Model::input in) {
 #define APPELL_DETAIL_EXTERN_MODEL_ITEM(Model, T, name) extern template struct ::appell::model_functions<Model, T>;
 #define APPELL_EXTERN_MODEL(Model) APPELL_STANDARD_SCALARS(APPELL_DETAIL_EXTERN_MODEL_ITEM, Model)
 
+/// A model's own physics that programs call directly (tests, proofs, benchmarks: the paper's
+/// result function of the model), compiled with the model once per standard scalar: its home
+/// defines APPELL_MODEL_PHYSICS_<name>(EXTERN, T), one explicit instantiation (`EXTERN template
+/// ...;`) per function, inside namespace appell, and expands APPELL_EXTERN_MODEL_PHYSICS(<name>)
+/// after the functions; the model's generated units define them (cmake/instantiate.cmake finds
+/// the macro in the home).  A call in a standard scalar then links to the library's instance
+/// where it compiled the function again (tests/rolling_sphere.cpp: a third of its compile time).
+#define APPELL_DETAIL_EXTERN_PHYSICS_ITEM(name, T, scalar_name) APPELL_MODEL_PHYSICS_##name(extern, T)
+#define APPELL_EXTERN_MODEL_PHYSICS(name) APPELL_STANDARD_SCALARS(APPELL_DETAIL_EXTERN_PHYSICS_ITEM, name)
+
 /// In a model's .cpp: the function the generated registry calls, `const model_entry& Model_entry()`.
 #define APPELL_DEFINE_MODEL_ENTRY(Model)                                  \
   const ::appell::model_entry& Model##_entry() {                          \

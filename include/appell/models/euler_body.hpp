@@ -134,6 +134,11 @@ euler_body_result<T> euler_body_motion(const euler_body<T>& body, const vec3<T>&
   return r;
 }
 
+/// euler_body_motion compiled with the model, once per standard scalar (io/model.hpp).
+#define APPELL_MODEL_PHYSICS_euler_body(EXTERN, T) \
+  EXTERN template euler_body_result<T> euler_body_motion<T>(const euler_body<T>&, const vec3<T>&);
+APPELL_EXTERN_MODEL_PHYSICS(euler_body)
+
 }  // namespace appell
 
 namespace appell::ode {

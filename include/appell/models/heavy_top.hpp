@@ -250,6 +250,12 @@ top_on_pivot_result<T> top_on_pivot_motion(const T& A, const T& C, const T& mass
   return r;
 }
 
+/// top_on_pivot_motion compiled with the model, once per standard scalar (io/model.hpp).
+#define APPELL_MODEL_PHYSICS_heavy_top(EXTERN, T)                                                                 \
+  EXTERN template top_on_pivot_result<T> top_on_pivot_motion<T>(const T&, const T&, const T&, const T&, const T&, \
+                                                                const top_on_pivot_state<T>&);
+APPELL_EXTERN_MODEL_PHYSICS(heavy_top)
+
 }  // namespace appell
 
 namespace appell::ode {

@@ -270,6 +270,13 @@ rolling_sphere_result<T> rolling_sphere_motion(const T& mass, const T& A, const 
   return r;
 }
 
+/// rolling_sphere_motion_into compiled with the model, once per standard scalar (io/model.hpp).
+#define APPELL_MODEL_PHYSICS_rolling_sphere(EXTERN, T)                                                          \
+  EXTERN template void rolling_sphere_motion_into<T>(const T&, const T&, const T&, const rolling_surface<T>&,  \
+                                                     const vec3<T>&, const vec3<T>&, const vec3<T>&,           \
+                                                     const vec3<T>&, bool, bool, rolling_sphere_result<T>&);
+APPELL_EXTERN_MODEL_PHYSICS(rolling_sphere)
+
 }  // namespace appell
 
 namespace appell {

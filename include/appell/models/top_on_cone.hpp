@@ -219,6 +219,14 @@ top_on_cone_result<T> top_on_cone_motion(const symmetric_top<T, Angles>& top, co
   return r;
 }
 
+/// top_on_cone_motion_into on the model's own top and cone (a scene's), compiled with the model
+/// once per standard scalar (io/model.hpp).
+#define APPELL_MODEL_PHYSICS_top_on_cone(EXTERN, T)                                                       \
+  EXTERN template void top_on_cone_motion_into<T, euler_angles, expression_cone<T>>(                      \
+      const symmetric_top<T, euler_angles>&, const expression_cone<T>&, const top_on_cone_state<T>&, bool, \
+      top_on_cone_result<T>&);
+APPELL_EXTERN_MODEL_PHYSICS(top_on_cone)
+
 }  // namespace appell
 
 namespace appell {

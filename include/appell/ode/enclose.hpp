@@ -388,6 +388,10 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
   const I zero_h = I(0);
   while (true) {
     if (!(upper(t) < lower(t_end))) break;  // t_end reached
+    // Inside an upward_rounding scope (evaluation_scope<interval>) the interval operations trust
+    // the mode: a caller's callback or other library that switched it refuses the run here, before
+    // a step computed in the wrong mode (kv's own switches did so: docs/motion.md, "Against kv").
+    verify_upward_rounding("enclose");
     // Over X: the coefficients to p (the a priori enclosure's polynomial to p - 1; the step size
     // from the last two), and the slopes of the first q only (see the step end).
     // A step that cannot be completed ends the run there, what was enclosed kept: the motion may
@@ -621,6 +625,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
       over_step([&](const vector_t<jet<I>>& x, std::vector<named_values<jet<I>>>& o) { prob.invariants(x, o); },
                 step.invariants);
     }
+    verify_upward_rounding("enclose");  // the right-hand side's own code may have switched it
     emit(step);
     ++st.steps;
     t = step.t1;
@@ -636,6 +641,8 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     }
     if (last) break;
     } catch (const std::exception& e) {
+      // a rounding mode lost is the caller's error, not the motion's: it leaves the run
+      if (::appell::detail::upward_known && !::appell::detail::mxcsr_is_upward()) throw;
       // a refusal of the right-hand side's own (an expression's derivative at a branch point is
       // std::invalid_argument) ends the motion as a domain error does; other errors are bugs
       if (dynamic_cast<const run_stopped*>(&e)) {  // on request (--max-seconds): not a failure of the motion

@@ -120,6 +120,17 @@ class nearest_rounding {
   bool was_known_;
 };
 
+/// Inside an upward_rounding scope the interval operations trust the mode without reading it:
+/// refuses (certification_error naming `who`) when code run inside the scope left the unit
+/// rounding otherwise, so that nothing computed after the change is given out as proved.  Outside
+/// a scope it checks nothing (each operation then sets the mode itself).
+inline void verify_upward_rounding(const char* who) {
+  if (detail::upward_known && !detail::mxcsr_is_upward())
+    throw certification_error(std::string(who) +
+                              ": the rounding mode was changed inside an upward-rounding scope (by code the scope ran: a "
+                              "callback, another library); nothing computed after the change is proved");
+}
+
 struct interval_arith : boost::numeric::interval_lib::rounded_arith_opp<double> {
   static double opaque(double x) {
     asm volatile("" : "+x"(x));
