@@ -4,6 +4,7 @@
 // 27, pelvis fixed) and appell's own arm, in one run; and cost against size on generated serial
 // chains of 1 to 64 links.  Goals (issue 32): the WAM within 1 ms in interval and 20 ms in mpfi at
 // 113 bits; the Atlas within 10 ms in interval.
+// The same without the checks (the engines' work: bench/robots_vs_engines.sh, fd-SCALAR/ROBOT).
 // Run: build/bench/appell_bench_urdf
 #include <benchmark/benchmark.h>
 
@@ -15,6 +16,7 @@
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/scene.hpp"
+#include "appell/models/system.hpp"
 #include "median_reporter.hpp"
 
 using namespace appell;
@@ -73,6 +75,49 @@ void bench(benchmark::State& state, std::string scalar, std::optional<unsigned> 
   });
 }
 
+/// The engines' work (bench/robots_vs_engines.sh): forward dynamics and every joint's wrench,
+/// without the checks (eq. (4), each joint's virtual work), into one evaluation reused.
+void bench_engine_work(benchmark::State& state, std::string scalar, std::optional<unsigned> bits, std::string file) {
+  const scene_input scene = read_scene_file(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file);
+  with_scalar(scalar, bits, [&]<class T>(std::type_identity<T>) {
+    const prepared_scene<T> prepared = prepare<T>(scene);
+    evaluation<T> e;
+    for (auto _ : state) {
+      compute_into(prepared, e, with_checks::no);
+      benchmark::DoNotOptimize(e);
+    }
+    return 0;
+  });
+}
+
+/// The dynamics alone, by the two paths in one run (system/tree.hpp against the generic path):
+/// M, b, Q, u' and every joint's wrench; `tree` false: the Jacobians' assembly and the joint
+/// wrenches from the Jacobians (the path every robot took before the recursions).
+void bench_path(benchmark::State& state, std::string scalar, std::string file, bool tree) {
+  const scene_input scene = read_scene_file(std::string(APPELL_SOURCE_DIR + "/data/scenes/") + file);
+  with_scalar(scalar, std::nullopt, [&]<class T>(std::type_identity<T>) {
+    const evaluation_scope<T> scope;
+    const auto m = system_model::prepare<T>(scene.as<system_input>());
+    appell_equations<T> eq;
+    vector_t<T> udot;
+    std::vector<joint_wrench_result<T>> w;
+    const vector_t<T>* none = nullptr;
+    for (auto _ : state) {
+      if (tree) {
+        tree_equations_into<T, T>(m.sys, m.q, m.u, m.t, eq);
+        eq.accelerations_into(udot);
+        joint_wrenches_into(m.sys, m.q, m.u, m.t, udot, none, w);
+      } else {
+        gibbs_appell_into(expression_system<T>{&m.sys}, m.q, m.u, m.t, eq);
+        eq.accelerations_into(udot);
+        joint_wrenches_by_jacobians_into(m.sys, m.q, m.u, m.t, udot, none, w);
+      }
+      benchmark::DoNotOptimize(w);
+    }
+    return 0;
+  });
+}
+
 class table_reporter : public median_reporter {
  public:
   void Finalize() override {
@@ -95,6 +140,16 @@ class table_reporter : public median_reporter {
       if (name == "urdf_atlas.json") {
         const double i = ns(std::string("interval/") + r);
         std::cout << "   interval <= 10000 " << (i <= 1e7 ? "met" : "MISSED");
+      }
+      std::cout << "\n";
+    }
+    std::cout << "\nthe dynamics alone (M, b, Q, u', every joint's wrench), microseconds: Jacobians / recursion\n";
+    for (const char* r : robots) {
+      std::cout << "  " << std::left << std::setw(24) << r << std::right;
+      for (const char* s : {"double", "interval"}) {
+        const double g = ns(std::string("jacobians-") + s + "/" + r), t = ns(std::string("recursion-") + s + "/" + r);
+        std::cout << std::setw(10) << s << std::fixed << std::setprecision(1) << std::setw(9) << g / 1e3 << " /"
+                  << std::setw(7) << t / 1e3 << " (" << std::setprecision(1) << g / t << "x)";
       }
       std::cout << "\n";
     }
@@ -128,8 +183,15 @@ class table_reporter : public median_reporter {
 int main(int argc, char** argv) {
   for (const char* r : robots) {
     if (std::string(r) != "urdf_appell_arm.json" && !std::filesystem::exists("/usr/share/doc/dart/data")) continue;
-    for (const auto& [s, b] : scalars)
+    for (const auto& [s, b] : scalars) {
       benchmark::RegisterBenchmark((std::string(s) + "/" + r).c_str(), bench, std::string(s), b, std::string(r));
+      benchmark::RegisterBenchmark((std::string("fd-") + s + "/" + r).c_str(), bench_engine_work, std::string(s), b,
+                                   std::string(r));
+    }
+    for (const char* s : {"double", "interval"})
+      for (const bool tree : {false, true})
+        benchmark::RegisterBenchmark((std::string(tree ? "recursion-" : "jacobians-") + s + "/" + r).c_str(), bench_path,
+                                     std::string(s), std::string(r), tree);
   }
   for (int n : chain_sizes)
     for (const char* s : {"double", "interval"})

@@ -130,7 +130,7 @@ struct system_model {
     const scratch<appell_equations<T>, site> eq_held;
     const scratch<vector_t<T>, site> efforts_held, ones;
     const appell_equations<T>& eq = *eq_held;
-    gibbs_appell_into(sys, m.q, m.u, m.t, *eq_held);
+    system_equations_into<T, T>(m.sys, m.q, m.u, m.t, *eq_held);
     vector_t<T>& efforts = *efforts_held;
     efforts.resize(n);
     for (int i = 0; i < n; ++i) {  // P - Q, P = M u' + b as eq.P computes it (detail::product's sums)

@@ -170,7 +170,13 @@ struct system_problem {
     vector_t<S> qd, acc;
     if (s == 0) {
       qd = sys.template qdot<S>(a.q, a.v_a, a.t);
-      acc = cotton_free_accelerations<4>(sys, a.q, a.v_a, a.t, 0);
+      if (tree_recursions_apply(model->sys)) {  // by the recursions along the tree (system/tree.hpp)
+        appell_equations<S> e;
+        tree_equations_into<T, S>(model->sys, a.q, a.v_a, a.t, e);
+        acc = e.accelerations();
+      } else {
+        acc = cotton_free_accelerations<4>(sys, a.q, a.v_a, a.t, 0);
+      }
     } else {
       const auto adapted = change_speeds(sys, change(), speeds());
       vector_t<S> v = vector_t<S>::Zero(speeds());
@@ -194,7 +200,7 @@ struct system_problem {
     const vector_t<S> u = all_speeds(a);
     vector_t<S> acc, reactions;
     if (constraints() == 0) {
-      acc = gibbs_appell(sys, a.q, u, a.t).accelerations();
+      acc = system_equations<T, S>(model->sys, a.q, u, a.t).accelerations();
     } else {
       const constrained_motion<S> m = cotton_reactions(sys, change(), a.q, u, a.t);
       acc = m.accelerations;

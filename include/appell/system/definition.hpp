@@ -8,6 +8,8 @@
 //                   solve_speeds
 //   wrenches.hpp    constraint_wrenches: the constraints' reactions as wrenches
 //   contacts.hpp    contact_forces: normal and tangential forces of the contacts
+//   tree.hpp        a tree of links by recursion: M (composite rigid bodies), b, Q and the
+//                   links' accelerations (Newton-Euler passes)
 //   motion.hpp      system_motion: u', the reactions, the multipliers and eq. (4)
 //   joint_wrenches.hpp, linearize.hpp: a tree's joint wrenches; the linearized motion
 // The reader (src/models/system.cpp) builds the definition from a file in named phases.

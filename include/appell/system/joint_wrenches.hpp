@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "appell/system/motion.hpp"
+#include "appell/system/tree.hpp"
 
 namespace appell {
 
@@ -35,15 +36,51 @@ struct joint_wrench_result {
   T residual = T(0);                        ///< axis . (moment or force) - effort: 0
 };
 
-/// Every link's joint wrench (in the definition's link order) at (q, u, t) with accelerations
-/// udot.  efforts: the efforts when they are not part of the system (inverse dynamics: the
-/// efforts Appell's equations give, per coordinate); null: the links' own efforts (forward
-/// dynamics: they act in the bodies' forces, and each wrench carries its joint's).
+namespace detail {
+/// The wrenches from each link's subtree sums (F, M: the inertia forces minus the applied ones,
+/// about the link's origin, on its axes) and its joint's own actuator.
 template <Scalar T>
-void joint_wrenches_into(const compiled_system<T>& c, const vector_t<T>& q, const vector_t<T>& u, const T& t,
-                         const vector_t<T>& udot, const vector_t<T>* efforts,
-                         std::vector<joint_wrench_result<T>>& out) {
+void joint_wrenches_from_sums(const compiled_system<T>& c, const std::vector<vec3<T>>& F, const std::vector<vec3<T>>& M,
+                              const std::vector<T>& values, const vector_t<T>* efforts,
+                              std::vector<joint_wrench_result<T>>& out) {
   using K = system_joint_definition::kind;
+  const std::size_t n = c.links.size();
+  out.assign(n, joint_wrench_result<T>{});
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& L = c.links[k];
+    // The wrench: the subtree's sums and this joint's own actuator (not in the sums: its other half
+    // acts on the parent).
+    joint_wrench_result<T>& w = out[k];
+    w.force = F[k];
+    w.moment = M[k];
+    if (L.type == K::fixed) continue;
+    if (efforts) {
+      w.effort = (*efforts)(L.coordinate);
+    } else if (L.effort) {
+      w.effort = L.effort.at(values.data());
+      const vec3<T> e = compiled_system<T>::scaled(L.axis, w.effort);
+      if (L.type == K::revolute) {
+        w.moment += e;
+      } else {
+        w.force += e;
+        w.moment += cross(L.com, e);
+      }
+    }
+    w.residual = dot(L.axis, L.type == K::revolute ? w.moment : w.force) - w.effort;
+  }
+}
+}  // namespace detail
+
+/// Every link's joint wrench (in the definition's link order) at (q, u, t) with accelerations
+/// udot, the bodies' accelerations from the Jacobians of the generic path (any system with
+/// links: the speeds may be quasi-velocities).  efforts: the efforts when they are not part of
+/// the system (inverse dynamics: the efforts Appell's equations give, per coordinate); null: the
+/// links' own efforts (forward dynamics: they act in the bodies' forces, and each wrench carries
+/// its joint's).
+template <Scalar T>
+void joint_wrenches_by_jacobians_into(const compiled_system<T>& c, const vector_t<T>& q, const vector_t<T>& u,
+                                      const T& t, const vector_t<T>& udot, const vector_t<T>* efforts,
+                                      std::vector<joint_wrench_result<T>>& out) {
   using link = typename compiled_system<T>::link;
   const expression_system<T> sys{&c};
   // working storage borrowed (linalg/scratch.hpp)
@@ -67,7 +104,6 @@ void joint_wrenches_into(const compiled_system<T>& c, const vector_t<T>& q, cons
   std::vector<vec3<T>>&F = *F_held, &M = *M_held;  // sum (m a - F), about L's origin
   F.assign(n, zero_matrix<vec3<T>>());
   M.assign(n, zero_matrix<vec3<T>>());
-  out.assign(n, joint_wrench_result<T>{});
   for (std::size_t k = n; k-- > 0;) {
     const link& L = c.links[k];
     const body_kinematics<T>& B = kin[static_cast<std::size_t>(L.body)];
@@ -93,32 +129,30 @@ void joint_wrenches_into(const compiled_system<T>& c, const vector_t<T>& q, cons
     }
     F[k] += f;
     M[k] += vec3<T>(m + cross(L.com, f));
-    // The wrench: the subtree's sums and this joint's own actuator (not in the sums: its other half
-    // acts on the parent).
-    joint_wrench_result<T>& w = out[k];
-    w.force = F[k];
-    w.moment = M[k];
-    if (L.type != K::fixed) {
-      if (efforts) {
-        w.effort = (*efforts)(L.coordinate);
-      } else if (L.effort) {
-        w.effort = L.effort.at(values.data());
-        const vec3<T> e = compiled_system<T>::scaled(L.axis, w.effort);
-        if (L.type == K::revolute) {
-          w.moment += e;
-        } else {
-          w.force += e;
-          w.moment += cross(L.com, e);
-        }
-      }
-      w.residual = dot(L.axis, L.type == K::revolute ? w.moment : w.force) - w.effort;
-    }
     if (L.parent < 0) continue;
     const auto p = static_cast<std::size_t>(c.link_of[static_cast<std::size_t>(L.parent)]);
     const vec3<T> fp = c.to_parent(L, states[k], F[k]);
     F[p] += fp;
     M[p] += vec3<T>(c.to_parent(L, states[k], M[k]) + cross(states[k].offset, fp));
   }
+  detail::joint_wrenches_from_sums(c, F, M, values, efforts, out);
+}
+
+/// Every link's joint wrench, as joint_wrenches_by_jacobians_into, the links' accelerations by
+/// the recursion along the tree (system/tree.hpp) where the speeds are the coordinates' rates.
+template <Scalar T>
+void joint_wrenches_into(const compiled_system<T>& c, const vector_t<T>& q, const vector_t<T>& u, const T& t,
+                         const vector_t<T>& udot, const vector_t<T>* efforts,
+                         std::vector<joint_wrench_result<T>>& out) {
+  if (!tree_accelerations_apply(c)) {
+    joint_wrenches_by_jacobians_into(c, q, u, t, udot, efforts, out);
+    return;
+  }
+  struct site;
+  const scratch<std::vector<T>, site> values_held;
+  const scratch<std::vector<vec3<T>>, site> F_held, M_held;
+  tree_subtree_wrenches_into<T, T>(c, q, u, t, udot, *F_held, *M_held, *values_held);
+  detail::joint_wrenches_from_sums(c, *F_held, *M_held, *values_held, efforts, out);
 }
 template <Scalar T>
 std::vector<joint_wrench_result<T>> joint_wrenches(const compiled_system<T>& c, const vector_t<T>& q,

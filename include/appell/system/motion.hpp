@@ -4,8 +4,25 @@
 #pragma once
 
 #include "appell/system/contacts.hpp"
+#include "appell/system/tree.hpp"
 
 namespace appell {
+
+/// Appell's equations M u' + b = Q of the system without its constraints at (q, u, t): by the
+/// tree's recursions where they apply (system/tree.hpp), else by the generic path.
+template <Scalar T, class S>
+void system_equations_into(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u, const S& t,
+                           appell_equations<S>& e) {
+  if (tree_recursions_apply(c)) tree_equations_into<T, S>(c, q, u, t, e);
+  else gibbs_appell_into(expression_system<T>{&c}, q, u, t, e);
+}
+template <Scalar T, class S>
+appell_equations<S> system_equations(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u,
+                                     const S& t) {
+  appell_equations<S> e;
+  system_equations_into<T, S>(c, q, u, t, e);
+  return e;
+}
 
 template <Scalar T>
 struct system_motion_result {
@@ -32,7 +49,7 @@ void system_motion_into(const compiled_system<T>& c, const vector_t<T>& q, const
   ones->setOnes(n);
   if (c.constraints.empty()) {
     const scratch<appell_equations<T>, site> eq;
-    gibbs_appell_into(sys, q, u, t, *eq);
+    system_equations_into<T, T>(c, q, u, t, *eq);
     eq->accelerations_into(r.accelerations);
     r.reactions.resize(0);  // empty already after the first evaluation of the scene: no allocation
     r.multipliers.resize(0);

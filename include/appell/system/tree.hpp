@@ -1,0 +1,332 @@
+// appell/system/tree.hpp -- a tree of links by recursion along the tree: the mass matrix by
+// composite rigid bodies, the velocity-product terms and the generalized forces by a
+// Newton-Euler pass, each joint's wrench by a second pass with the accelerations.
+//
+// The generic path (dynamics/gibbs_appell.hpp) differentiates every body's velocity with respect
+// to every speed and assembles M = sum m Jv^T Jv + Jw^T I Jw: O(N^2) Jacobian columns, O(N^3)
+// products for a chain.  For a tree of links (every body a link, the speeds the coordinates'
+// rates) the same Appell equations M u' + b = Q come from recursions along the tree, as the
+// engines compute them (Featherstone, "Rigid Body Dynamics Algorithms", ch. 5 and 6):
+//
+//  * forward, parents first, on each link's axes L (origin O at its joint):
+//      omega, v_O                   (compiled_system::link_states_into)
+//      alpha = X^T alpha_p + omega x (axis q')   + axis q''   (revolute)
+//      a_O   = X^T (a_p + alpha_p x r + omega_p x (omega_p x r))
+//              + 2 omega x (axis q') + axis q''                 (prismatic: the 2nd and 3rd terms)
+//    with X = R0 Rot(axis, q) (L's axes to the parent's), r = O - O_p on the parent's axes;
+//    q'' = 0 gives the velocity-product terms;
+//  * per link, at its centre G = O + c:  a_G = a_O + alpha x c + omega x (omega x c),
+//    f = m a_G, n_G = I alpha + omega x I omega on the inertia's own axes (exact I, as the
+//    generic path keeps it), moment about O:  n_O = n_G + c x f;
+//  * backward, children first: each link's sums over its subtree, moved to the parent's origin
+//    (f_p += X f,  n_p += X n + r x X f); the joint's row of any generalized force is
+//    axis . n (revolute) or axis . f (prismatic):  b from the inertia forces at q'' = 0,
+//    Q from the applied ones (gravity, the actuators' pairs of link_states_into);
+//  * M by composite rigid bodies: each subtree's mass m, first moment h = m c and inertia about
+//    its root's origin I_O, accumulated backward (rotated by X, shifted by r); column i is the
+//    momentum of subtree i moving with unit speed i, F = (axis x h, I_O axis) (revolute) or
+//    (m axis, h x axis) (prismatic), read by each ancestor j's joint as it moves up the tree:
+//    M_ji = S_j . F.
+//
+// Cost O(N d) for M (d the tree's depth) and O(N) for the rest; the same numbers as the generic
+// path in exact arithmetic: tests/tree_recursions.cpp holds the two to each other (point types
+// to within their precision, interval enclosures intersecting) and to MPFR at 256 bits.
+#pragma once
+
+#include <vector>
+
+#include "appell/system/tapes.hpp"
+
+namespace appell {
+
+/// Whether a system's Appell equations come from the tree's recursions: every body a link, the
+/// speeds the coordinates' rates, every coordinate a joint's, no constraint.
+template <Scalar T>
+bool tree_recursions_apply(const compiled_system<T>& c) {
+  const system_definition& d = *c.def;
+  if (!d.rates_as_speeds || !d.constraints.empty() || c.links.empty() || c.links.size() != d.bodies.size())
+    return false;
+  int moving = 0;
+  for (const auto& L : c.links) moving += L.coordinate >= 0 ? 1 : 0;
+  return moving == d.vars.coordinates && d.vars.coordinates == d.vars.speeds;
+}
+
+/// Whether the links' accelerations can come from the recursion (the joints' wrenches): the
+/// speeds are the coordinates' rates, so that q'' = u'.
+template <Scalar T>
+bool tree_accelerations_apply(const compiled_system<T>& c) {
+  return c.def->rates_as_speeds && !c.links.empty();
+}
+
+namespace detail {
+/// One link's quantities of the passes, on its own axes.
+template <class S>
+struct tree_link {
+  vec3<S> alpha, accel;   ///< angular acceleration, the origin's acceleration
+  vec3<S> f, n;           ///< inertia force and its moment about the origin (subtree sums after the backward pass)
+  vec3<S> fa, na;         ///< applied force and moment about the origin (likewise)
+  S m;                    ///< composite: mass
+  vec3<S> h;              ///< composite: first moment about the origin, m c
+  mat3<S> I;              ///< composite: inertia about the origin
+};
+
+template <Scalar T, class S>
+vec3<S> base_vector(const vec3<T>& a) {
+  return vec3<S>(from_base<S>(a(0)), from_base<S>(a(1)), from_base<S>(a(2)));
+}
+/// x w, component by component (no Eigen expression of a scalar other than double).
+template <class S>
+vec3<S> times(const S& x, const vec3<S>& w) {
+  return vec3<S>(x * w(0), x * w(1), x * w(2));
+}
+
+/// X W X^T for a matrix W on the link's axes, on the parent's: columns, then rows, turned.
+template <Scalar T, class S>
+mat3<S> to_parent_matrix(const compiled_system<T>& c, const typename compiled_system<T>::link& L,
+                         const typename compiled_system<T>::template link_state<S>& st, const mat3<S>& W) {
+  mat3<S> A, B;
+  for (int j = 0; j < 3; ++j) A.col(j) = c.to_parent(L, st, vec3<S>(W.col(j)));
+  for (int i = 0; i < 3; ++i) B.row(i) = c.to_parent(L, st, vec3<S>(A.row(i).transpose())).transpose();
+  return B;
+}
+
+/// The node values of the body tape at (q, u, t), gravity and the links' motion; then the
+/// forward pass (accelerations, with q'' = udot or, null, 0) and each link's inertia and applied
+/// forces at its origin (not yet summed).
+template <Scalar T, class S>
+void tree_forward(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u, const S& t,
+                  const vector_t<S>* udot, std::vector<S>& values,
+                  std::vector<typename compiled_system<T>::template link_state<S>>& states,
+                  std::vector<tree_link<S>>& out) {
+  using K = system_joint_definition::kind;
+  struct site;
+  const scratch<std::vector<S>, site> x_held;
+  c.variables_into(q, u, t, *x_held);
+  c.evaluate_into(c.body_tape, *x_held, values);
+  const S* v = values.data();
+  vec3<S> g;
+  for (int i = 0; i < 3; ++i) g(i) = c.gravity[static_cast<std::size_t>(i)].at(v);
+  c.link_states_into(q, u, g, v, states);  // q' = u
+  const std::size_t n = c.links.size();
+  out.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& L = c.links[k];
+    const auto& st = states[k];
+    tree_link<S>& o = out[k];
+    if (L.parent >= 0) {
+      const auto p = static_cast<std::size_t>(c.link_of[static_cast<std::size_t>(L.parent)]);
+      const auto& sp = states[p];
+      const tree_link<S>& op = out[p];
+      const vec3<S>& r = st.offset;
+      o.alpha = c.to_link(L, st, op.alpha);
+      o.accel = c.to_link(L, st, vec3<S>(op.accel + cross(op.alpha, r) + cross(sp.omega, cross(sp.omega, r))));
+    } else {
+      o.alpha = vec3<S>(S(0), S(0), S(0));
+      o.accel = vec3<S>(S(0), S(0), S(0));
+    }
+    if (L.type != K::fixed) {
+      const S qd = u(L.coordinate);
+      const vec3<S> axis = base_vector<T, S>(L.axis);
+      // omega_p (on L's axes) x axis q'.  The link's own omega serves where the axis is along a
+      // coordinate axis (its axis q' term adds axis x axis, exactly 0 there); an oblique axis
+      // takes the parent's, turned, where intervals would carry (axis q') x (axis q') as a width.
+      vec3<S> wp = st.omega;
+      if (L.type == K::revolute && L.along < 0)
+        wp = L.parent >= 0 ? c.to_link(L, st, states[static_cast<std::size_t>(c.link_of[static_cast<std::size_t>(L.parent)])].omega)
+                           : vec3<S>(S(0), S(0), S(0));
+      const vec3<S> turn = cross(wp, detail::times(qd, axis));
+      if (L.type == K::revolute) o.alpha += turn;
+      else o.accel += vec3<S>(turn + turn);
+      if (udot) {
+        const vec3<S> along = detail::times((*udot)(L.coordinate), axis);
+        if (L.type == K::revolute) o.alpha += along;
+        else o.accel += along;
+      }
+    }
+    // The body: inertia forces at G, moved to O; applied forces likewise.
+    const auto& b = c.bodies[static_cast<std::size_t>(L.body)];
+    const S m = b.mass.at(v);
+    const vec3<S> com = base_vector<T, S>(L.com);
+    const vec3<S> aG = o.accel + cross(o.alpha, com) + cross(st.omega, cross(st.omega, com));
+    o.f = times(m, aG);
+    vec3<S> nG = vec3<S>(S(0), S(0), S(0));
+    if (b.has_inertia) {
+      const mat3<S> I = b.inertia_on_body_axes(v);
+      if (L.Rin_identity) {
+        nG = mat_vec(I, o.alpha) + gyroscopic(I, st.omega);
+      } else {
+        const vec3<S> al = compiled_system<T>::transpose_times(L.Rin, o.alpha);
+        const vec3<S> w = compiled_system<T>::transpose_times(L.Rin, st.omega);
+        nG = compiled_system<T>::times(L.Rin, vec3<S>(mat_vec(I, al) + gyroscopic(I, w)));
+      }
+    }
+    o.n = nG + cross(com, o.f);
+    o.fa = vec3<S>(times(m, st.gravity) + st.force);
+    o.na = st.couple + cross(com, o.fa);
+  }
+}
+
+/// The backward pass: each link's sums over its subtree, moved to its origin (children first).
+template <Scalar T, class S>
+void tree_backward(const compiled_system<T>& c,
+                   const std::vector<typename compiled_system<T>::template link_state<S>>& states,
+                   std::vector<tree_link<S>>& links, bool applied) {
+  for (std::size_t k = links.size(); k-- > 0;) {
+    const auto& L = c.links[k];
+    if (L.parent < 0) continue;
+    const auto p = static_cast<std::size_t>(c.link_of[static_cast<std::size_t>(L.parent)]);
+    const auto& st = states[k];
+    const vec3<S> f = c.to_parent(L, st, links[k].f);
+    links[p].f += f;
+    links[p].n += vec3<S>(c.to_parent(L, st, links[k].n) + cross(st.offset, f));
+    if (!applied) continue;
+    const vec3<S> fa = c.to_parent(L, st, links[k].fa);
+    links[p].fa += fa;
+    links[p].na += vec3<S>(c.to_parent(L, st, links[k].na) + cross(st.offset, fa));
+  }
+}
+
+/// A joint's row of a generalized force given as a force and moment about its origin.
+template <Scalar T, class S>
+S joint_row(const typename compiled_system<T>::link& L, const vec3<S>& f, const vec3<S>& n) {
+  const vec3<S> axis = base_vector<T, S>(L.axis);
+  return L.type == system_joint_definition::kind::revolute ? dot(axis, n) : dot(axis, f);
+}
+}  // namespace detail
+
+/// Appell's equations M u' + b = Q of a tree (tree_recursions_apply) at (q, u, t), by the
+/// recursions at the top of this file.  S: T, or numbers built on T (jets, slopes, duals).
+template <Scalar T, class S>
+void tree_equations_into(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u, const S& t,
+                         appell_equations<S>& e) {
+  using K = system_joint_definition::kind;
+  using link_state = typename compiled_system<T>::template link_state<S>;
+  struct site;
+  const scratch<std::vector<S>, site> values_held;
+  const scratch<std::vector<link_state>, site> states_held;
+  const scratch<std::vector<detail::tree_link<S>>, site> links_held;
+  std::vector<detail::tree_link<S>>& links = *links_held;
+  const std::vector<link_state>& states = *states_held;
+  detail::tree_forward<T, S>(c, q, u, t, nullptr, *values_held, *states_held, links);
+  detail::tree_backward<T, S>(c, states, links, true);
+  const int n = c.def->vars.speeds;
+  e.M.setZero(n, n);
+  e.b.setZero(n);
+  e.Q.setZero(n);
+  const std::size_t N = c.links.size();
+  const S* v = values_held->data();
+  for (std::size_t k = 0; k < N; ++k) {
+    const auto& L = c.links[k];
+    if (L.type == K::fixed) continue;
+    e.b(L.coordinate) = detail::joint_row<T, S>(L, links[k].f, links[k].n);
+    e.Q(L.coordinate) = detail::joint_row<T, S>(L, links[k].fa, links[k].na);
+  }
+  // Composite rigid bodies: each link's own (m, h, I about O), then the subtrees' sums.
+  for (std::size_t k = 0; k < N; ++k) {
+    const auto& L = c.links[k];
+    const auto& b = c.bodies[static_cast<std::size_t>(L.body)];
+    detail::tree_link<S>& o = links[k];
+    o.m = b.mass.at(v);
+    const vec3<S> com = detail::base_vector<T, S>(L.com);
+    o.h = detail::times(o.m, com);
+    mat3<S> I = b.has_inertia ? b.inertia_on_body_axes(v) : mat3<S>(zero_matrix<mat3<S>>());
+    if (b.has_inertia && !L.Rin_identity) {  // Rin I Rin^T
+      mat3<S> A, B;
+      for (int j = 0; j < 3; ++j) A.col(j) = compiled_system<T>::times(L.Rin, vec3<S>(I.col(j)));
+      for (int i = 0; i < 3; ++i) B.row(i) = compiled_system<T>::times(L.Rin, vec3<S>(A.row(i).transpose())).transpose();
+      I = B;
+    }
+    // + m (|c|^2 1 - c c^T), with h = m c: h_a c_a + h_b c_b on the diagonal, -h_i c_j off it
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        if (i == j) {
+          const int a = (i + 1) % 3, bb = (i + 2) % 3;
+          I(i, i) += o.h(a) * com(a) + o.h(bb) * com(bb);
+        } else {
+          I(i, j) -= o.h(i) * com(j);
+        }
+      }
+    o.I = I;
+  }
+  for (std::size_t k = N; k-- > 0;) {
+    const auto& L = c.links[k];
+    if (L.parent < 0) continue;
+    const auto p = static_cast<std::size_t>(c.link_of[static_cast<std::size_t>(L.parent)]);
+    const auto& st = states[k];
+    const detail::tree_link<S>& o = links[k];
+    const vec3<S>& r = st.offset;
+    const vec3<S> h = c.to_parent(L, st, o.h);
+    const mat3<S> Ir = detail::to_parent_matrix<T, S>(c, L, st, o.I);
+    detail::tree_link<S>& op = links[p];
+    // shift to the parent's origin: + m (|r|^2 1 - r r^T) + (2 r.h 1 - r h^T - h r^T)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        S x = Ir(i, j);
+        if (i == j) {
+          const int a = (i + 1) % 3, bb = (i + 2) % 3;
+          // 2 r.h - 2 r_i h_i, written without the r_i h_i that would cancel only in exact arithmetic
+          const S rhi = r(a) * h(a) + r(bb) * h(bb);
+          x += o.m * (r(a) * r(a) + r(bb) * r(bb)) + (rhi + rhi);
+        } else {
+          x -= o.m * (r(i) * r(j)) + (r(i) * h(j) + h(i) * r(j));
+        }
+        op.I(i, j) += x;
+      }
+    op.h += vec3<S>(h + detail::times(o.m, r));
+    op.m += o.m;
+  }
+  for (std::size_t k = 0; k < N; ++k) {
+    const auto& L = c.links[k];
+    if (L.type == K::fixed) continue;
+    const detail::tree_link<S>& o = links[k];
+    const vec3<S> axis = detail::base_vector<T, S>(L.axis);
+    vec3<S> f, nm;
+    if (L.type == K::revolute) {
+      f = cross(axis, o.h);
+      nm = mat_vec(o.I, axis);
+    } else {
+      f = detail::times(o.m, axis);
+      nm = cross(o.h, axis);
+    }
+    const int i = L.coordinate;
+    e.M(i, i) = detail::joint_row<T, S>(L, f, nm);
+    std::size_t j = k;
+    while (c.links[j].parent >= 0) {
+      const auto& Lj = c.links[j];
+      const auto& st = states[j];
+      f = c.to_parent(Lj, st, f);
+      nm = vec3<S>(c.to_parent(Lj, st, nm) + cross(st.offset, f));
+      j = static_cast<std::size_t>(c.link_of[static_cast<std::size_t>(Lj.parent)]);
+      const auto& Lp = c.links[j];
+      if (Lp.type == K::fixed) continue;
+      const S mij = detail::joint_row<T, S>(Lp, f, nm);
+      e.M(Lp.coordinate, i) = mij;
+      e.M(i, Lp.coordinate) = mij;
+    }
+  }
+}
+
+/// Every link's motion from the recursion with the accelerations udot: for each link, its
+/// inertia force and moment about its origin minus the applied ones, summed over its subtree,
+/// on its axes (the joint's wrench before its own actuator: system/joint_wrenches.hpp).
+template <Scalar T, class S>
+void tree_subtree_wrenches_into(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u, const S& t,
+                                const vector_t<S>& udot, std::vector<vec3<S>>& F, std::vector<vec3<S>>& M,
+                                std::vector<S>& values) {
+  using link_state = typename compiled_system<T>::template link_state<S>;
+  struct site;
+  const scratch<std::vector<link_state>, site> states_held;
+  const scratch<std::vector<detail::tree_link<S>>, site> links_held;
+  std::vector<detail::tree_link<S>>& links = *links_held;
+  detail::tree_forward<T, S>(c, q, u, t, &udot, values, *states_held, links);
+  for (auto& o : links) {
+    o.f -= o.fa;
+    o.n -= o.na;
+  }
+  detail::tree_backward<T, S>(c, *states_held, links, false);
+  F.resize(links.size());
+  M.resize(links.size());
+  for (std::size_t k = 0; k < links.size(); ++k) F[k] = links[k].f, M[k] = links[k].n;
+}
+
+}  // namespace appell

@@ -1,0 +1,307 @@
+// A tree's Appell equations by the recursions along the tree (system/tree.hpp: composite rigid
+// bodies for M, Newton-Euler passes for b, Q and each joint's wrench) against the generic path
+// (dynamics/gibbs_appell.hpp: the Jacobians of every body's velocity, differentiated on dual
+// numbers, and M = sum m Jv^T Jv + Jw^T I Jw) -- two independent computations of the same numbers:
+//  * random trees (branches, several roots, revolute joints about elementary and oblique axes,
+//    prismatic and fixed joints, turned frames and inertia axes, efforts depending on the speeds):
+//    in double the two agree to within double's precision; the interval recursion encloses the
+//    generic path's value at 512 bits (MPFR), and so does the recursion in MPFI at 256 bits,
+//    for M, b, Q, the accelerations and every joint's wrench;
+//  * the robots shipped (dart-doc's WAM, KR5 and Atlas, appell's arm), at random states: the same;
+//  * on Taylor series (jets: the motion's right-hand side, models/system_motion.hpp, runs the
+//    recursion on jets and slopes), every coefficient of M, b, Q by both paths agrees;
+//  * which systems take the recursion: a tree of links, not a system with constraints or
+//    quasi-velocities.
+#define BOOST_TEST_MODULE tree_recursions
+#include <boost/test/unit_test.hpp>
+
+#include <iomanip>
+#include <random>
+#include <sstream>
+
+#include "program_paths.hpp"  // APPELL_SOURCE_DIR (CMakeLists.txt)
+#include "appell/derivatives/jet.hpp"
+#include "appell/io/scene.hpp"
+#include "appell/models/system.hpp"
+#include "bounds_400.hpp"
+
+using namespace appell;
+using testing::bounds_of;
+using testing::ref_t;
+
+namespace {
+
+std::string num(double x) {
+  std::ostringstream o;  // fixed notation: the reader's decimals (no exponent)
+  o.setf(std::ios::fixed);
+  o.precision(12);
+  o << x;
+  return o.str();
+}
+std::string list3(double a, double b, double c) { return "[\"" + num(a) + "\", \"" + num(b) + "\", \"" + num(c) + "\"]"; }
+
+/// A random tree of n links as a system file (SCENES.md, "links of a tree"), its state random too.
+std::string random_tree(std::mt19937_64& rng, int n) {
+  std::uniform_real_distribution<double> u01(0, 1), sym(-1, 1);
+  std::vector<std::string> coordinates;
+  std::string bodies, state;
+  for (int k = 0; k < n; ++k) {
+    const double pick = u01(rng);
+    const std::string type = k == 0 || pick < 0.55 ? "revolute" : pick < 0.8 ? "prismatic" : "fixed";
+    const std::string name = "l" + std::to_string(k);
+    std::string parent;
+    if (k > 0 && u01(rng) < 0.9) parent = "l" + std::to_string(std::uniform_int_distribution<int>(0, k - 1)(rng));
+    // principal moments satisfying the triangle inequality, small products
+    const double a = 0.02 + 0.08 * u01(rng), b = 0.02 + 0.08 * u01(rng);
+    const double c = std::abs(a - b) + 0.005 + (a + b - std::abs(a - b) - 0.01) * u01(rng);
+    // products of inertia or principal axes; a fixed link now and then a massless frame
+    const bool products = u01(rng) < 0.7, massless = type == "fixed" && u01(rng) < 0.4;
+    std::string body = "\"" + name + "\": {";
+    if (!massless) {
+      const double mass = 0.3 + 2 * u01(rng), xy = products ? 0.002 * sym(rng) : 0.0,
+                   yz = products ? 0.002 * sym(rng) : 0.0, zx = products ? 0.002 * sym(rng) : 0.0;
+      const double cx = 0.2 * sym(rng), cy = 0.2 * sym(rng), cz = 0.3 * sym(rng);
+      body += "\"mass\": \"" + num(mass) + "\", \"inertia\": [\"" + num(a) + "\", \"" + num(b) + "\", \"" + num(c) +
+              "\", \"" + num(xy) + "\", \"" + num(yz) + "\", \"" + num(zx) + "\"], \"inertial\": {\"xyz\": " + list3(cx, cy, cz);
+      if (u01(rng) < 0.5) {
+        const double r1 = sym(rng), r2 = sym(rng), r3 = sym(rng);
+        body += ", \"rpy\": " + list3(r1, r2, r3);
+      }
+      body += "}, ";
+    }
+    body += "\"joint\": {\"type\": \"" + type + "\"";
+    if (!parent.empty()) body += ", \"parent\": \"" + parent + "\"";
+    {
+      const double x = 0.3 * sym(rng), y = 0.3 * sym(rng), z = 0.4 * sym(rng);
+      body += ", \"origin\": " + list3(x, y, z);
+    }
+    if (u01(rng) < 0.6) {
+      const double r1 = 2 * sym(rng), r2 = 2 * sym(rng), r3 = 2 * sym(rng);
+      body += ", \"rpy\": " + list3(r1, r2, r3);
+    }
+    if (type != "fixed") {
+      const std::string q = "q" + std::to_string(k);
+      coordinates.push_back(q);
+      body += ", \"coordinate\": \"" + q + "\", \"axis\": ";
+      if (u01(rng) < 0.5) {
+        const int along = std::uniform_int_distribution<int>(0, 2)(rng);
+        const char* v[3] = {"0", "0", "0"};
+        v[along] = u01(rng) < 0.5 ? "1" : "-1";
+        body += std::string("[\"") + v[0] + "\", \"" + v[1] + "\", \"" + v[2] + "\"]";
+      } else {
+        const double x = sym(rng), y = sym(rng), z = 0.2 + u01(rng);
+        body += list3(x, y, z);
+      }
+      if (u01(rng) < 0.7) {
+        const double e0 = sym(rng), e1 = 0.1 * u01(rng);
+        body += ", \"effort\": \"" + num(e0) + " - " + num(e1) + "*" + q + "_dot\"";
+      }
+      const double qv = 3 * sym(rng), qd = 3 * sym(rng);
+      state += std::string(state.empty() ? "" : ", ") + "\"" + q + "\": \"" + num(qv) + "\", \"" + q + "_dot\": \"" +
+               num(qd) + "\"";
+    }
+    bodies += std::string(k ? ", " : "") + body + "}}";
+  }
+  std::string coords;
+  for (const auto& q : coordinates) coords += std::string(coords.empty() ? "" : ", ") + "\"" + q + "\"";
+  const double gx = sym(rng), gy = sym(rng), gz = -9.81 + sym(rng);
+  return "{\"model\": \"system\", \"coordinates\": [" + coords + "], \"gravity\": " + list3(gx, gy, gz) +
+         ", \"bodies\": {" + bodies + "}, \"state\": {" + state + "}}";
+}
+
+/// What both paths give at a state: M, b, Q, u' = M^-1 (Q - b), and every joint's wrench.
+template <class T>
+struct both {
+  appell_equations<T> eq;
+  vector_t<T> udot;
+  std::vector<joint_wrench_result<T>> wrenches;
+};
+template <class T>
+both<T> by_tree(const system_input& in, const vector_t<double>* q, const vector_t<double>* u) {
+  const evaluation_scope<T> scope;
+  auto m = system_model::prepare<T>(in);
+  if (q) m.q = q->cast<T>(), m.u = u->cast<T>();
+  both<T> r;
+  tree_equations_into<T, T>(m.sys, m.q, m.u, m.t, r.eq);
+  r.udot = r.eq.accelerations();
+  joint_wrenches_into(m.sys, m.q, m.u, m.t, r.udot, static_cast<const vector_t<T>*>(nullptr), r.wrenches);
+  return r;
+}
+template <class T>
+both<T> by_generic(const system_input& in, const vector_t<double>* q, const vector_t<double>* u) {
+  const evaluation_scope<T> scope;
+  auto m = system_model::prepare<T>(in);
+  if (q) m.q = q->cast<T>(), m.u = u->cast<T>();
+  both<T> r;
+  gibbs_appell_into(expression_system<T>{&m.sys}, m.q, m.u, m.t, r.eq);
+  r.udot = r.eq.accelerations();
+  joint_wrenches_by_jacobians_into(m.sys, m.q, m.u, m.t, r.udot, static_cast<const vector_t<T>*>(nullptr), r.wrenches);
+  return r;
+}
+
+/// Every number of `both` in one list, named.
+template <class T>
+std::vector<std::pair<std::string, T>> numbers(const both<T>& x) {
+  std::vector<std::pair<std::string, T>> out;
+  const auto n = x.eq.b.size();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) out.emplace_back("M(" + std::to_string(i) + "," + std::to_string(j) + ")", x.eq.M(i, j));
+    out.emplace_back("b(" + std::to_string(i) + ")", x.eq.b(i));
+    out.emplace_back("Q(" + std::to_string(i) + ")", x.eq.Q(i));
+    out.emplace_back("udot(" + std::to_string(i) + ")", x.udot(i));
+  }
+  for (std::size_t k = 0; k < x.wrenches.size(); ++k)
+    for (int i = 0; i < 3; ++i) {
+      out.emplace_back("force" + std::to_string(k) + "_" + std::to_string(i), x.wrenches[k].force(i));
+      out.emplace_back("moment" + std::to_string(k) + "_" + std::to_string(i), x.wrenches[k].moment(i));
+    }
+  return out;
+}
+
+/// The checks of one system at one state; returns the largest width of the interval recursion
+/// relative to the magnitude of the number (for the message).
+double check_state(const system_input& in, const std::string& what, const vector_t<double>* q = nullptr,
+                   const vector_t<double>* u = nullptr) {
+  const auto td = numbers(by_tree<double>(in, q, u)), gd = numbers(by_generic<double>(in, q, u));
+  BOOST_REQUIRE(td.size() == gd.size());
+  double scale = 1;
+  for (const auto& [name, x] : gd) scale = std::max(scale, std::abs(x));
+  for (std::size_t i = 0; i < td.size(); ++i)
+    BOOST_TEST(std::abs(td[i].second - gd[i].second) <= 1e-11 * scale,
+               what << ": " << td[i].first << " tree " << td[i].second << ", generic " << gd[i].second);
+  // the truth at 512 bits (its own rounding far below the 256-bit enclosures' widths)
+  const auto truth = [&] {
+    const mp_precision_scope high(512);
+    return numbers(by_generic<mpfr>(in, q, u));
+  }();
+  const mp_precision_scope precision(256);
+  const auto ti = numbers(by_tree<interval>(in, q, u));
+  const auto gi = numbers(by_generic<interval>(in, q, u));
+  const auto tm = numbers(by_tree<mpfi>(in, q, u));
+  double widest = 0;
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    const ref_t x = bounds_of(truth[i].second).first;
+    const auto [lo, hi] = bounds_of(ti[i].second);
+    BOOST_TEST((lo <= x && x <= hi), what << ": " << ti[i].first << " = " << x << " outside [" << lo << ", " << hi << "]");
+    widest = std::max(widest, double(hi - lo) / std::max(1.0, std::abs(double(x))));
+    if (std::getenv("TREE_WIDTHS") && ti[i].first.rfind("udot", 0) == 0) {
+      const auto [glo, ghi] = bounds_of(gi[i].second);
+      BOOST_TEST_MESSAGE(what << " " << ti[i].first << " width: recursion " << double(hi - lo) << ", Jacobians "
+                              << double(ghi - glo));
+    }
+    const auto [mlo, mhi] = bounds_of(tm[i].second);
+    BOOST_TEST((mlo <= x && x <= mhi), what << ": " << tm[i].first << " (mpfi) " << std::setprecision(80) << x << " outside [" << mlo << ", " << mhi << "]");
+    BOOST_TEST(double(mhi - mlo) <= 1e-60 * std::max(1.0, std::abs(double(x))), what << ": " << tm[i].first << " (mpfi) wide");
+  }
+  return widest;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(random_trees_by_recursion_agree_with_the_generic_path) {
+  std::mt19937_64 rng(20261204);
+  int trees = 0, prismatic = 0, fixed = 0, branched = 0;
+  for (int t = 0; t < 40; ++t) {
+    const int n = 2 + t % 8;
+    const std::string text = random_tree(rng, n);
+    const scene_input scene = read_scene(parse_json(text));
+    const auto& in = scene.as<system_input>();
+    {
+      const auto m = system_model::prepare<double>(in);
+      BOOST_REQUIRE(tree_recursions_apply(m.sys));
+      BOOST_REQUIRE(tree_accelerations_apply(m.sys));  // joint_wrenches_into takes the recursion
+      std::vector<int> children(m.sys.links.size(), 0);
+      for (const auto& L : m.sys.links) {
+        prismatic += L.type == system_joint_definition::kind::prismatic;
+        fixed += L.type == system_joint_definition::kind::fixed;
+        if (L.parent >= 0) ++children[static_cast<std::size_t>(m.sys.link_of[static_cast<std::size_t>(L.parent)])];
+      }
+      branched += *std::max_element(children.begin(), children.end()) > 1;
+    }
+    const double w = check_state(in, "tree " + std::to_string(t) + " (" + std::to_string(n) + " links)");
+    BOOST_TEST_MESSAGE("tree " << t << ": " << n << " links, widest relative width in interval " << w);
+    ++trees;
+  }
+  BOOST_TEST(trees == 40);
+  // the trees drawn hold every kind of joint and branches
+  BOOST_TEST(prismatic > 10);
+  BOOST_TEST(fixed > 5);
+  BOOST_TEST(branched > 10);
+}
+
+BOOST_AUTO_TEST_CASE(the_robots_by_recursion_agree_with_the_generic_path) {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> angle(-3, 3), rate(-2, 2);
+  for (const char* file : {"urdf_appell_arm.json", "urdf_wam.json", "urdf_kr5.json", "urdf_atlas.json"}) {
+    const scene_input scene = read_scene_file(APPELL_SOURCE_DIR + "/data/scenes/" + file);
+    const auto& in = scene.as<system_input>();
+    const auto m = system_model::prepare<double>(in);
+    BOOST_REQUIRE(tree_recursions_apply(m.sys));
+    BOOST_REQUIRE(tree_accelerations_apply(m.sys));
+    const int states = std::string(file) == "urdf_atlas.json" ? 3 : 8;
+    double widest = 0;
+    for (int s = 0; s < states; ++s) {
+      vector_t<double> q(m.q.size()), u(m.u.size());
+      for (Eigen::Index i = 0; i < q.size(); ++i) q(i) = angle(rng), u(i) = rate(rng);
+      widest = std::max(widest, check_state(in, std::string(file) + " state " + std::to_string(s), &q, &u));
+    }
+    BOOST_TEST_MESSAGE(file << ": widest relative width in interval " << widest);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_recursion_on_taylor_series_agrees_with_the_generic_path) {
+  // q(t), u(t) polynomials of degree 5; both paths' M, b, Q as series to order 5
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<double> sym(-1, 1);
+  const jet_order_scope order(5);
+  for (int t = 0; t < 10; ++t) {
+    const scene_input scene = read_scene(parse_json(random_tree(rng, 3 + t % 5)));
+    const auto m = system_model::prepare<double>(scene.as<system_input>());
+    using J = jet<double>;
+    vector_t<J> q(m.q.size()), u(m.u.size());
+    auto series = [&](double v) {
+      std::vector<double> c{v};
+      for (int k = 1; k <= 5; ++k) c.push_back(sym(rng) / k);
+      return J(c);
+    };
+    for (Eigen::Index i = 0; i < q.size(); ++i) q(i) = series(m.q(i)), u(i) = series(m.u(i));
+    appell_equations<J> tree, generic;
+    tree_equations_into<double, J>(m.sys, q, u, J(0.0), tree);
+    gibbs_appell_into(expression_system<double>{&m.sys}, q, u, J(0.0), generic);
+    const Eigen::Index n = q.size();
+    int compared = 0;
+    for (int k = 0; k <= 5; ++k) {
+      double scale = 1;
+      for (Eigen::Index i = 0; i < n; ++i) {
+        scale = std::max({scale, std::abs(generic.b(i)[k]), std::abs(generic.Q(i)[k])});
+        for (Eigen::Index j = 0; j < n; ++j) scale = std::max(scale, std::abs(generic.M(i, j)[k]));
+      }
+      for (Eigen::Index i = 0; i < n; ++i) {
+        BOOST_TEST(std::abs(tree.b(i)[k] - generic.b(i)[k]) <= 1e-10 * scale, "tree " << t << " b(" << i << ") order " << k);
+        BOOST_TEST(std::abs(tree.Q(i)[k] - generic.Q(i)[k]) <= 1e-10 * scale, "tree " << t << " Q(" << i << ") order " << k);
+        for (Eigen::Index j = 0; j < n; ++j)
+          BOOST_TEST(std::abs(tree.M(i, j)[k] - generic.M(i, j)[k]) <= 1e-10 * scale,
+                     "tree " << t << " M(" << i << "," << j << ") order " << k);
+        ++compared;
+      }
+    }
+    BOOST_TEST(compared == 6 * n);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_recursion_serves_trees_of_links_only) {
+  // constraints on a tree's coordinate: the generic path (Cotton's method) serves it
+  const std::string constrained =
+      "{\"model\": \"system\", \"coordinates\": [\"a\", \"b\"], \"gravity\": [\"0\", \"0\", \"-9.81\"], \"bodies\": {"
+      "\"l0\": {\"mass\": \"1\", \"inertia\": [\"0.1\", \"0.1\", \"0.1\", \"0\", \"0\", \"0\"], \"inertial\": {\"xyz\": [\"0.1\", \"0\", \"0\"]},"
+      " \"joint\": {\"type\": \"revolute\", \"coordinate\": \"a\", \"axis\": [\"0\", \"0\", \"1\"]}},"
+      "\"l1\": {\"mass\": \"1\", \"inertia\": [\"0.1\", \"0.1\", \"0.1\", \"0\", \"0\", \"0\"], \"inertial\": {\"xyz\": [\"0.1\", \"0\", \"0\"]},"
+      " \"joint\": {\"type\": \"revolute\", \"parent\": \"l0\", \"coordinate\": \"b\", \"axis\": [\"0\", \"1\", \"0\"]}}},"
+      " \"constraints\": {\"tied\": {\"holonomic\": \"a - b\"}},"
+      " \"state\": {\"a\": \"0.2\", \"b\": \"0.2\", \"a_dot\": \"0.3\", \"b_dot\": \"0.3\"}}";
+  const scene_input c = read_scene(parse_json(constrained));
+  BOOST_TEST(!tree_recursions_apply(system_model::prepare<double>(c.as<system_input>()).sys));
+  // a system without links
+  const scene_input e = read_scene_file(APPELL_SOURCE_DIR + "/data/scenes/system_euler_body.json");
+  BOOST_TEST(!tree_recursions_apply(system_model::prepare<double>(e.as<system_input>()).sys));
+}
