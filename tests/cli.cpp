@@ -1021,6 +1021,11 @@ BOOST_AUTO_TEST_CASE(simulate_and_enclose_refuse_bad_input_naming_the_flag) {
   const std::string big_scene = scene_file("fourteen", big);
   expect_bad_input("enclose " + big_scene + " --t-end 1 --out " + out, "enclose");
   BOOST_TEST(run("simulate " + big_scene + " --t-end 1 --quiet --out " + out + "_big").status == 0);
+  // A tree of links is carried in up to 24 components (the recursion's right-hand side): Atlas,
+  // pelvis fixed (54), is refused saying so.
+  if (std::filesystem::exists("/usr/share/doc/dart/data/sdf/atlas/atlas_v3_no_head.urdf"))
+    expect_bad_input("enclose " + APPELL_SOURCE_DIR + "/data/scenes/urdf_atlas.json --t-end 0.1 --out " + out,
+                     "24 for a tree of links");
   // A state the scene refuses is refused as by eval (theta = 0: the Euler angles are singular).
   expect_bad_input("simulate " +
                        scene_file("top_upright", "{\"model\": \"heavy_top\", \"top\": {\"A\": \"0.08\", \"C\": \"0.02\", "

@@ -30,11 +30,12 @@ bool progress::due() const {
 
 std::string time_left(double elapsed, double fraction) {
   if (!(fraction > 0 && fraction < 1)) return "";
-  const double s = elapsed * (1 - fraction) / fraction;
+  // whole seconds (whole minutes past an hour) first: 419.7 s is "7 min 0 s", not "6 min 60 s"
+  const double s = std::round(elapsed * (1 - fraction) / fraction), m = std::round(s / 60);
   char text[64];
   if (s < 60) std::snprintf(text, sizeof text, "about %.0f s left", s);
   else if (s < 3600) std::snprintf(text, sizeof text, "about %.0f min %.0f s left", std::floor(s / 60), std::fmod(s, 60.0));
-  else std::snprintf(text, sizeof text, "about %.0f h %.0f min left", std::floor(s / 3600), std::floor(std::fmod(s, 3600.0) / 60));
+  else std::snprintf(text, sizeof text, "about %.0f h %.0f min left", std::floor(m / 60), std::fmod(m, 60.0));
   return text;
 }
 

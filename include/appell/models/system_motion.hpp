@@ -119,6 +119,12 @@ struct system_problem {
   int size() const { return coordinates() + static_cast<int>(free_columns.size()) + (timed ? 1 : 0); }
   const std::vector<std::string>& state_names() const { return names; }
 
+  /// The most components the generic path's right-hand side is carried in (its kinematics on
+  /// multi_dual numbers of slopes: 3 x 3 matrices of them outgrow Eigen's fixed-size storage
+  /// beyond); a tree of links (tree_recursions_apply) takes the recursion, carried in up to 24.
+  static constexpr int generic_capacity = 12;
+  bool recursion() const { return tree_recursions_apply(model->sys); }
+
   /// The same motion carried in D components.
   template <int D>
   system_problem<T, D> with_capacity() const {
@@ -174,9 +180,13 @@ struct system_problem {
         appell_equations<S> e;
         tree_equations_into<T, S>(model->sys, a.q, a.v_a, a.t, e);
         acc = e.accelerations();
+      } else if constexpr (Dim > generic_capacity) {
+        throw std::logic_error("system_problem: the generic path carried in more than 12 components");
       } else {
         acc = cotton_free_accelerations<4>(sys, a.q, a.v_a, a.t, 0);
       }
+    } else if constexpr (Dim > generic_capacity) {
+      throw std::logic_error("system_problem: the generic path carried in more than 12 components");
     } else {
       const auto adapted = change_speeds(sys, change(), speeds());
       vector_t<S> v = vector_t<S>::Zero(speeds());

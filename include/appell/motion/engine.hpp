@@ -612,8 +612,10 @@ void run_problem(const P& prob, const vector_t<T>& x0, const scene_input& scene,
       };
       if (n <= 6) return run(prob.template with_capacity<6>(), padded(6));
       if (n <= 12) return run(prob.template with_capacity<12>(), padded(12));
+      if (n <= 24 && prob.recursion()) return run(prob.template with_capacity<24>(), padded(24));
       throw input_error("enclose: the motion's state has " + std::to_string(n) +
-                        " components; enclose carries at most 12 (the coordinates, the free speeds and t)");
+                        " components; enclose carries at most 12 (the coordinates, the free speeds and t), 24 for a"
+                        " tree of links without constraints");
     } else {
       run(prob, x0);
     }
