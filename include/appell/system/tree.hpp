@@ -29,8 +29,8 @@
 //    M_ji = S_j . F.
 //
 // Cost O(N d) for M (d the tree's depth) and O(N) for the rest; the same numbers as the generic
-// path in exact arithmetic: tests/tree_recursions.cpp holds the two to each other (point types
-// to within their precision, interval enclosures intersecting) and to MPFR at 256 bits.
+// path in exact arithmetic: tests/tree_recursions.cpp holds the two to each other (double to
+// within its precision; the interval and MPFI recursions enclosing the generic path at 512 bits).
 #pragma once
 
 #include <vector>
