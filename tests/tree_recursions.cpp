@@ -116,27 +116,29 @@ struct both {
   vector_t<T> udot;
   std::vector<joint_wrench_result<T>> wrenches;
 };
+/// One path's numbers at the state of `in` (or at q, u): the recursion (`tree`) or the generic
+/// path (the Jacobians' M, b, Q and joint wrenches).
 template <class T>
-both<T> by_tree(const system_input& in, const vector_t<double>* q, const vector_t<double>* u) {
+both<T> by_path(const system_input& in, const vector_t<double>* q, const vector_t<double>* u, bool tree) {
   const evaluation_scope<T> scope;
   auto m = system_model::prepare<T>(in);
   if (q) m.q = q->cast<T>(), m.u = u->cast<T>();
   both<T> r;
-  tree_equations_into<T, T>(m.sys, m.q, m.u, m.t, r.eq);
+  const vector_t<T>* none = nullptr;
+  if (tree) tree_equations_into<T, T>(m.sys, m.q, m.u, m.t, r.eq);
+  else gibbs_appell_into(expression_system<T>{&m.sys}, m.q, m.u, m.t, r.eq);
   r.udot = r.eq.accelerations();
-  joint_wrenches_into(m.sys, m.q, m.u, m.t, r.udot, static_cast<const vector_t<T>*>(nullptr), r.wrenches);
+  if (tree) joint_wrenches_into(m.sys, m.q, m.u, m.t, r.udot, none, r.wrenches);
+  else joint_wrenches_by_jacobians_into(m.sys, m.q, m.u, m.t, r.udot, none, r.wrenches);
   return r;
 }
 template <class T>
+both<T> by_tree(const system_input& in, const vector_t<double>* q, const vector_t<double>* u) {
+  return by_path<T>(in, q, u, true);
+}
+template <class T>
 both<T> by_generic(const system_input& in, const vector_t<double>* q, const vector_t<double>* u) {
-  const evaluation_scope<T> scope;
-  auto m = system_model::prepare<T>(in);
-  if (q) m.q = q->cast<T>(), m.u = u->cast<T>();
-  both<T> r;
-  gibbs_appell_into(expression_system<T>{&m.sys}, m.q, m.u, m.t, r.eq);
-  r.udot = r.eq.accelerations();
-  joint_wrenches_by_jacobians_into(m.sys, m.q, m.u, m.t, r.udot, static_cast<const vector_t<T>*>(nullptr), r.wrenches);
-  return r;
+  return by_path<T>(in, q, u, false);
 }
 
 /// Every number of `both` in one list, named.
