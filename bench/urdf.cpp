@@ -1,8 +1,8 @@
 // Robots from URDF (Google Benchmark): one `eval` of a `urdf` scene -- the forward dynamics and
 // every joint's wrench, with their checks -- in double, interval and mpfi at 113 bits, on the
 // robots Debian's dart-doc ships (the WAM arm, 7 joints; the KUKA KR5, 6; the Atlas humanoid,
-// 27, pelvis fixed) and appell's own arm, in one run; and cost against size on generated serial
-// chains of 1 to 64 links.  Goals (issue 32): the WAM within 1 ms in interval and 20 ms in mpfi at
+// 27, pelvis fixed) and appell's own arm, in one run; and cost and width against size on generated
+// serial chains of 1 to 128 links (the interval recursions componentwise and in balls).  Goals (issue 32): the WAM within 1 ms in interval and 20 ms in mpfi at
 // 113 bits; the Atlas within 10 ms in interval.
 // The same without the checks (the engines' work: bench/robots_vs_engines.sh, fd-SCALAR/ROBOT).
 // Run: build/bench/appell_bench_urdf
@@ -10,14 +10,16 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
+#include <sstream>
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/scene.hpp"
 #include "appell/models/system.hpp"
 #include "median_reporter.hpp"
+#include "../tests/generated_chain.hpp"
 
 using namespace appell;
 
@@ -27,41 +29,65 @@ const char* const robots[] = {"urdf_appell_arm.json", "urdf_wam.json", "urdf_kr5
 const std::pair<const char*, std::optional<unsigned>> scalars[] = {{"double", std::nullopt}, {"interval", std::nullopt},
                                                                    {"mpfi", 113u}};
 
-const int chain_sizes[] = {1, 2, 4, 8, 16, 32, 64};
+const int chain_sizes[] = {1, 2, 4, 8, 16, 32, 64, 128};
 
-/// A generated serial chain of n links (URDF and its scene, in the temporary directory): joints
-/// about z and y in turn, each frame turned (rpy 0.1 0 0.2), full inertia tensors.
-std::string chain_scene(int n) {
-  const auto dir = std::filesystem::temp_directory_path();
-  const std::string urdf = (dir / ("appell_bench_chain_" + std::to_string(n) + ".urdf")).string();
-  std::ofstream u(urdf);
-  u << "<robot name=\"chain\"><link name=\"l0\"/>";
-  for (int k = 1; k <= n; ++k)
-    u << "<link name=\"l" << k << "\"><inertial><origin xyz=\"0 0.01 0.15\" rpy=\"0.1 0 0\"/><mass value=\"1\"/>"
-      << "<inertia ixx=\"0.008\" ixy=\"0.0001\" ixz=\"0.0002\" iyy=\"0.0085\" iyz=\"-0.0001\" izz=\"0.002\"/></inertial></link>"
-      << "<joint name=\"j" << k << "\" type=\"revolute\"><parent link=\"l" << k - 1 << "\"/><child link=\"l" << k << "\"/>"
-      << "<origin xyz=\"0 0 0.3\" rpy=\"0.1 0 0.2\"/><axis xyz=\"" << (k % 2 ? "0 0 1" : "0 1 0") << "\"/></joint>";
-  u << "</robot>\n";
-  const std::string path = (dir / ("appell_bench_chain_" + std::to_string(n) + ".json")).string();
-  std::ofstream sc(path);
-  sc << "{\"model\": \"urdf\", \"file\": \"" << urdf << "\", \"gravity\": [\"0\", \"0\", \"-9.81\"], \"state\": {";
-  for (int k = 1; k <= n; ++k)
-    sc << (k > 1 ? ", " : "") << "\"j" << k << "\": {\"q\": \"0." << (k * 37) % 100 << "\", \"q_dot\": \"-0." << (k * 53) % 100 << "\"}";
-  sc << "}}\n";
-  return path;
-}
+/// A generated serial chain of n links (tests/generated_chain.hpp).
+std::string chain_scene(int n) { return testing::generated_chain_scene(n, "appell_bench_chain"); }
 
-void bench_chain(benchmark::State& state, std::string scalar, int n) {
+void bench_chain(benchmark::State& state, std::string scalar, std::optional<unsigned> bits, int n) {
   const scene_input scene = read_scene_file(chain_scene(n));
-  with_scalar(scalar, std::nullopt, [&]<class T>(std::type_identity<T>) {
+  with_scalar(scalar, bits, [&]<class T>(std::type_identity<T>) {
     const prepared_scene<T> prepared = prepare<T>(scene);
     try {
       (void)compute<T>(prepared);
-    } catch (const certification_error& e) {  // interval<double> on the longest chains
+    } catch (const certification_error& e) {  // a chain too long for the scalar to certify
       state.SkipWithError((std::string("not certified: ") + e.what()).c_str());
       return 0;
     }
     for (auto _ : state) benchmark::DoNotOptimize(compute<T>(prepared));
+    return 0;
+  });
+}
+
+/// The widest relative width of the accelerations, by benchmark name (bench_chain_dynamics).
+std::map<std::string, double> widths;
+
+/// A chain's dynamics alone (M, b, Q and u' by the verified solve) in an interval scalar, the
+/// recursion componentwise (tree.hpp) or in balls (tree_balls.hpp): the cost, and the widest
+/// relative width of u' (widths[name]; infinite where the solve is not certified).
+void bench_chain_dynamics(benchmark::State& state, std::string scalar, std::optional<unsigned> bits, int n, bool balls,
+                          std::string name) {
+  const scene_input scene = read_scene_file(chain_scene(n));
+  with_scalar(scalar, bits, [&]<class T>(std::type_identity<T>) {
+    if constexpr (scalar_traits<T>::is_interval) {
+      const evaluation_scope<T> scope;
+      const auto m = system_model::prepare<T>(scene.as<system_input>());
+      appell_equations<T> eq;
+      vector_t<T> udot;
+      auto run = [&] {
+        if (balls) tree_equations_in_balls(m.sys, m.q, m.u, m.t, eq);
+        else tree_equations_componentwise_into<T, T>(m.sys, m.q, m.u, m.t, eq);
+        eq.accelerations_into(udot);
+      };
+      try {
+        run();
+      } catch (const certification_error& e) {
+        widths[name] = std::numeric_limits<double>::infinity();
+        state.SkipWithError((std::string("not certified: ") + e.what()).c_str());
+        return 0;
+      }
+      double widest = 0;
+      for (Eigen::Index i = 0; i < udot.size(); ++i) {
+        using std::abs;
+        const double w = static_cast<double>(width(udot(i))), x = static_cast<double>(abs(mid(udot(i))));
+        widest = std::max(widest, w / std::max(1.0, x));
+      }
+      widths[name] = widest;
+      for (auto _ : state) {
+        run();
+        benchmark::DoNotOptimize(udot);
+      }
+    }
     return 0;
   });
 }
@@ -154,17 +180,35 @@ class table_reporter : public median_reporter {
       std::cout << "\n";
     }
     std::cout << "\ngenerated chains (revolute joints, turned frames, full inertia), one eval, microseconds\n  "
-              << std::setw(4) << "N" << std::setw(12) << "double" << std::setw(12) << "interval" << "\n";
+              << std::setw(4) << "N" << std::setw(12) << "double" << std::setw(12) << "interval" << std::setw(12)
+              << "mpfi 113" << "\n";
     for (int n : chain_sizes) {
       std::cout << "  " << std::setw(4) << n;
-      for (const char* s : {"double", "interval"}) {
+      for (const char* s : {"double", "interval", "mpfi"}) {
         const double t = ns(std::string("chain-") + s + "/" + std::to_string(n));
         std::cout << std::setw(12) << std::fixed << std::setprecision(1) << (t > 0 ? t / 1e3 : std::nan(""));
       }
       std::cout << "\n";
     }
-    std::cout << "fitted exponent p of cost ~ N^p (N = 8 to 64):";
-    for (const char* c : {"double", "interval"}) {
+    std::cout << "\nthe chains' dynamics alone (M, b, Q, u' by the verified solve), microseconds [widest relative width of u'];"
+                 " the recursion componentwise (tree.hpp) and in balls (tree_balls.hpp)\n  "
+              << std::setw(4) << "N";
+    for (const char* c : {"interval comp.", "interval balls", "mpfi113 comp.", "mpfi113 balls"}) std::cout << std::setw(26) << c;
+    std::cout << "\n";
+    for (int n : chain_sizes) {
+      std::cout << "  " << std::setw(4) << n;
+      for (const char* c : {"interval-componentwise", "interval-balls", "mpfi-componentwise", "mpfi-balls"}) {
+        const std::string name = std::string("chain-dynamics-") + c + "/" + std::to_string(n);
+        const double t = ns(name);
+        std::ostringstream cell;
+        if (t > 0) cell << std::fixed << std::setprecision(1) << t / 1e3 << " [" << std::scientific << std::setprecision(1) << widths[name] << "]";
+        else cell << "not certified";
+        std::cout << std::setw(26) << cell.str();
+      }
+      std::cout << "\n";
+    }
+    std::cout << "fitted exponent p of cost ~ N^p (one eval, N = 8 to 128):";
+    for (const char* c : {"double", "interval", "mpfi"}) {
       double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
       for (int n : chain_sizes) {
         const double t = ns(std::string("chain-") + c + "/" + std::to_string(n));
@@ -193,9 +237,16 @@ int main(int argc, char** argv) {
         benchmark::RegisterBenchmark((std::string(tree ? "recursion-" : "jacobians-") + s + "/" + r).c_str(), bench_path,
                                      std::string(s), std::string(r), tree);
   }
-  for (int n : chain_sizes)
-    for (const char* s : {"double", "interval"})
-      benchmark::RegisterBenchmark((std::string("chain-") + s + "/" + std::to_string(n)).c_str(), bench_chain, std::string(s), n);
+  for (int n : chain_sizes) {
+    for (const auto& [s, b] : scalars)
+      benchmark::RegisterBenchmark((std::string("chain-") + s + "/" + std::to_string(n)).c_str(), bench_chain, std::string(s), b, n);
+    for (const auto& [s, b] : scalars)
+      for (const bool balls : {false, true}) {
+        if (!b && std::string(s) != "interval") continue;
+        const std::string name = std::string("chain-dynamics-") + s + (balls ? "-balls/" : "-componentwise/") + std::to_string(n);
+        benchmark::RegisterBenchmark(name.c_str(), bench_chain_dynamics, std::string(s), b, n, balls, name);
+      }
+  }
   benchmark::Initialize(&argc, argv);
   table_reporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

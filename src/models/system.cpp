@@ -63,7 +63,7 @@ void require_at_most(std::size_t n, std::size_t limit, const std::string& what) 
 
 /// What a system file may hold (bounded time and memory on any input): more is bad input.
 struct system_limits {
-  static constexpr std::size_t names = 64;        ///< coordinates; speeds; bodies; constraints (each)
+  static constexpr std::size_t names = 256;       ///< coordinates; speeds; bodies; constraints (each)
   static constexpr std::size_t rotations = 16;    ///< factors of one orientation
   static constexpr std::size_t operations = 200000;  ///< all expressions and derivatives, unfolded
 };

@@ -193,9 +193,10 @@ interval enclosure_in_doubles(const mpfi& x) {
 }
 
 /// The mass matrix at the state proved positive definite in interval<double>: M's enclosure (the
-/// system compiled in interval, at enclosures of the 256-bit state) has a Cholesky factorization
-/// with every pivot certainly positive, which proves every symmetric matrix in the enclosure
-/// positive definite, the exact M among them.  False where it cannot tell (a singular or nearly
+/// system compiled in interval, at enclosures of the 256-bit state; a tree's by its recursion)
+/// has a Cholesky factorization with every pivot certainly positive, which proves every symmetric
+/// matrix in the enclosure positive definite, the exact M among them; or, where the pivots' widths
+/// grow too wide (long chains), the enclosure is proved nonsingular (below).  False where it cannot tell (a singular or nearly
 /// singular M, or a state beyond double's range): then the check at 256 bits decides and names the
 /// joint.  A tenth of the 256-bit check's work, which was half of a robot's state in
 /// `appell reference` (docs/reference-values.md).
@@ -207,13 +208,29 @@ bool tree_mass_matrix_proved_in_doubles(const state_at_256_bits& at, const std::
     vector_t<interval> q(q256.size()), u(u256.size());
     for (Eigen::Index i = 0; i < q.size(); ++i) q(i) = enclosure_in_doubles(q256(i));
     for (Eigen::Index i = 0; i < u.size(); ++i) u(i) = enclosure_in_doubles(u256(i));
-    const appell_equations<interval> eq = gibbs_appell(expression_system<interval>{&sys}, q, u, enclosure_in_doubles(t256));
+    const appell_equations<interval> eq = system_equations<interval, interval>(sys, q, u, enclosure_in_doubles(t256));
     const int n = d.vars.speeds;
+    // Proved nonsingular: every matrix in M's enclosure (verified_solve's proof, which holds
+    // where the interval Cholesky below loses its pivots to the widths it accumulates, on long
+    // chains); the exact M is positive semidefinite (sum m Jv^T Jv + Jw^T I Jw, the inertias
+    // checked positive semidefinite above), so nonsingular is positive definite.
+    const auto nonsingular = [&] {
+      try {
+        (void)verified_solve(eq.M, vector_t<interval>(vector_t<interval>::Ones(n)));
+        return true;
+      } catch (const certification_error&) {
+        return false;
+      }
+    };
     matrix_t<interval> L = matrix_t<interval>::Zero(n, n);
     for (int k = 0; k < n; ++k) {
       interval pivot = eq.M(k, k);
       for (int j = 0; j < k; ++j) pivot -= sqr(L(k, j));
-      if (!certainly_positive(pivot)) return false;
+      if (!certainly_positive(pivot)) {
+        const bool proved = nonsingular();
+        scope.verify();
+        return proved;
+      }
       L(k, k) = sqrt(pivot);
       for (int i = k + 1; i < n; ++i) {
         interval x = eq.M(i, k);
@@ -236,13 +253,18 @@ void check_tree_mass_matrix(const state_at_256_bits& at, const std::shared_ptr<c
   // A tree's mass matrix positive definite: each joint moves some mass or inertia that the
   // joints before it do not (a link without inertial data at the end of a chain makes it singular).
   if (!d.link_order.empty() && !tree_mass_matrix_proved_in_doubles(at, def)) {
-    const appell_equations<mpfi> eq = gibbs_appell(expression_system<mpfi>{&sys}, q, u, t);
+    const appell_equations<mpfi> eq = system_equations<mpfi, mpfi>(sys, q, u, t);
     const int n = d.vars.speeds;
     matrix_t<mpfi> L = matrix_t<mpfi>::Zero(n, n);
     for (int k = 0; k < n; ++k) {
       mpfi pivot = eq.M(k, k);
       for (int j = 0; j < k; ++j) pivot -= sqr(L(k, j));
       if (!certainly_positive(pivot)) {
+        try {  // proved nonsingular, hence positive definite (as in doubles above)
+          (void)verified_solve(eq.M, vector_t<mpfi>(vector_t<mpfi>::Ones(n)));
+          return;
+        } catch (const certification_error&) {
+        }
         std::string field = "coordinates." + d.names[static_cast<std::size_t>(d.vars.q(k < d.vars.coordinates ? k : 0))];
         for (const auto& bd : d.bodies)
           if (bd.is_link && bd.joint.coordinate == k) field = "bodies." + bd.name + ".joint";

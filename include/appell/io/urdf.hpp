@@ -45,7 +45,7 @@ struct urdf_robot {
 /// What a URDF file may hold (the limits of scene files and of the system model).
 struct urdf_limits {
   static constexpr std::size_t bytes = json_limits::bytes;
-  static constexpr std::size_t links = 65;  ///< 64 joints and the root link (the system model holds 64 bodies)
+  static constexpr std::size_t links = 257;  ///< 256 joints and the root link (the system model holds 256 bodies)
 };
 
 /// Whether a URDF attribute's text is a number appell takes: at most 200 characters,

@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "appell/system/tapes.hpp"
+#include "appell/system/tree_balls.hpp"
 
 namespace appell {
 
@@ -99,13 +100,8 @@ void tree_forward(const compiled_system<T>& c, const vector_t<S>& q, const vecto
                   std::vector<typename compiled_system<T>::template link_state<S>>& states,
                   std::vector<tree_link<S>>& out) {
   using K = system_joint_definition::kind;
-  struct site;
-  const scratch<std::vector<S>, site> x_held;
-  c.variables_into(q, u, t, *x_held);
-  c.evaluate_into(c.body_tape, *x_held, values);
+  const vec3<S> g = tree_tape_into<T, S>(c, q, u, t, values);
   const S* v = values.data();
-  vec3<S> g;
-  for (int i = 0; i < 3; ++i) g(i) = c.gravity[static_cast<std::size_t>(i)].at(v);
   c.link_states_into(q, u, g, v, states);  // q' = u
   const std::size_t n = c.links.size();
   out.resize(n);
@@ -194,11 +190,10 @@ S joint_row(const typename compiled_system<T>::link& L, const vec3<S>& f, const 
 }
 }  // namespace detail
 
-/// Appell's equations M u' + b = Q of a tree (tree_recursions_apply) at (q, u, t), by the
-/// recursions at the top of this file.  S: T, or numbers built on T (jets, slopes, duals).
+/// tree_equations_into's recursion in S's own arithmetic (componentwise for the interval scalars).
 template <Scalar T, class S>
-void tree_equations_into(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u, const S& t,
-                         appell_equations<S>& e) {
+void tree_equations_componentwise_into(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u,
+                                       const S& t, appell_equations<S>& e) {
   using K = system_joint_definition::kind;
   using link_state = typename compiled_system<T>::template link_state<S>;
   struct site;
@@ -306,13 +301,25 @@ void tree_equations_into(const compiled_system<T>& c, const vector_t<S>& q, cons
   }
 }
 
+/// Appell's equations M u' + b = Q of a tree (tree_recursions_apply) at (q, u, t), by the
+/// recursions at the top of this file.  S: T, or numbers built on T (jets, slopes, duals); the
+/// interval scalars on a deep tree in balls (tree_balls.hpp).
+template <Scalar T, class S>
+void tree_equations_into(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u, const S& t,
+                         appell_equations<S>& e) {
+  if constexpr (std::is_same_v<S, T> && scalar_traits<T>::is_interval)
+    if (prefer_balls(c)) return tree_equations_in_balls(c, q, u, t, e);
+  tree_equations_componentwise_into<T, S>(c, q, u, t, e);
+}
+
 /// Every link's motion from the recursion with the accelerations udot: for each link, its
 /// inertia force and moment about its origin minus the applied ones, summed over its subtree,
 /// on its axes (the joint's wrench before its own actuator: system/joint_wrenches.hpp).
 template <Scalar T, class S>
-void tree_subtree_wrenches_into(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u, const S& t,
-                                const vector_t<S>& udot, std::vector<vec3<S>>& F, std::vector<vec3<S>>& M,
-                                std::vector<S>& values) {
+void tree_subtree_wrenches_componentwise_into(const compiled_system<T>& c, const vector_t<S>& q,
+                                              const vector_t<S>& u, const S& t, const vector_t<S>& udot,
+                                              std::vector<vec3<S>>& F, std::vector<vec3<S>>& M,
+                                              std::vector<S>& values) {
   using link_state = typename compiled_system<T>::template link_state<S>;
   struct site;
   const scratch<std::vector<link_state>, site> states_held;
@@ -327,6 +334,17 @@ void tree_subtree_wrenches_into(const compiled_system<T>& c, const vector_t<S>& 
   F.resize(links.size());
   M.resize(links.size());
   for (std::size_t k = 0; k < links.size(); ++k) F[k] = links[k].f, M[k] = links[k].n;
+}
+
+/// tree_subtree_wrenches_componentwise_into, the interval scalars on a deep tree in balls
+/// (tree_balls.hpp).
+template <Scalar T, class S>
+void tree_subtree_wrenches_into(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u, const S& t,
+                                const vector_t<S>& udot, std::vector<vec3<S>>& F, std::vector<vec3<S>>& M,
+                                std::vector<S>& values) {
+  if constexpr (std::is_same_v<S, T> && scalar_traits<T>::is_interval)
+    if (prefer_balls(c)) return tree_subtree_wrenches_in_balls(c, q, u, t, udot, F, M, values);
+  tree_subtree_wrenches_componentwise_into<T, S>(c, q, u, t, udot, F, M, values);
 }
 
 }  // namespace appell
