@@ -29,6 +29,7 @@
 #include "appell/errors.hpp"
 #include "appell/derivatives/slope.hpp"
 #include "appell/derivatives/jet.hpp"
+#include "appell/linalg/scratch.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 
 namespace appell::ode {
@@ -68,6 +69,25 @@ jet<S> component_jet(const series<S>& c, Eigen::Index i, int k) {
   return jet<S>(std::move(a));
 }
 
+/// A series' memo, borrowed from the thread's pool (linalg/scratch.hpp) and emptied: every entry
+/// forgotten (kind -1: nothing is reused from another series), its vectors' capacity kept, so
+/// that a step's passes take nothing from the heap for the memo (a memo made afresh each step
+/// grew every entry's vectors pass after pass: malloc and free were a quarter of the KR5's
+/// enclosure, perf).
+template <class S>
+class fresh_memo {
+ public:
+  fresh_memo() {
+    held_->begin_pass();
+    held_->reused = held_->computed = 0;
+    for (auto& e : held_->entries) e.kind = -1;
+  }
+  ::appell::detail::jet_memo<S>& operator*() { return *held_; }
+
+ private:
+  scratch<::appell::detail::jet_memo<S>, fresh_memo> held_;
+};
+
 /// Coefficients 0 .. p of the solution through x0.  Pass k evaluates the right-hand side on jets
 /// of order k; with `memo` each operation takes its coefficients 0..k-1 from pass k - 1 and
 /// computes only coefficient k (jet.hpp, detail::jet_memo): the same numbers, bit for bit, in
@@ -80,8 +100,8 @@ series<S> taylor_series(const P& prob, const vector_t<S>& x0, int p, bool memo =
   series<S> c(static_cast<std::size_t>(p + 1), vector_t<S>(n));
   c[0] = x0;
   vector_t<jet<S>> X(n);
-  detail::jet_memo<S> local;
-  detail::jet_memo<S>& m = stats ? *stats : local;
+  fresh_memo<S> local;
+  detail::jet_memo<S>& m = stats ? *stats : *local;
   const detail::jet_memo_scope<S> scope(memo ? &m : nullptr);
   for (int k = 0; k < p; ++k) {
     const jet_order_scope order(k);
@@ -115,7 +135,8 @@ void taylor_series_jacobian(const P& prob, const vector_t<I>& X0, int p, series<
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) D[0](i, j) = I(i == j ? 1 : 0);
   vector_t<MD> X(n);
-  detail::jet_memo<I> m;
+  fresh_memo<I> held;
+  detail::jet_memo<I>& m = *held;
   const detail::jet_memo_scope<I> scope(memo ? &m : nullptr);
   for (int k = 0; k < p; ++k) {
     const jet_order_scope order(k);
@@ -152,7 +173,8 @@ void taylor_series_slopes(const P& prob, const vector_t<I>& xh, const vector_t<I
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) D[0](i, j) = I(i == j ? 1 : 0);
   vector_t<SL> X(n);
-  detail::jet_memo<I> m;
+  fresh_memo<I> held;
+  detail::jet_memo<I>& m = *held;
   const detail::jet_memo_scope<I> scope(memo ? &m : nullptr);
   for (int k = 0; k < p; ++k) {
     const jet_order_scope order(k);
