@@ -28,7 +28,9 @@
 // Everything else (constraints, the motion's slopes and jets) is unchanged.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -277,9 +279,11 @@ mball<I> rotate(const turn<I>& X, const mball<I>& W) {
   return s;
 }
 /// W + m (|r|^2 1 - r r^T) + (2 r.h 1 - r h^T - h r^T): a composite inertia moved by r (h the
-/// subtree's first moment, on the same axes), as tree.hpp's shift.  The perturbation bounds:
-/// |G(r + e) - G(r)| <= 4 |r| |e| + 2 |e|^2 with |G(r)| = |r|^2 for G(r) = |r|^2 1 - r r^T, and
-/// every difference in the last term at most D = |e| |h| + |r| |d| + |e| |d|, four of them.
+/// subtree's first moment, on the same axes), as tree.hpp's shift.  The perturbation bounds, from
+/// the symmetric matrices' quadratic forms at unit x, x^T G(r) x = |r x x|^2 for
+/// G(r) = |r|^2 1 - r r^T and x^T H x = 2 (r x x).(h x x) for H the last term:
+/// |G(r + e) - G(r)| <= 2 |r| |e| + |e|^2, |G(r)| = |r|^2, and |H(r + e, h + d) - H(r, h)| <= 2 D
+/// with D = |e| |h| + |r| |d| + |e| |d|.
 template <class I>
 mball<I> shifted(const mball<I>& W, const sball<I>& m, const vball<I>& r, const vball<I>& h) {
   const vec3<I> rc = thin_vector<I>(r.c), hc = thin_vector<I>(h.c);
@@ -300,9 +304,9 @@ mball<I> shifted(const mball<I>& W, const sball<I>& m, const vball<I>& r, const 
   mball<I> s = of<I>(y);
   const I nr = thin<I>(norm<I>(r.c)), nh = thin<I>(norm<I>(h.c)), er = thin<I>(r.r), eh = thin<I>(h.r);
   const I reach = nr + er;
-  const I G = thin<I>(m.r) * reach * reach + abs(mc) * (I(4) * nr * er + I(2) * er * er);
+  const I G = thin<I>(m.r) * reach * reach + abs(mc) * (I(2) * nr * er + er * er);
   const I D = er * nh + nr * eh + er * eh;
-  s.r = add<I>(s.r, up(thin<I>(W.r) + G + I(4) * D));
+  s.r = add<I>(s.r, up(thin<I>(W.r) + G + I(2) * D));
   return s;
 }
 template <class I>
