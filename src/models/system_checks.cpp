@@ -192,13 +192,27 @@ interval enclosure_in_doubles(const mpfi& x) {
   return interval(mpfr_get_d(lo, MPFR_RNDD), mpfr_get_d(hi, MPFR_RNDU));
 }
 
+/// Every matrix in a mass matrix's enclosure proved nonsingular (verified_solve's proof, which
+/// holds where an interval Cholesky loses its pivots to the widths it accumulates, on long
+/// chains).  The exact M is positive semidefinite (sum m Jv^T Jv + Jw^T I Jw, the inertias checked
+/// positive semidefinite above), so nonsingular is positive definite.
+template <class I>
+bool proved_nonsingular(const matrix_t<I>& M) {
+  try {
+    (void)verified_solve(M, vector_t<I>(vector_t<I>::Ones(M.rows())));
+    return true;
+  } catch (const certification_error&) {
+    return false;
+  }
+}
+
 /// The mass matrix at the state proved positive definite in interval<double>: M's enclosure (the
 /// system compiled in interval, at enclosures of the 256-bit state; a tree's by its recursion)
 /// has a Cholesky factorization with every pivot certainly positive, which proves every symmetric
 /// matrix in the enclosure positive definite, the exact M among them; or, where the pivots' widths
-/// grow too wide (long chains), the enclosure is proved nonsingular (below).  False where it cannot tell (a singular or nearly
-/// singular M, or a state beyond double's range): then the check at 256 bits decides and names the
-/// joint.  A tenth of the 256-bit check's work, which was half of a robot's state in
+/// grow too wide (long chains), the enclosure is proved nonsingular (proved_nonsingular).  False
+/// where it cannot tell (a singular or nearly singular M, or a state beyond double's range): then
+/// the check at 256 bits decides and names the joint.  A tenth of the 256-bit check's work, which was half of a robot's state in
 /// `appell reference` (docs/reference-values.md).
 bool tree_mass_matrix_proved_in_doubles(const state_at_256_bits& at, const std::shared_ptr<const system_definition>& def) {
   try {
@@ -210,24 +224,12 @@ bool tree_mass_matrix_proved_in_doubles(const state_at_256_bits& at, const std::
     for (Eigen::Index i = 0; i < u.size(); ++i) u(i) = enclosure_in_doubles(u256(i));
     const appell_equations<interval> eq = system_equations<interval, interval>(sys, q, u, enclosure_in_doubles(t256));
     const int n = d.vars.speeds;
-    // Proved nonsingular: every matrix in M's enclosure (verified_solve's proof, which holds
-    // where the interval Cholesky below loses its pivots to the widths it accumulates, on long
-    // chains); the exact M is positive semidefinite (sum m Jv^T Jv + Jw^T I Jw, the inertias
-    // checked positive semidefinite above), so nonsingular is positive definite.
-    const auto nonsingular = [&] {
-      try {
-        (void)verified_solve(eq.M, vector_t<interval>(vector_t<interval>::Ones(n)));
-        return true;
-      } catch (const certification_error&) {
-        return false;
-      }
-    };
     matrix_t<interval> L = matrix_t<interval>::Zero(n, n);
     for (int k = 0; k < n; ++k) {
       interval pivot = eq.M(k, k);
       for (int j = 0; j < k; ++j) pivot -= sqr(L(k, j));
       if (!certainly_positive(pivot)) {
-        const bool proved = nonsingular();
+        const bool proved = proved_nonsingular(eq.M);
         scope.verify();
         return proved;
       }
@@ -260,11 +262,7 @@ void check_tree_mass_matrix(const state_at_256_bits& at, const std::shared_ptr<c
       mpfi pivot = eq.M(k, k);
       for (int j = 0; j < k; ++j) pivot -= sqr(L(k, j));
       if (!certainly_positive(pivot)) {
-        try {  // proved nonsingular, hence positive definite (as in doubles above)
-          (void)verified_solve(eq.M, vector_t<mpfi>(vector_t<mpfi>::Ones(n)));
-          return;
-        } catch (const certification_error&) {
-        }
+        if (proved_nonsingular(eq.M)) return;  // hence positive definite (proved_nonsingular)
         std::string field = "coordinates." + d.names[static_cast<std::size_t>(d.vars.q(k < d.vars.coordinates ? k : 0))];
         for (const auto& bd : d.bodies)
           if (bd.is_link && bd.joint.coordinate == k) field = "bodies." + bd.name + ".joint";
