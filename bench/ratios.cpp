@@ -4,7 +4,7 @@
 // converted once), for every standard scalar (mpfr and mpfi at 113 and 256 bits).  After the runs, the ratios that issue "make intervals
 // cheap" tracks are printed from this same run, with their goals:
 //   interval / double <= 4,  dd / double <= 12,  float128 / double <= 80,
-//   mpfi / mpfr <= 2.2 at equal bits.
+//   mpfi / mpfr <= 2.2 at equal bits, arb / mpfr <= 1.3 at equal bits (issue 57).
 // Run: build/bench/appell_bench  (or, steadier on a shared machine, with
 //   --benchmark_min_time=0.2 --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true:
 //   the ratios then use the median of the repetitions).
@@ -93,12 +93,19 @@ class ratio_reporter : public median_reporter {
       line("float128 / double", t("float128") / t("double"), 80);
       line("mpfi / mpfr at 113 bits", t("mpfi113") / t("mpfr113"), 2.2);
       line("mpfi / mpfr at 256 bits", t("mpfi256") / t("mpfr256"), 2.2);
+      line("arb / mpfr at 113 bits", t("arb113") / t("mpfr113"), 1.3);
+      line("arb / mpfr at 256 bits", t("arb256") / t("mpfr256"), 1.3);
     }
     const double e113 = ns("elementary/mpfi113") / ns("elementary/mpfr113");
     const double e256 = ns("elementary/mpfi256") / ns("elementary/mpfr256");
     if (e113 > 0 && std::isfinite(e113))
       std::cout << "  elementary s = a b + c: mpfi / mpfr " << std::setprecision(3) << e113 << " at 113 bits, " << e256
                 << " at 256 bits (a new value per operation, as the scenes compute)\n";
+    const double a113 = ns("elementary/arb113") / ns("elementary/mpfr113");
+    const double a256 = ns("elementary/arb256") / ns("elementary/mpfr256");
+    if (a113 > 0 && std::isfinite(a113))
+      std::cout << "  elementary s = a b + c: arb / mpfr " << std::setprecision(3) << a113 << " at 113 bits, " << a256
+                << " at 256 bits\n";
     const double i113 = ns("in_place/mpfi113") / ns("in_place/mpfr113");
     const double i256 = ns("in_place/mpfi256") / ns("in_place/mpfr256");
     if (i113 > 0 && std::isfinite(i113))
@@ -123,6 +130,7 @@ int main(int argc, char** argv) {
   for (unsigned bits : {113u, 256u}) {
     benchmark::RegisterBenchmark(("elementary/mpfr" + std::to_string(bits)).c_str(), bench_elementary<mpfr>, bits);
     benchmark::RegisterBenchmark(("elementary/mpfi" + std::to_string(bits)).c_str(), bench_elementary<mpfi>, bits);
+    benchmark::RegisterBenchmark(("elementary/arb" + std::to_string(bits)).c_str(), bench_elementary<arb>, bits);
     benchmark::RegisterBenchmark(("in_place/mpfr" + std::to_string(bits)).c_str(), bench_in_place<mpfr>, bits);
     benchmark::RegisterBenchmark(("in_place/mpfi" + std::to_string(bits)).c_str(), bench_in_place<mpfi>, bits);
   }

@@ -1,5 +1,6 @@
 // Robots from URDF (Google Benchmark): one `eval` of a `urdf` scene -- the forward dynamics and
-// every joint's wrench, with their checks -- in double, interval and mpfi at 113 bits, on the
+// every joint's wrench, with their checks -- in double, interval, and mpfi, mpfr and arb at 113 bits (arb's
+// goal, issue 57: within 1.3 times mpfr's time), on the
 // robots Debian's dart-doc ships (the WAM arm, 7 joints; the KUKA KR5, 6; the Atlas humanoid,
 // 27, pelvis fixed) and appell's own arm, in one run; and cost and width against size on generated
 // serial chains of 1 to 128 links (the interval recursions componentwise and in balls).  Goals (issue 32): the WAM within 1 ms in interval and 20 ms in mpfi at
@@ -26,8 +27,8 @@ using namespace appell;
 namespace {
 
 const char* const robots[] = {"urdf_appell_arm.json", "urdf_wam.json", "urdf_kr5.json", "urdf_atlas.json"};
-const std::pair<const char*, std::optional<unsigned>> scalars[] = {{"double", std::nullopt}, {"interval", std::nullopt},
-                                                                   {"mpfi", 113u}};
+const std::pair<const char*, std::optional<unsigned>> scalars[] = {
+    {"double", std::nullopt}, {"interval", std::nullopt}, {"mpfi", 113u}, {"mpfr", 113u}, {"arb", 113u}};
 
 const int chain_sizes[] = {1, 2, 4, 8, 16, 32, 64, 128};
 
@@ -150,14 +151,16 @@ class table_reporter : public median_reporter {
     ConsoleReporter::Finalize();
     std::cout << "\none eval (forward dynamics and every joint's wrench), microseconds\n  " << std::left << std::setw(24)
               << "robot" << std::right;
-    for (const auto& [s, b] : scalars) std::cout << std::setw(12) << s;
-    std::cout << "   goal\n";
+    for (const auto& [s, b] : scalars) std::cout << std::setw(12) << (std::string(s) + (b ? " " + std::to_string(*b) : ""));
+    std::cout << "   arb/mpfr   goal\n";
     for (const char* r : robots) {
       std::cout << "  " << std::left << std::setw(24) << r << std::right;
       for (const auto& [s, b] : scalars) {
         const double t = ns(std::string(s) + "/" + r);
         std::cout << std::setw(12) << std::fixed << std::setprecision(1) << (t > 0 ? t / 1e3 : std::nan(""));
       }
+      const double arb_to_mpfr = ns(std::string("arb/") + r) / ns(std::string("mpfr/") + r);
+      std::cout << std::setw(8) << std::setprecision(2) << arb_to_mpfr << (arb_to_mpfr <= 1.3 ? " met " : " MISSED ");
       const std::string name = r;
       if (name == "urdf_wam.json") {
         const double i = ns(std::string("interval/") + r), m = ns(std::string("mpfi/") + r);

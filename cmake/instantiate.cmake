@@ -14,7 +14,7 @@
 # appell_add_models(TARGET HOME_DIR MODEL...) those of a program's own models (at the end).  Every generated unit of the project is written here.
 # The standard scalars that are intervals (scalar_traits<T>::is_interval; each generated
 # integrator unit checks it): their motion is enclosed, the others' simulated.
-set(APPELL_INTERVAL_SCALAR_NAMES interval mpfi)
+set(APPELL_INTERVAL_SCALAR_NAMES interval mpfi arb)
 
 # The explicit instantiations of a model's own physics in scalar INDEX, for its generated unit:
 # where the home HOME_TEXT defines APPELL_MODEL_PHYSICS_<model> (io/model.hpp), its expansion in

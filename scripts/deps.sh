@@ -2,7 +2,7 @@
 # Installs the Debian packages appell needs, where they are missing.
 set -euo pipefail
 packages=(g++ make cmake libeigen3-dev libboost-dev libboost-test-dev libgmp-dev
-          libmpfr-dev libmpfi-dev libqd-dev nlohmann-json3-dev gnuplot-nox libbenchmark-dev
+          libmpfr-dev libmpfi-dev libflint-arb-dev libqd-dev nlohmann-json3-dev gnuplot-nox libbenchmark-dev
           valgrind libsimbody-dev libboost-mpi-dev libopenmpi-dev openmpi-bin libssl-dev libtinyxml2-dev dart-doc
           libdart-dev libdart-utils-urdf-dev liborocos-kdl-dev libkdl-parser-dev libmujoco-dev
           libbullet-dev liburdfdom-dev pkg-config ccache)

@@ -73,7 +73,7 @@ void expect_bad_input(const std::string& args, const std::string& must_mention) 
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(every_scalar_evaluates_the_shipped_scene) {
-  BOOST_TEST(appell::standard_scalar_infos().size() == 7u);
+  BOOST_TEST(appell::standard_scalar_infos().size() == 8u);
   for (const appell::scalar_info& info : appell::standard_scalar_infos()) {
     const std::string s = info.name;
     const outcome o = run("eval " + good_scene + " --scalar " + s);

@@ -169,6 +169,9 @@ BOOST_AUTO_TEST_CASE(interval_types_contain_the_exact_value) {
     const long n = check_all<mpfi>(0);
     BOOST_TEST_MESSAGE("mpfi " << scope.bits() << ": " << n << " components contained");
     BOOST_TEST(n > 900);
+    const long na = check_all<arb>(0);
+    BOOST_TEST_MESSAGE("arb " << scope.bits() << ": " << na << " components contained");
+    BOOST_TEST(na > 900);
   }
 }
 

@@ -1,6 +1,6 @@
 // Random valid scenes through the whole of `appell eval` (JSON text, the
-// readers, the models, the evaluation policy) in interval<double> and in mpfi
-// (128 bits), against independent references at 400 bits (120 digits):
+// readers, the models, the evaluation policy) in interval<double>, in mpfi and in arb
+// (128 bits each), against independent references at 400 bits (120 digits):
 //   euler_body     Euler's equations written out, A w1' = (B - C) w2 w3 + L, ...;
 //   top_on_cone    Lagrange's equations with a multiplier (tests/independent/top_lagrange.hpp),
 //                  random cones with hand-written f' and f'';
@@ -355,7 +355,7 @@ std::string quantiles(std::vector<double> w) {
 
 /// The model's scenes, or (as_system) the same systems as "system" scene files.
 void run(const std::string& model, long n, const std::function<random_scene(long)>& make, bool as_system = false) {
-  tally ti, tm;
+  tally ti, tm, ta;
   for (long k = 0; k < n; ++k) {
     const random_scene s = make(k);
     const std::string& json = as_system ? s.system_json : s.json;
@@ -363,8 +363,10 @@ void run(const std::string& model, long n, const std::function<random_scene(long
     check<interval>(json, expected, ti);
     const mp_precision_scope bits(128);
     check<mpfi>(json, expected, tm);
+    check<arb>(json, expected, ta);
   }
-  for (const auto& [name, t] : {std::pair<const char*, const tally&>{"interval", ti}, {"mpfi 128", tm}}) {
+  for (const auto& [name, t] :
+       {std::pair<const char*, const tally&>{"interval", ti}, {"mpfi 128", tm}, {"arb 128", ta}}) {
     BOOST_TEST_MESSAGE(model << ", " << name << ": " << t.scenes << " scenes, " << t.values << " values, " << t.misses
                              << " misses, " << t.uncertified << " not certified, " << t.straddling_zero
                              << " enclosures of 0; relative widths: " << quantiles(t.relative_widths));

@@ -5,7 +5,7 @@
 //  * random trees (branches, several roots, revolute joints about elementary and oblique axes,
 //    prismatic and fixed joints, turned frames and inertia axes, efforts depending on the speeds):
 //    in double the two agree to within double's precision; the interval recursion encloses the
-//    generic path's value at 512 bits (MPFR), and so does the recursion in MPFI at 256 bits,
+//    generic path's value at 512 bits (MPFR), and so does the recursion in MPFI and in arb at 256 bits (componentwise and in balls),
 //    for M, b, Q, the accelerations and every joint's wrench;
 //  * the robots shipped (dart-doc's WAM, KR5 and Atlas, appell's arm), at random states: the same;
 //  * on Taylor series (jets: the motion's right-hand side, models/system_motion.hpp, runs the
@@ -195,6 +195,8 @@ double check_state(const system_input& in, const std::string& what, const vector
   const auto tm = numbers(by_tree<mpfi>(in, q, u));
   const auto bi = numbers(by_path<interval>(in, q, u, path::balls));
   const auto bm = numbers(by_path<mpfi>(in, q, u, path::balls));
+  const auto ta = numbers(by_tree<arb>(in, q, u));
+  const auto ba = numbers(by_path<arb>(in, q, u, path::balls));
   double widest = 0;
   for (std::size_t i = 0; i < truth.size(); ++i) {
     const ref_t x = bounds_of(truth[i].second).first;
@@ -214,6 +216,12 @@ double check_state(const system_input& in, const std::string& what, const vector
     const auto [mlo, mhi] = bounds_of(tm[i].second);
     BOOST_TEST((mlo <= x && x <= mhi), what << ": " << tm[i].first << " (mpfi) " << std::setprecision(80) << x << " outside [" << mlo << ", " << mhi << "]");
     BOOST_TEST(double(mhi - mlo) <= 1e-60 * std::max(1.0, std::abs(double(x))), what << ": " << tm[i].first << " (mpfi) wide");
+    for (const auto* a : {&ta, &ba}) {
+      const auto [alo, ahi] = bounds_of((*a)[i].second);
+      const char* kind = a == &ta ? "arb" : "arb balls";
+      BOOST_TEST((alo <= x && x <= ahi), what << ": " << (*a)[i].first << " (" << kind << ") outside [" << alo << ", " << ahi << "]");
+      BOOST_TEST(double(ahi - alo) <= 1e-60 * std::max(1.0, std::abs(double(x))), what << ": " << (*a)[i].first << " (" << kind << ") wide");
+    }
   }
   return widest;
 }
@@ -278,7 +286,7 @@ BOOST_AUTO_TEST_CASE(deep_chains_are_certified_in_balls) {
   // The componentwise interval recursion widens by a factor per link (wrapping) and cannot prove
   // the 48-link chain's mass matrix nonsingular; in balls the widths grow with the depth, not
   // geometrically.  Chains of 12 to 128 links at random states: interval (the library's dispatch:
-  // balls from tree_balls_depth on) and MPFI at 256 bits enclose the recursion's value at 512
+  // balls from tree_balls_depth on), MPFI and arb at 256 bits enclose the recursion's value at 512
   // bits (MPFR, the point recursion that the tests above hold to the generic path), and the
   // interval accelerations are certified within the relative width stated in docs/benchmarks.md.
   std::mt19937_64 rng(128);
@@ -299,6 +307,7 @@ BOOST_AUTO_TEST_CASE(deep_chains_are_certified_in_balls) {
       const auto ti = numbers(by_tree<interval>(in, &q, &u));
       const mp_precision_scope precision(256);
       const auto tm = numbers(by_tree<mpfi>(in, &q, &u));
+      const auto ta = numbers(by_tree<arb>(in, &q, &u));
       BOOST_REQUIRE(ti.size() == truth.size());
       double widest = 0;
       for (std::size_t i = 0; i < truth.size(); ++i) {
@@ -307,6 +316,8 @@ BOOST_AUTO_TEST_CASE(deep_chains_are_certified_in_balls) {
         BOOST_TEST((lo <= x && x <= hi), n << " links: " << ti[i].first << " = " << x << " outside [" << lo << ", " << hi << "]");
         const auto [mlo, mhi] = bounds_of(tm[i].second);
         BOOST_TEST((mlo <= x && x <= mhi), n << " links: " << tm[i].first << " (mpfi) outside");
+        const auto [alo, ahi] = bounds_of(ta[i].second);
+        BOOST_TEST((alo <= x && x <= ahi), n << " links: " << ta[i].first << " (arb) outside");
         if (truth[i].first.rfind("udot", 0) == 0)
           widest = std::max(widest, double(hi - lo) / std::max(1.0, std::abs(double(x))));
       }

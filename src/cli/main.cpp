@@ -35,7 +35,7 @@ constexpr std::array<command, 11> commands{{
      appell::cli::linearize_command},
     {"reference",
      "appell reference SCENE (--states FILE | --box SPEC --n N [--seed S] [--digits D] | --trajectory T --every DT)\n"
-     "                        [--scalar interval|mpfi]\n"
+     "                        [--scalar interval|mpfi|arb]\n"
      "                        [--bits N] [--inputs decimal|binary64] [--project TOL] [--quiet] --out DIR",
      "  reference: certified values of a scene's results at many states (FILE: CSV, a first column `state`\n"
      "             naming the rows, then the fields each row replaces: omega[1], a dotted path such as top.A,\n"
@@ -56,7 +56,7 @@ constexpr std::array<command, 11> commands{{
      "            every DT), summary.json, drift.png\n",
      appell::cli::simulate_command},
     {"enclose",
-     "appell enclose SCENE --t-end T [--scalar interval|mpfi] [--bits N] [--order N] [--tol E]\n"
+     "appell enclose SCENE --t-end T [--scalar interval|mpfi|arb] [--bits N] [--order N] [--tol E]\n"
      "                      [--max-width W] [--max-seconds S] [--mu MU] [--locate TOL] [--until-contact-fails] [--quiet]\n"
      "                      --out DIR",
      "  enclose: a rigorous enclosure of the motion up to T; DIR/steps.csv (each step, the state at its end\n"
@@ -68,7 +68,7 @@ constexpr std::array<command, 11> commands{{
      "           stop where a state's enclosure is wider than W (default 1)\n",
      appell::cli::enclose_command},
     {"validity",
-     "appell validity SCENE --vary FIELD=lo:hi --t-end T [--resolution R] [--scalar interval|mpfi]\n"
+     "appell validity SCENE --vary FIELD=lo:hi --t-end T [--resolution R] [--scalar interval|mpfi|arb]\n"
      "                       [--bits N] [--order N] [--tol E] [--max-width W] [--max-seconds S] [--mu MU] [--jobs N]\n"
      "                       [--quiet] --out DIR",
      "  validity: over which range of FIELD (a state component of the motion, mu, or a model parameter)\n"
@@ -93,8 +93,8 @@ constexpr std::array<command, 11> commands{{
 }};
 
 constexpr const char* general_text =
-    "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi\n"
-    "  --bits N: precision of mpfr and mpfi (default 256): exactly N bits, 2 to 100000\n"
+    "  NAME: double (default), long-double, dd, float128, mpfr, interval, mpfi, arb\n"
+    "  --bits N: precision of mpfr, mpfi and arb (default 256): exactly N bits, 2 to 100000\n"
     "  --max-seconds S: simulate and enclose stop after S seconds, their files written and marked\n"
     "                   incomplete (exit 3); the progress line estimates the time left\n"
     "  --quiet: no progress line on stderr (every command that shows one: tradeoff, extremes, reference,\n"

@@ -150,8 +150,9 @@ int motion(const motion_options& given) {
     throw input_error(std::string(o.locate ? "--locate" : "--until-contact-fails") +
                       ": the contacts' verdicts over time are enclose's (simulate's point values prove nothing)");
   if (o.scalar.empty()) o.scalar = o.command == "simulate" ? "double" : "interval";
-  if (o.command == "validity" && o.scalar != "interval" && o.scalar != "mpfi")
-    throw input_error("--scalar: validity proves its verdicts and needs an interval scalar (interval or mpfi), not " + o.scalar);
+  if (o.command == "validity" && o.scalar != "interval" && o.scalar != "mpfi" && o.scalar != "arb")
+    throw input_error("--scalar: validity proves its verdicts and needs an interval scalar (interval, mpfi or arb), not " +
+                      o.scalar);
   const scene_input scene = read_scene_file(o.scene);
   // The progress line: "simulate: t = 3.1 of 10 (31%), about 2 min 5 s left" (validity: the
   // fraction of its range decided).

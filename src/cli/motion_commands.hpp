@@ -1,7 +1,7 @@
 // appell simulate / appell enclose: motion over time (ode/).
 //
 //   appell simulate SCENE --t-end T [--scalar S] [--bits N] [--order N] [--tol E] [--every DT] --out DIR
-//   appell enclose  SCENE --t-end T [--scalar interval|mpfi] [--bits N] [--order N] [--tol E] [--max-width W] --out DIR
+//   appell enclose  SCENE --t-end T [--scalar interval|mpfi|arb] [--bits N] [--order N] [--tol E] [--max-width W] --out DIR
 //
 // simulate (point scalars): adaptive Taylor steps; DIR/trajectory.csv (t, the
 // state, the scene's results, its invariants at t = 0, DT, 2 DT, ..., T),

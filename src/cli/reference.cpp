@@ -92,8 +92,8 @@ reference_run::reference_run(const reference_options& o) {
   const auto built = std::make_shared<impl>();
   impl& r = *built;
   r.o = o;
-  if (o.scalar != "interval" && o.scalar != "mpfi")
-    throw input_error("--scalar: reference values are certified: interval or mpfi, got '" + printable(o.scalar) + "'");
+  if (o.scalar != "interval" && o.scalar != "mpfi" && o.scalar != "arb")
+    throw input_error("--scalar: reference values are certified: interval, mpfi or arb, got '" + printable(o.scalar) + "'");
   r.scene_text = read_text_file(o.scene, json_limits::bytes, "the scene file");
   r.root = parse_json(r.scene_text);
   if (!o.project.empty()) set_project(r.root, o.project, o.scene);  // the scene's "project", set or replaced
@@ -324,9 +324,9 @@ int reference_run::write(const std::vector<reference_state_text>& outputs, int p
   }
   const scene_input base = read_scene(r.root);
   unsigned bits = 53;
-  if (o.scalar == "mpfi") {
+  if (o.scalar == "mpfi" || o.scalar == "arb") {
     const mp_precision_scope scope(o.bits.value_or(256));
-    bits = scalar_traits<mpfi>::precision_bits();
+    bits = mp_precision_bits();
   }
   nlohmann::ordered_json manifest;
   manifest["appell_version"] = APPELL_VERSION_STRING;

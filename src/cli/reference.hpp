@@ -2,7 +2,7 @@
 // values for other implementations, and the scoring of their values.
 //
 // reference SCENE (--states FILE | --box SPEC --n N [--seed S] [--digits D] | --trajectory T --every DT)
-//           --scalar interval|mpfi [--bits N]
+//           --scalar interval|mpfi|arb [--bits N]
 //           [--inputs decimal|binary64] [--project TOL] --out DIR
 //   Many states of one scene in one process.  FILE is CSV: a header naming the
 //   fields each row replaces in the scene (a plain name is a key of the scene's

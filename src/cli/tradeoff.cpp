@@ -1,6 +1,6 @@
 // appell tradeoff SCENE [--reps N] [--quiet] --out DIR
 //
-// For each scalar (mpfr and mpfi at 64, 113, 256 and 1024 bits), in one run:
+// For each scalar (mpfr, mpfi and arb at 64, 113, 256 and 1024 bits), in one run:
 //  * ns_per_eval: the median over N batches of the time of one evaluation of
 //    the scene's dynamics (inputs converted to the scalar once, before timing;
 //    a batch holds enough evaluations to last >= 1 ms; warm-up excluded;
@@ -153,8 +153,8 @@ int tradeoff(const tradeoff_options& o) {
   int k = 0;
   for (const auto& r : rows) {
     if (std::isnan(r.ns) || !(r.digits > 0)) continue;
-    const bool rigorous = r.scalar == "interval" || r.scalar == "mpfi";
-    const std::string name = r.scalar + (r.scalar.rfind("mp", 0) == 0 ? " " + std::to_string(r.bits) + " bits" : "") +
+    const bool rigorous = r.scalar == "interval" || r.scalar == "mpfi" || r.scalar == "arb";
+    const std::string name = r.scalar + (r.scalar.rfind("mp", 0) == 0 || r.scalar == "arb" ? " " + std::to_string(r.bits) + " bits" : "") +
                              (rigorous ? " (rigorous)" : "");
     const int colour = r.scalar == "dd" ? 3 : r.bits <= 53 ? 1 : r.bits <= 65 ? 2 : r.bits <= 114 ? 4 : r.bits <= 257 ? 5 : 6;
     rows_data += figure(r.ratio, 6) + " " + figure(r.digits, 6) + "\n";

@@ -29,6 +29,7 @@ unsigned set_mp_precision_bits(unsigned bits) {
   if (bits < 2) throw parse_error("precision must be at least 2 bits");
   mp::mpfr_backend::default_bits(bits);
   mp::mpfi_backend::default_bits(bits);
+  mp::arb_backend::default_bits(bits);
   return bits;
 }
 
@@ -41,11 +42,13 @@ unsigned mpfr_precision_bits() { return mp::mpfr_backend::default_bits(); }
 mp_precision_scope::mp_precision_scope(unsigned bits)
     : saved_mpfr_bits_(mp::mpfr_backend::default_bits()),
       saved_mpfi_bits_(mp::mpfi_backend::default_bits()),
+      saved_arb_bits_(mp::arb_backend::default_bits()),
       bits_(set_mp_precision_bits(bits)) {}
 
 mp_precision_scope::~mp_precision_scope() {
   mp::mpfr_backend::default_bits(saved_mpfr_bits_);
   mp::mpfi_backend::default_bits(saved_mpfi_bits_);
+  mp::arb_backend::default_bits(saved_arb_bits_);
 }
 
 namespace {
@@ -330,13 +333,19 @@ mpfr produce_mpfr(const mpfr_producer& f, mpfr_rnd_t rnd) {
   f(r.backend().data(), rnd);
   return r;
 }
-mpfi produce_mpfi(const mpfr_producer& f) {
+namespace {
+// The producer's number enclosed in I (mpfi, arb): its bounds at the mp precision, rounded outward.
+template <class I>
+I produce_enclosure(const mpfr_producer& f) {
   const mpfr_prec_t prec = static_cast<mpfr_prec_t>(mp_precision_bits());
   mpfr_value lo(prec), hi(prec);
   f(lo, MPFR_RNDD);
   f(hi, MPFR_RNDU);
-  return mpfi_from_mpfr_bounds(lo, hi);
+  return scalar_traits<I>::from_mpfr_bounds(lo, hi);
 }
+}  // namespace
+mpfi produce_mpfi(const mpfr_producer& f) { return produce_enclosure<mpfi>(f); }
+arb produce_arb(const mpfr_producer& f) { return produce_enclosure<arb>(f); }
 
 // --- decimal syntax and exact values ---------------------------------------
 bool is_decimal_literal(std::string_view s) {

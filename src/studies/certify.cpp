@@ -1,4 +1,4 @@
-// Certified reference values (studies/certify.hpp): compiled once, for interval and mpfi.
+// Certified reference values (studies/certify.hpp): compiled once, for interval, mpfi and arb.
 #include "appell/studies/certify.hpp"
 
 #include <algorithm>
@@ -126,7 +126,7 @@ void certify_in(const scene_input& scene, certified_state& r) {
   const evaluation<T> e = evaluate<T>(scene, with_checks::no);  // the dataset prints no check
   // appell's own interval<double> enclosure (the tolerance's floor) and the amplification from
   // it: in interval, e itself (one evaluation a state, not three)
-  std::optional<evaluation<interval>> own53;  // in mpfi only
+  std::optional<evaluation<interval>> own53;  // in mpfi and arb only
   const evaluation<interval>* e53 = nullptr;
   if constexpr (std::is_same_v<T, interval>) {
     e53 = &e;
@@ -163,8 +163,11 @@ certified_state certify(const scene_input& scene, const std::string& scalar, std
   } else if (scalar == "mpfi") {
     const mp_precision_scope scope(bits.value_or(256));
     certify_in<mpfi>(scene, r);
+  } else if (scalar == "arb") {
+    const mp_precision_scope scope(bits.value_or(256));
+    certify_in<arb>(scene, r);
   } else {
-    throw input_error("--scalar: reference values are certified: interval or mpfi, got '" + scalar + "'");
+    throw input_error("--scalar: reference values are certified: interval, mpfi or arb, got '" + scalar + "'");
   }
   return r;
 }

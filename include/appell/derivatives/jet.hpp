@@ -75,6 +75,8 @@ bool identical(const T& a, const T& b) {
     const mpfi_srcptr x = a.backend().data(), y = b.backend().data();
     return mpfr_equal_p(&x->left, &y->left) && mpfr_equal_p(&x->right, &y->right) &&
            mpfr_signbit(&x->left) == mpfr_signbit(&y->left) && mpfr_signbit(&x->right) == mpfr_signbit(&y->right);
+  } else if constexpr (std::is_same_v<T, arb>) {
+    return ball_identical(a, b);
   } else if constexpr (scalar_traits<T>::is_interval) {
     return identical(scalar_traits<T>::lower(a), scalar_traits<T>::lower(b)) &&
            identical(scalar_traits<T>::upper(a), scalar_traits<T>::upper(b));
@@ -314,6 +316,12 @@ template <class T>
 struct product_sum {
   void add(T& s, const T& x, const T& y) { s += x * y; }
   void subtract(T& s, const T& x, const T& y) { s -= x * y; }
+};
+/// arb: Arb's addmul and submul (one call, one rounding), into s at its own precision.
+template <>
+struct product_sum<arb> {
+  void add(arb& s, const arb& x, const arb& y) { mp::arb_add_product(s.backend(), x.backend(), y.backend()); }
+  void subtract(arb& s, const arb& x, const arb& y) { mp::arb_subtract_product(s.backend(), x.backend(), y.backend()); }
 };
 template <class Backend>
   requires(std::is_same_v<Backend, mp::mpfr_backend> || std::is_same_v<Backend, mp::mpfi_backend>)

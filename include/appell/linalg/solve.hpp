@@ -39,6 +39,7 @@ namespace detail {
 template <class I>
 I thin(const bound_t<I>& p) {
   if constexpr (std::is_same_v<I, interval>) return interval(p);
+  else if constexpr (std::is_same_v<I, arb>) return ball_from_bounds(p, p);
   else return mpfi_from_bounds(p, p);
 }
 
@@ -46,6 +47,8 @@ template <class I>
 I intersect(const I& a, const I& b) {
   if constexpr (std::is_same_v<I, interval>) {
     return boost::numeric::intersect(a, b);
+  } else if constexpr (std::is_same_v<I, arb>) {
+    return ball_intersect(a, b);
   } else {
     I r;
     mpfi_intersect(r.backend().data(), a.backend().data(), b.backend().data());
@@ -443,7 +446,8 @@ namespace detail {
 template <class T>
 inline constexpr bool solved_here = std::is_same_v<T, double> || std::is_same_v<T, long double> ||
                                     std::is_same_v<T, dd> || std::is_same_v<T, float128> ||
-                                    std::is_same_v<T, mpfr> || std::is_same_v<T, interval> || std::is_same_v<T, mpfi>;
+                                    std::is_same_v<T, mpfr> || std::is_same_v<T, interval> || std::is_same_v<T, mpfi> ||
+                                    std::is_same_v<T, arb>;
 /// Cholesky's solve of a point system into x, the factor borrowed from Site's pool (linalg/scratch.hpp).
 template <class Site, class T>
 void cholesky_solve_into(const matrix_t<T>& A, const vector_t<T>& b, vector_t<T>& x) {

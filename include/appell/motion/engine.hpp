@@ -621,7 +621,7 @@ void run_problem(const P& prob, const vector_t<T>& x0, const scene_input& scene,
     }
   } else {
     if (q.kind != run_kind::simulate)
-      throw input_error("--scalar: enclose needs an interval scalar (interval or mpfi), not " + std::string(scalar_traits<T>::name));
+      throw input_error("--scalar: enclose needs an interval scalar (interval, mpfi or arb), not " + std::string(scalar_traits<T>::name));
     *q.simulated = simulate_problem<T>(prob, x0, scene, o, *q.rows);
   }
 }

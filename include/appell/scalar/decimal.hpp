@@ -34,6 +34,7 @@ dd produce_dd(const mpfr_producer& f);
 float128 produce_float128(const mpfr_producer& f, mpfr_rnd_t rnd);
 mpfr produce_mpfr(const mpfr_producer& f, mpfr_rnd_t rnd);
 mpfi produce_mpfi(const mpfr_producer& f);
+arb produce_arb(const mpfr_producer& f);
 
 /// The number a producer gives, in T: correctly rounded (point) or enclosed (interval).
 template <Scalar T>
@@ -46,6 +47,7 @@ T produce(const mpfr_producer& f) {
   else if constexpr (std::is_same_v<T, interval>)
     return interval(produce_double(f, MPFR_RNDD), produce_double(f, MPFR_RNDU));
   else if constexpr (std::is_same_v<T, mpfi>) return produce_mpfi(f);
+  else if constexpr (std::is_same_v<T, arb>) return produce_arb(f);
   else static_assert(sizeof(T) == 0, "no correctly rounded conversion for this scalar");
 }
 

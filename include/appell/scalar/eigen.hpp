@@ -1,4 +1,4 @@
-// appell/scalar/eigen.hpp -- Eigen::NumTraits for the seven scalars, in one place.
+// appell/scalar/eigen.hpp -- Eigen::NumTraits for the eight scalars, in one place.
 //
 // Boost 1.74's boost/multiprecision/eigen.hpp lacks infinity(), quiet_NaN() and
 // digits() and has a wrong lowest(), so it is NOT included; these traits
@@ -102,6 +102,19 @@ struct NumTraits<appell::mpfi> : appell::detail::numtraits_common<appell::mpfi> 
   static I lowest() { return I(NumTraits<appell::mpfr>::lowest()); }
   static I infinity() { return I(NumTraits<appell::mpfr>::infinity()); }
   static I quiet_NaN() { return appell::mpfi_from_bounds(-NumTraits<appell::mpfr>::infinity(), NumTraits<appell::mpfr>::infinity()); }
+};
+
+template <>
+struct NumTraits<appell::arb> : appell::detail::numtraits_common<appell::arb> {
+  using I = appell::arb;
+  static int digits() { return static_cast<int>(appell::mp_precision_bits()); }
+  static int digits10() { return static_cast<int>(appell::mp_precision_bits() * 0.30103); }
+  static I epsilon() { return std::numeric_limits<I>::epsilon(); }
+  static I dummy_precision() { return epsilon() * 1024; }
+  static I highest() { return (std::numeric_limits<I>::max)(); }
+  static I lowest() { return std::numeric_limits<I>::lowest(); }
+  static I infinity() { return std::numeric_limits<I>::infinity(); }
+  static I quiet_NaN() { return std::numeric_limits<I>::quiet_NaN(); }  // the whole line
 };
 
 namespace internal {

@@ -9,7 +9,7 @@
 //       interval: one upward-rounding scope (interval.hpp) and a fresh memo of
 //                 function values; finish() refuses (certification_error) if
 //                 the rounding mode was changed behind the scope's back;
-//       mpfi:     the working precision scalar_traits<mpfi>::working_bits(p)
+//       mpfi, arb: the working precision scalar_traits<T>::working_bits(p)
 //                 (guard bits); finish(x) rounds x outward to the p bits asked for;
 //       others:   nothing.
 //   require_finite(x, name)
@@ -46,7 +46,8 @@ class evaluation_scope {
       forget_interval_function_values();
       mode_.emplace();
     }
-    if constexpr (std::is_same_v<T, mpfi>) precision_.emplace(scalar_traits<T>::working_bits(result_bits_));
+    if constexpr (std::is_same_v<T, mpfi> || std::is_same_v<T, arb>)
+      precision_.emplace(scalar_traits<T>::working_bits(result_bits_));
   }
   evaluation_scope(const evaluation_scope&) = delete;
   evaluation_scope& operator=(const evaluation_scope&) = delete;
@@ -54,11 +55,12 @@ class evaluation_scope {
   /// The precision, in bits, of the results (the caller's, not the working one).
   unsigned result_bits() const { return result_bits_; }
 
-  /// Makes x a result of this evaluation: mpfi rounds outward to result_bits();
+  /// Makes x a result of this evaluation: mpfi and arb round outward to result_bits();
   /// interval checks that the rounding mode stayed upward.
   void finish(T& x) const {
     verify();
     if constexpr (std::is_same_v<T, mpfi>) x.backend().round_prec(static_cast<mpfr_prec_t>(result_bits_));
+    if constexpr (std::is_same_v<T, arb>) x.backend().round_prec(static_cast<long>(result_bits_));
     (void)x;
   }
   /// interval: certification_error if the rounding mode was changed behind the

@@ -37,7 +37,8 @@
   X(ctx, ::appell::float128, "float128") \
   X(ctx, ::appell::mpfr, "mpfr")         \
   X(ctx, ::appell::interval, "interval") \
-  X(ctx, ::appell::mpfi, "mpfi")
+  X(ctx, ::appell::mpfi, "mpfi")         \
+  X(ctx, ::appell::arb, "arb")
 
 #ifndef APPELL_BUILT_SCALAR_MASK
 #define APPELL_BUILT_SCALAR_MASK 0xffffffffu
@@ -155,7 +156,7 @@ auto with_scalar(const std::string& name, std::optional<unsigned> bits, F&& f)
       return f(tag);
     } else {
       if (bits)
-        throw input_error("--bits: applies to mpfr and mpfi only (" + name + " has a fixed precision)");
+        throw input_error("--bits: applies to mpfr, mpfi and arb only (" + name + " has a fixed precision)");
       return f(tag);
     }
   };

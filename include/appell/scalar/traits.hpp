@@ -35,7 +35,7 @@
 namespace appell {
 
 template <class T>
-struct scalar_traits;  // specialised below for the seven standard scalars
+struct scalar_traits;  // specialised below for the eight standard scalars
 
 template <class T>
 concept Scalar = requires { scalar_traits<T>::name; };
@@ -209,6 +209,49 @@ struct scalar_traits<mpfi> {
   }
 };
 
+/// The bounds and parts of an arb ball as MPFR numbers (src/scalar/arb_backend.cpp): lower
+/// rounded down and upper rounded up to the value's precision, the midpoint to nearest, the
+/// width (twice the radius) rounded up.
+mpfr ball_lower(const arb& x);
+mpfr ball_upper(const arb& x);
+mpfr ball_mid(const arb& x);
+mpfr ball_width(const arb& x);
+arb ball_from_bounds(const mpfr& lo, const mpfr& hi);
+arb ball_from_mpfr_bounds(mpfr_srcptr lo, mpfr_srcptr hi);
+/// x's bounds rounded outward to x's precision (the ball's exact ends may need more bits than
+/// it has; what is printed and tested is this enclosure of the ball).
+void ball_to_mpfr(const arb& x, mpfr_value& lo, mpfr_value& hi);
+arb ball_hull(const arb& a, const arb& b);
+/// A ball holding the intersection of a and b; certification_error where they are disjoint
+/// (two enclosures of one number never are).
+arb ball_intersect(const arb& a, const arb& b);
+bool ball_is_finite(const arb& x);
+bool ball_is_exact(const arb& x, long value);  // the point `value`
+/// The same ball, word for word (midpoint and radius).
+bool ball_identical(const arb& a, const arb& b);
+
+template <>
+struct scalar_traits<arb> {
+  static constexpr const char* name = "arb";
+  static constexpr bool is_interval = true;
+  static constexpr bool is_rigorous = true;
+  static constexpr bool runtime_precision = true;
+  static constexpr bool needs_upward_rounding = false;
+  /// The guard bits of mpfi (the same dependency effects): 113 bits work at 128, 256 at 320.
+  static unsigned working_bits(unsigned p) { return (p + 12 + 63) / 64 * 64; }
+  using bound_type = mpfr;
+  static unsigned precision_bits() { return mp_precision_bits(); }
+  static mpfr lower(const arb& x) { return ball_lower(x); }
+  static mpfr upper(const arb& x) { return ball_upper(x); }
+  static mpfr mid(const arb& x) { return ball_mid(x); }
+  static mpfr width(const arb& x) { return ball_width(x); }
+  static arb hull(const arb& a, const arb& b) { return ball_hull(a, b); }
+  static arb from_bounds(const mpfr& lo, const mpfr& hi) { return ball_from_bounds(lo, hi); }
+  static void to_mpfr(const arb& x, mpfr_value& lo, mpfr_value& hi) { ball_to_mpfr(x, lo, hi); }
+  static arb from_mpfr(mpfr_srcptr v) { return ball_from_mpfr_bounds(v, v); }
+  static arb from_mpfr_bounds(mpfr_srcptr lo, mpfr_srcptr hi) { return ball_from_mpfr_bounds(lo, hi); }
+};
+
 template <class T>
 inline constexpr bool is_interval_v = scalar_traits<T>::is_interval;
 
@@ -235,6 +278,7 @@ template <Scalar T> bool possibly_less(const T& a, const T& b) { return lower(a)
 /// x is exactly 0 (the point 0, or [0, 0]): a structural zero that a computation may skip.
 template <Scalar T> bool exactly_zero(const T& x) {
   if constexpr (std::is_same_v<T, mpfi>) return detail::mpfi_is_zero(x.backend().data());  // no bound copies
+  else if constexpr (std::is_same_v<T, arb>) return ball_is_exact(x, 0);
   else if constexpr (!scalar_traits<T>::is_interval) return x == 0;
   else return lower(x) == 0 && upper(x) == 0;
 }
@@ -242,6 +286,7 @@ template <Scalar T> bool exactly_zero(const T& x) {
 template <Scalar T> bool exactly_one(const T& x) {
   if constexpr (std::is_same_v<T, mpfi>)
     return mpfr_cmp_ui(&x.backend().data()->left, 1) == 0 && mpfr_cmp_ui(&x.backend().data()->right, 1) == 0;
+  else if constexpr (std::is_same_v<T, arb>) return ball_is_exact(x, 1);
   else if constexpr (!scalar_traits<T>::is_interval) return x == 1;
   else return lower(x) == 1 && upper(x) == 1;
 }
@@ -251,6 +296,8 @@ template <Scalar T> bool is_finite(const T& x) {
   if constexpr (std::is_same_v<T, dd>) return x.isfinite();
   else if constexpr (std::is_same_v<T, mpfi>) {
     return mpfi_bounded_p(x.backend().data()) != 0;
+  } else if constexpr (std::is_same_v<T, arb>) {
+    return ball_is_finite(x);
   } else if constexpr (std::is_same_v<bound_t<T>, mpfr>) {
     return mpfr_number_p(lower(x).backend().data()) && mpfr_number_p(upper(x).backend().data());
   } else if constexpr (std::is_same_v<bound_t<T>, float128>) {

@@ -8,13 +8,15 @@
 //  mpfr         appell::mpfr              point, bits chosen at run time (exactly)
 //  interval     appell::interval          rigorous, 53-bit bounds
 //  mpfi         appell::mpfi              rigorous, bits chosen at run time
+//  arb          appell::arb               rigorous (Arb's balls), bits chosen at run time
 //
 // The Boost.Multiprecision types are used without expression templates
 // (et_off): Eigen's own expression templates do not compose with Boost's.
 // appell::mpfi is MPFI under appell's own backend (mpfi_backend.hpp: both
 // bounds in one allocation), not Boost's mpfi_float_backend; appell::mpfr is
 // MPFR under appell's own backend (mpfr_backend.hpp: exactly the bits asked
-// for, and no heap up to 256 bits), not Boost's mpfr_float_backend.
+// for, and no heap up to 256 bits), not Boost's mpfr_float_backend.  appell::arb is a ball of
+// Arb (libflint-arb) under appell's backend (arb_backend.hpp: the value opaque, arb.h kept out).
 #pragma once
 
 #if defined(__GNUC__) && defined(__STRICT_ANSI__)
@@ -25,6 +27,7 @@
 #include <boost/multiprecision/mpfr.hpp>
 #include <qd/dd_real.h>
 
+#include "appell/scalar/arb_backend.hpp"
 #include "appell/scalar/interval.hpp"
 #include "appell/scalar/mpfi_backend.hpp"
 #include "appell/scalar/mpfr_backend.hpp"
@@ -34,9 +37,10 @@ namespace appell {
 using float128 = boost::multiprecision::float128;
 using mpfr = boost::multiprecision::number<mp::mpfr_backend, boost::multiprecision::et_off>;
 using mpfi = boost::multiprecision::number<mp::mpfi_backend, boost::multiprecision::et_off>;
+using arb = boost::multiprecision::number<mp::arb_backend, boost::multiprecision::et_off>;
 using dd = ::dd_real;
 
-/// Sets the precision of new `mpfr` and `mpfi` values (on this thread and
+/// Sets the precision of new `mpfr`, `mpfi` and `arb` values (on this thread and
 /// others) and returns `bits`: both get exactly `bits` bits (appell's own
 /// backends; Boost 1.74's mpfr_float, set in decimal digits, gave 113 -> 114).
 unsigned set_mp_precision_bits(unsigned bits);
@@ -57,6 +61,7 @@ class mp_precision_scope {
  private:
   unsigned saved_mpfr_bits_;
   unsigned saved_mpfi_bits_;
+  unsigned saved_arb_bits_;
   unsigned bits_;
 };
 

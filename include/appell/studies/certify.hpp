@@ -28,7 +28,7 @@ struct certified_state {
   std::vector<certified_quantity> quantities;
 };
 
-/// The scene's state certified in `scalar` ("interval", or "mpfi" at `bits`, default 256).
+/// The scene's state certified in `scalar` ("interval", or "mpfi" or "arb" at `bits`, default 256).
 /// input_error for another scalar or a scene it refuses; certification_error or domain_error
 /// where the enclosure cannot be formed.
 certified_state certify(const scene_input& scene, const std::string& scalar, std::optional<unsigned> bits = std::nullopt);
