@@ -18,6 +18,7 @@
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "appell/io/scene.hpp"
+#include "appell/scalar/arb_access.hpp"  // in_place/arb: Arb's functions called directly
 #include "median_reporter.hpp"
 
 using namespace appell;
@@ -61,7 +62,12 @@ void bench_in_place(benchmark::State& state, unsigned bits) {
   const mp_precision_scope scope(scalar_traits<T>::working_bits(bits));
   T a = T(1) / 3, b = T(2) / 7, c = T(5) / 11, s;
   for (auto _ : state) {
-    if constexpr (std::is_same_v<T, mpfr>) {
+    if constexpr (std::is_same_v<T, arb>) {  // Arb's own functions, in place: what the balls cost alone
+      const slong p = s.backend().prec();
+      arb_mul(mp::arb_of(s.backend()), mp::arb_of(a.backend()), mp::arb_of(b.backend()), p);
+      arb_add(mp::arb_of(s.backend()), mp::arb_of(s.backend()), mp::arb_of(c.backend()), p);
+      arb_sub(mp::arb_of(a.backend()), mp::arb_of(s.backend()), mp::arb_of(b.backend()), p);
+    } else if constexpr (std::is_same_v<T, mpfr>) {
       mpfr_mul(s.backend().data(), a.backend().data(), b.backend().data(), MPFR_RNDN);
       mpfr_add(s.backend().data(), s.backend().data(), c.backend().data(), MPFR_RNDN);
       mpfr_sub(a.backend().data(), s.backend().data(), b.backend().data(), MPFR_RNDN);
@@ -111,6 +117,11 @@ class ratio_reporter : public median_reporter {
     if (i113 > 0 && std::isfinite(i113))
       std::cout << "  in place s = a b + c:   mpfi / mpfr " << std::setprecision(3) << i113 << " at 113 bits, " << i256
                 << " at 256 bits (no new values: the bounds' arithmetic alone)\n";
+    const double b113 = ns("in_place/arb113") / ns("in_place/mpfr113");
+    const double b256 = ns("in_place/arb256") / ns("in_place/mpfr256");
+    if (b113 > 0 && std::isfinite(b113))
+      std::cout << "  in place s = a b + c:   arb / mpfr " << std::setprecision(3) << b113 << " at 113 bits, " << b256
+                << " at 256 bits (Arb's arb_mul, arb_add, arb_sub against MPFR's: the floor of arb's ratio)\n";
   }
 };
 
@@ -133,6 +144,7 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark(("elementary/arb" + std::to_string(bits)).c_str(), bench_elementary<arb>, bits);
     benchmark::RegisterBenchmark(("in_place/mpfr" + std::to_string(bits)).c_str(), bench_in_place<mpfr>, bits);
     benchmark::RegisterBenchmark(("in_place/mpfi" + std::to_string(bits)).c_str(), bench_in_place<mpfi>, bits);
+    benchmark::RegisterBenchmark(("in_place/arb" + std::to_string(bits)).c_str(), bench_in_place<arb>, bits);
   }
   benchmark::Initialize(&argc, argv);
   ratio_reporter reporter;

@@ -13,6 +13,7 @@
 // caller falls back to Krawczyk's iteration at full precision.
 #include <mpfi.h>
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <vector>
@@ -58,7 +59,23 @@ bool small_interval_solve_into(const matrix_t<interval>& A, const vector_t<inter
   return true;
 }
 
-std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const vector_t<mpfi>& b) {
+namespace {
+// A bound of an mpfi or arb value as a double rounded outward (down for the lower bound).
+template <class I>
+double bound_as_double(const I& x, bool upper_bound) {
+  if constexpr (std::is_same_v<I, mpfi>) {
+    const mpfi_srcptr a = x.backend().data();
+    return upper_bound ? mpfr_get_d(&a->right, MPFR_RNDU) : mpfr_get_d(&a->left, MPFR_RNDD);
+  } else {
+    const mpfr v = upper_bound ? upper(x) : lower(x);
+    return mpfr_get_d(v.backend().data(), upper_bound ? MPFR_RNDU : MPFR_RNDD);
+  }
+}
+
+// The residual fast path for I = mpfi or arb (the header's comment): x~ by mpfr LU on the
+// midpoints, r = b - A x~ in I, the rest in double.
+template <class I>
+std::optional<vector_t<I>> mp_residual_solve(const matrix_t<I>& A, const vector_t<I>& b) {
   const Eigen::Index n = A.rows();
   // Approximate solution at the working precision (mpfr LU on the midpoints).
   matrix_t<mpfr> Am(n, n);
@@ -66,11 +83,10 @@ std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const
   Eigen::MatrixXd Ad_mid(n, n);
   matrix_t<interval> Ad(n, n);  // outward double enclosure of [A]
   for (Eigen::Index i = 0; i < n; ++i) {
-    bm(i) = mpfi_mid(b(i));
+    bm(i) = mid(b(i));
     for (Eigen::Index j = 0; j < n; ++j) {
-      const mpfi_srcptr a = A(i, j).backend().data();
-      Am(i, j) = mpfi_mid(A(i, j));
-      const double lo = mpfr_get_d(&a->left, MPFR_RNDD), hi = mpfr_get_d(&a->right, MPFR_RNDU);
+      Am(i, j) = mid(A(i, j));
+      const double lo = bound_as_double(A(i, j), false), hi = bound_as_double(A(i, j), true);
       if (!(std::fabs(lo) <= std::numeric_limits<double>::max() && std::fabs(hi) <= std::numeric_limits<double>::max()))
         return std::nullopt;  // outside double's range: the full-precision path
       Ad(i, j) = interval(lo, hi, true);
@@ -87,49 +103,68 @@ std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const
 
   // r = b - A x~ at the working precision, exact zeros skipped.
   const mpfr_prec_t prec = static_cast<mpfr_prec_t>(mp_precision_bits());
-  vector_t<mpfi> r = b;
-  mpfi t;  // scratch at the working precision
+  vector_t<I> r = b;
+  I t;  // scratch at the working precision
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j) {
       if (exactly_zero(A(i, j)) || exactly_zero(xt(j))) continue;
-      mpfi_mul_fr(t.backend().data(), A(i, j).backend().data(), xt(j).backend().data());
-      mpfi_sub(r(i).backend().data(), r(i).backend().data(), t.backend().data());
+      if constexpr (std::is_same_v<I, mpfi>) {
+        mpfi_mul_fr(t.backend().data(), A(i, j).backend().data(), xt(j).backend().data());
+        mpfi_sub(r(i).backend().data(), r(i).backend().data(), t.backend().data());
+      } else {
+        t = scalar_traits<I>::from_mpfr(xt(j).backend().data());  // exactly: a ball of radius 0
+        mp::arb_subtract_product(r(i).backend(), A(i, j).backend(), t.backend());
+      }
     }
   // Scale r by 2^k (exact) so that its largest bound is about 1, and enclose it in double.
+  std::vector<mpfr_value> lo(static_cast<std::size_t>(n)), hi(static_cast<std::size_t>(n));  // r's bounds, exactly
   long e_max = LONG_MIN;
   for (Eigen::Index i = 0; i < n; ++i) {
-    const mpfi_srcptr ri = r(i).backend().data();
-    for (mpfr_srcptr v : {&ri->left, &ri->right}) {
+    scalar_traits<I>::to_mpfr(r(i), lo[static_cast<std::size_t>(i)], hi[static_cast<std::size_t>(i)]);
+    for (mpfr_srcptr v : {lo[static_cast<std::size_t>(i)].get(), hi[static_cast<std::size_t>(i)].get()}) {
       if (!mpfr_number_p(v)) return std::nullopt;
       if (!mpfr_zero_p(v)) e_max = std::max<long>(e_max, mpfr_get_exp(v));
     }
   }
   const long k = e_max == LONG_MIN ? 0 : -e_max;
   vector_t<interval> rd(n);
-  mpfr_value s(prec);
   for (Eigen::Index i = 0; i < n; ++i) {
-    const mpfi_srcptr ri = r(i).backend().data();
-    // at the bound's own precision the scaling is exact (r may carry b's precision,
-    // above the working one); the directions keep it an enclosure even if it were not
-    mpfr_set_prec(s, mpfr_get_prec(&ri->left));
-    mpfr_mul_2si(s, &ri->left, k, MPFR_RNDD);
-    const double lo = mpfr_get_d(s, MPFR_RNDD);
-    mpfr_set_prec(s, mpfr_get_prec(&ri->right));
-    mpfr_mul_2si(s, &ri->right, k, MPFR_RNDU);
-    const double hi = mpfr_get_d(s, MPFR_RNDU);
-    rd(i) = interval(lo, hi, true);
+    // at the bound's own precision the scaling is exact; the directions keep it an enclosure
+    // even if it were not
+    mpfr_value& l = lo[static_cast<std::size_t>(i)];
+    mpfr_value& h = hi[static_cast<std::size_t>(i)];
+    mpfr_mul_2si(l, l, k, MPFR_RNDD);
+    mpfr_mul_2si(h, h, k, MPFR_RNDU);
+    rd(i) = interval(mpfr_get_d(l, MPFR_RNDD), mpfr_get_d(h, MPFR_RNDU), true);
   }
   const std::optional<vector_t<interval>> e = residual_enclosure(R, identity_minus_product(R, Ad), rd);
   if (!e) return std::nullopt;
-  vector_t<mpfi> x(n);
+  vector_t<I> x(n);
   for (Eigen::Index i = 0; i < n; ++i) {
-    x(i).backend().set_prec(prec);
-    mpfi_ptr xi = x(i).backend().data();
-    mpfi_interv_d(t.backend().data(), (*e)(i).lower(), (*e)(i).upper());  // outward (exact at 53 bits and more)
-    mpfi_mul_2si(t.backend().data(), t.backend().data(), -k);             // exact
-    mpfi_add_fr(xi, t.backend().data(), xt(i).backend().data());          // outward
+    if constexpr (std::is_same_v<I, mpfi>) {
+      x(i).backend().set_prec(prec);
+      mpfi_ptr xi = x(i).backend().data();
+      mpfi_interv_d(t.backend().data(), (*e)(i).lower(), (*e)(i).upper());  // outward (exact at 53 bits and more)
+      mpfi_mul_2si(t.backend().data(), t.backend().data(), -k);             // exact
+      mpfi_add_fr(xi, t.backend().data(), xt(i).backend().data());          // outward
+    } else {
+      mpfr_value el(53), eh(53);
+      mpfr_set_d(el, (*e)(i).lower(), MPFR_RNDN);  // exact
+      mpfr_set_d(eh, (*e)(i).upper(), MPFR_RNDN);
+      mpfr_mul_2si(el, el, -k, MPFR_RNDN);  // exact (MPFR's exponent range)
+      mpfr_mul_2si(eh, eh, -k, MPFR_RNDN);
+      x(i) = scalar_traits<I>::from_mpfr_bounds(el, eh) + scalar_traits<I>::from_mpfr(xt(i).backend().data());
+    }
   }
   return x;
+}
+}  // namespace
+
+std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const vector_t<mpfi>& b) {
+  return mp_residual_solve<mpfi>(A, b);
+}
+std::optional<vector_t<arb>> arb_residual_solve(const matrix_t<arb>& A, const vector_t<arb>& b) {
+  return mp_residual_solve<arb>(A, b);
 }
 
 }  // namespace appell::detail

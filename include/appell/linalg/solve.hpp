@@ -235,6 +235,8 @@ bool small_interval_solve_into(const matrix_t<interval>& A, const vector_t<inter
 /// mpfi systems by the residual bound: x~ by mpfr LU, r = b - A x~ in mpfi,
 /// the rest in double.  nullopt where it does not apply (the caller falls back).
 std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const vector_t<mpfi>& b);
+/// The same for arb: r = b - A x~ in arb (Arb's submul), the rest as mpfi's.
+std::optional<vector_t<arb>> arb_residual_solve(const matrix_t<arb>& A, const vector_t<arb>& b);
 
 template <class M>
 void check_square(const M& A, Eigen::Index rhs_rows) {
@@ -365,6 +367,8 @@ vector_t<I> verified_solve(const matrix_t<I>& A, const vector_t<I>& b) {
   if (n == 0) return vector_t<I>(0);
   if constexpr (std::is_same_v<I, mpfi>)
     if (auto x = detail::mpfi_residual_solve(A, b)) return *x;
+  if constexpr (std::is_same_v<I, arb>)
+    if (auto x = detail::arb_residual_solve(A, b)) return *x;
   return detail::residual_or_krawczyk_solve(A, b, /*try_residual_bound=*/true);
 }
 

@@ -6,6 +6,7 @@
 // bound, so the printed interval still encloses the computed one.
 #pragma once
 
+#include <algorithm>
 #include <string>
 
 #include "appell/scalar/traits.hpp"
@@ -27,18 +28,30 @@ std::string to_decimal(const mpfr& x);
 template <Scalar T>
 std::string to_string(const T& x);
 
+namespace detail {
+/// The bits whose round-trip digits print a bound of x: the bound's own, but for an arb ball,
+/// whose exact ends may need more bits than its midpoint has, the midpoint's (the text is rounded
+/// outward either way).
+template <Scalar T>
+unsigned printed_bits(const T& x, mpfr_srcptr bound) {
+  const auto own = static_cast<unsigned>(mpfr_get_prec(bound));
+  if constexpr (std::is_same_v<T, arb>) return std::min(own, static_cast<unsigned>(x.backend().prec()));
+  else return own;
+}
+}  // namespace detail
+
 /// The lower and upper bound of x as outward-rounded decimal text.
 template <Scalar T>
 std::string lower_string(const T& x) {
   mpfr_value lo, hi;
   scalar_traits<T>::to_mpfr(x, lo, hi);
-  return mpfr_to_decimal(lo, roundtrip_digits(mpfr_get_prec(lo)), MPFR_RNDD);
+  return mpfr_to_decimal(lo, roundtrip_digits(detail::printed_bits(x, lo)), MPFR_RNDD);
 }
 template <Scalar T>
 std::string upper_string(const T& x) {
   mpfr_value lo, hi;
   scalar_traits<T>::to_mpfr(x, lo, hi);
-  return mpfr_to_decimal(hi, roundtrip_digits(mpfr_get_prec(hi)), MPFR_RNDU);
+  return mpfr_to_decimal(hi, roundtrip_digits(detail::printed_bits(x, hi)), MPFR_RNDU);
 }
 
 template <Scalar T>

@@ -218,8 +218,8 @@ mpfr ball_mid(const arb& x);
 mpfr ball_width(const arb& x);
 arb ball_from_bounds(const mpfr& lo, const mpfr& hi);
 arb ball_from_mpfr_bounds(mpfr_srcptr lo, mpfr_srcptr hi);
-/// x's bounds rounded outward to x's precision (the ball's exact ends may need more bits than
-/// it has; what is printed and tested is this enclosure of the ball).
+/// x's bounds exactly (each MPFR number's precision set to hold them: the ball's ends may need
+/// more bits than its midpoint has; format.hpp prints them rounded outward to the midpoint's).
 void ball_to_mpfr(const arb& x, mpfr_value& lo, mpfr_value& hi);
 arb ball_hull(const arb& a, const arb& b);
 /// A ball holding the intersection of a and b; certification_error where they are disjoint
