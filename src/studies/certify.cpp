@@ -9,6 +9,7 @@
 #include <string>
 
 #include "appell/errors.hpp"
+#include "appell/scalar/standard_scalars.hpp"
 #include "appell/io/amplification.hpp"
 #include "appell/scalar/x87_bounds.hpp"
 
@@ -164,8 +165,12 @@ certified_state certify(const scene_input& scene, const std::string& scalar, std
     const mp_precision_scope scope(bits.value_or(256));
     certify_in<mpfi>(scene, r);
   } else if (scalar == "arb") {
-    const mp_precision_scope scope(bits.value_or(256));
-    certify_in<arb>(scene, r);
+    if constexpr (scalar_built<arb>) {
+      const mp_precision_scope scope(bits.value_or(256));
+      certify_in<arb>(scene, r);
+    } else {
+      throw input_error(left_out_scalar_message("--scalar", "arb"));
+    }
   } else {
     throw input_error("--scalar: reference values are certified: interval, mpfi or arb, got '" + scalar + "'");
   }
