@@ -94,6 +94,7 @@ reference_run::reference_run(const reference_options& o) {
   r.o = o;
   if (o.scalar != "interval" && o.scalar != "mpfi" && o.scalar != "arb")
     throw input_error("--scalar: reference values are certified: interval, mpfi or arb, got '" + printable(o.scalar) + "'");
+  if (o.scalar == "arb" && !scalar_built<arb>) throw input_error(left_out_scalar_message("--scalar", "arb"));
   r.scene_text = read_text_file(o.scene, json_limits::bytes, "the scene file");
   r.root = parse_json(r.scene_text);
   if (!o.project.empty()) set_project(r.root, o.project, o.scene);  // the scene's "project", set or replaced
