@@ -9,6 +9,7 @@
 #include "appell/scalar/mpfi_backend.hpp"  // the text of an interval, read as mpfi reads it
 #include "appell/scalar/functions.hpp"
 #include "appell/scalar/traits.hpp"
+#include "enclosure_text.hpp"
 
 namespace appell::mp {
 
@@ -37,6 +38,19 @@ struct mpfr_tmp {
   mpfr_tmp(const mpfr_tmp&) = delete;
   mpfr_tmp& operator=(const mpfr_tmp&) = delete;
 };
+
+// r = v exactly (the midpoint holds every bit, radius 0); NaN: the whole line; +-inf: the point.
+void set_exact(arb_ptr r, mpfr_srcptr v) {
+  if (mpfr_nan_p(v)) {
+    whole_line(r);
+  } else if (mpfr_inf_p(v)) {
+    if (mpfr_sgn(v) > 0) arb_pos_inf(r);
+    else arb_neg_inf(r);
+  } else {
+    arf_set_mpfr(arb_midref(r), v);
+    mag_zero(arb_radref(r));
+  }
+}
 
 // The midpoint, rounded to nearest at the value's precision.
 void midpoint_to(mpfr_ptr out, const arb_backend& x) { arf_get_mpfr(out, arb_midref(A(x)), MPFR_RNDN); }
@@ -69,24 +83,11 @@ arb_backend& arb_backend::operator=(long double d) {
   }
   mpfr_tmp t(64);
   mpfr_set_ld(t.v, d, MPFR_RNDN);  // exact: 64 bits
-  if (mpfr_inf_p(t.v)) {
-    if (mpfr_sgn(t.v) > 0) arb_pos_inf(A(*this));
-    else arb_neg_inf(A(*this));
-  } else {
-    arf_set_mpfr(arb_midref(A(*this)), t.v);
-    mag_zero(arb_radref(A(*this)));
-  }
+  set_exact(A(*this), t.v);
   return *this;
 }
 arb_backend& arb_backend::operator=(const mpfr_backend& x) {
-  if (mpfr_nan_p(x.data())) whole_line(A(*this));
-  else if (mpfr_inf_p(x.data())) {
-    if (mpfr_sgn(x.data()) > 0) arb_pos_inf(A(*this));
-    else arb_neg_inf(A(*this));
-  } else {
-    arf_set_mpfr(arb_midref(A(*this)), x.data());
-    mag_zero(arb_radref(A(*this)));
-  }
+  set_exact(A(*this), x.data());
   return *this;
 }
 
@@ -130,25 +131,7 @@ void exact_bounds_of(const arb_backend& x, mpfr_value& lo, mpfr_value& hi) {
 std::string arb_backend::str(std::streamsize digits, std::ios_base::fmtflags f) const {
   mpfr_value lo, hi;
   exact_bounds_of(*this, lo, hi);
-  if (digits <= 0) {
-    const auto text = [&](mpfr_srcptr v) {
-      mpfr_backend b;
-      b.set_prec(mpfr_get_prec(v));
-      mpfr_set(b.data(), v, MPFR_RNDN);
-      return b.str(0, f);
-    };
-    if (mpfr_equal_p(lo, hi)) return text(lo);
-    return "{" + text(lo) + "," + text(hi) + "}";
-  }
-  const auto bound = [&](mpfr_srcptr v, const char* format) {
-    char* out = nullptr;
-    if (mpfr_asprintf(&out, format, static_cast<int>(digits - 1), v) < 0) throw std::bad_alloc();
-    std::string r(out);
-    mpfr_free_str(out);
-    return r;
-  };
-  const std::string l = bound(lo, "%.*RDe"), h = bound(hi, "%.*RUe");
-  return l == h ? l : "{" + l + "," + h + "}";
+  return enclosure_text(lo, hi, digits, f);
 }
 
 void arb_backend::negate() { arb_neg(A(*this), A(*this)); }
@@ -305,10 +288,8 @@ void eval_pow(arb_backend& r, const arb_backend& b, const arb_backend& e) {
     if (fmpz_sgn(n) < 0 && arb_contains_zero(A(b))) whole_line(A(t));
     else arb_pow_fmpz(A(t), A(b), n, t.prec());
     fmpz_clear(n);
-  } else if (arb_is_positive(A(b))) {
-    arb_pow(A(t), A(b), A(e), t.prec());
-  } else if (arb_is_nonnegative(A(b)) && arb_is_positive(A(e))) {
-    arb_pow(A(t), A(b), A(e), t.prec());  // Arb: 0^e = 0 for e > 0
+  } else if (arb_is_positive(A(b)) || (arb_is_nonnegative(A(b)) && arb_is_positive(A(e)))) {
+    arb_pow(A(t), A(b), A(e), t.prec());  // exp(e log b); Arb: 0^e = 0 for e > 0
   } else {
     whole_line(A(t));
   }
@@ -454,22 +435,9 @@ arb ball_from_bounds(const mpfr& lo, const mpfr& hi) {
 arb ball_from_mpfr_bounds(mpfr_srcptr lo, mpfr_srcptr hi) {
   arb r;
   arb_ptr p = arb_of(r.backend());
-  if (mpfr_nan_p(lo) || mpfr_nan_p(hi) || !mpfr_number_p(lo) || !mpfr_number_p(hi)) {
-    if (!mpfr_nan_p(lo) && mpfr_equal_p(lo, hi)) {  // the point +inf or -inf
-      if (mpfr_sgn(lo) > 0) arb_pos_inf(p);
-      else arb_neg_inf(p);
-    } else {
-      arf_zero(arb_midref(p));
-      mag_inf(arb_radref(p));
-    }
-    return r;
-  }
-  if (mpfr_equal_p(lo, hi)) {  // a point: exactly
-    arf_set_mpfr(arb_midref(p), lo);
-    mag_zero(arb_radref(p));
-  } else {
-    arb_set_interval_mpfr(p, lo, hi, r.backend().prec());
-  }
+  if (mpfr_equal_p(lo, hi)) mp::set_exact(p, lo);  // a point, an infinity included (never NaN: NaN equals nothing)
+  else if (!mpfr_number_p(lo) || !mpfr_number_p(hi)) mp::whole_line(p);  // NaN, or a half line
+  else arb_set_interval_mpfr(p, lo, hi, r.backend().prec());
   return r;
 }
 void ball_to_mpfr(const arb& x, mpfr_value& lo, mpfr_value& hi) { mp::exact_bounds_of(x.backend(), lo, hi); }

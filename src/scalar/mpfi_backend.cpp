@@ -7,6 +7,7 @@
 
 #include "appell/scalar/decimal.hpp"   // is_decimal_literal, decimal_sign_of_sum
 #include "appell/scalar/interval.hpp"  // appell::domain_error
+#include "enclosure_text.hpp"
 
 namespace appell::mp {
 
@@ -97,26 +98,7 @@ mpfi_backend& mpfi_backend::operator=(const char* s) {
 
 std::string mpfi_backend::str(std::streamsize digits, std::ios_base::fmtflags f) const {
   const mpfi_srcptr x = data();
-  if (digits <= 0) {  // every bound exactly, as Boost's mpfr backend writes it
-    mpfr_b a, b;
-    mpfr_set_prec(a.data(), prec());
-    mpfr_set_prec(b.data(), prec());
-    mpfr_set(a.data(), &x->left, MPFR_RNDN);  // exact
-    mpfr_set(b.data(), &x->right, MPFR_RNDN);
-    if (mpfr_equal_p(a.data(), b.data())) return a.str(0, f);
-    return "{" + a.str(0, f) + "," + b.str(0, f) + "}";
-  }
-  // `digits` significant digits, the lower bound rounded down and the upper up (scientific
-  // notation), so the text still encloses the value; one number where both agree.
-  const auto bound = [&](mpfr_srcptr v, const char* format) {
-    char* out = nullptr;
-    if (mpfr_asprintf(&out, format, static_cast<int>(digits - 1), v) < 0) throw std::bad_alloc();
-    std::string r(out);
-    mpfr_free_str(out);
-    return r;
-  };
-  const std::string lo = bound(&x->left, "%.*RDe"), hi = bound(&x->right, "%.*RUe");
-  return lo == hi ? lo : "{" + lo + "," + hi + "}";
+  return enclosure_text(&x->left, &x->right, digits, f);  // both bounds at prec()
 }
 
 int mpfi_backend::compare(const mpfi_backend& o) const {
