@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "appell/linalg/solve.hpp"
@@ -116,26 +117,44 @@ std::optional<vector_t<I>> mp_residual_solve(const matrix_t<I>& A, const vector_
         mp::arb_subtract_product(r(i).backend(), A(i, j).backend(), t.backend());
       }
     }
+  // r's bounds as MPFR numbers: mpfi's own, read in place; arb's ends, exactly, once.
+  std::vector<mpfr_value> arb_ends;
+  if constexpr (std::is_same_v<I, arb>) {
+    arb_ends.resize(2 * static_cast<std::size_t>(n));
+    for (Eigen::Index i = 0; i < n; ++i)
+      scalar_traits<I>::to_mpfr(r(i), arb_ends[2 * static_cast<std::size_t>(i)], arb_ends[2 * static_cast<std::size_t>(i) + 1]);
+  }
+  const auto ends = [&](Eigen::Index i) -> std::pair<mpfr_srcptr, mpfr_srcptr> {
+    if constexpr (std::is_same_v<I, mpfi>) {
+      const mpfi_srcptr ri = r(i).backend().data();
+      return {&ri->left, &ri->right};
+    } else {
+      return {arb_ends[2 * static_cast<std::size_t>(i)].get(), arb_ends[2 * static_cast<std::size_t>(i) + 1].get()};
+    }
+  };
   // Scale r by 2^k (exact) so that its largest bound is about 1, and enclose it in double.
-  std::vector<mpfr_value> lo(static_cast<std::size_t>(n)), hi(static_cast<std::size_t>(n));  // r's bounds, exactly
   long e_max = LONG_MIN;
   for (Eigen::Index i = 0; i < n; ++i) {
-    scalar_traits<I>::to_mpfr(r(i), lo[static_cast<std::size_t>(i)], hi[static_cast<std::size_t>(i)]);
-    for (mpfr_srcptr v : {lo[static_cast<std::size_t>(i)].get(), hi[static_cast<std::size_t>(i)].get()}) {
+    const auto [l, h] = ends(i);
+    for (mpfr_srcptr v : {l, h}) {
       if (!mpfr_number_p(v)) return std::nullopt;
       if (!mpfr_zero_p(v)) e_max = std::max<long>(e_max, mpfr_get_exp(v));
     }
   }
   const long k = e_max == LONG_MIN ? 0 : -e_max;
   vector_t<interval> rd(n);
+  mpfr_value s(prec);
   for (Eigen::Index i = 0; i < n; ++i) {
-    // at the bound's own precision the scaling is exact; the directions keep it an enclosure
-    // even if it were not
-    mpfr_value& l = lo[static_cast<std::size_t>(i)];
-    mpfr_value& h = hi[static_cast<std::size_t>(i)];
-    mpfr_mul_2si(l, l, k, MPFR_RNDD);
-    mpfr_mul_2si(h, h, k, MPFR_RNDU);
-    rd(i) = interval(mpfr_get_d(l, MPFR_RNDD), mpfr_get_d(h, MPFR_RNDU), true);
+    const auto [l, h] = ends(i);
+    // at the bound's own precision the scaling is exact (r may carry b's precision,
+    // above the working one); the directions keep it an enclosure even if it were not
+    mpfr_set_prec(s, mpfr_get_prec(l));
+    mpfr_mul_2si(s, l, k, MPFR_RNDD);
+    const double lo = mpfr_get_d(s, MPFR_RNDD);
+    mpfr_set_prec(s, mpfr_get_prec(h));
+    mpfr_mul_2si(s, h, k, MPFR_RNDU);
+    const double hi = mpfr_get_d(s, MPFR_RNDU);
+    rd(i) = interval(lo, hi, true);
   }
   const std::optional<vector_t<interval>> e = residual_enclosure(R, identity_minus_product(R, Ad), rd);
   if (!e) return std::nullopt;
