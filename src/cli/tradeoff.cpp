@@ -147,8 +147,9 @@ int tradeoff(const tradeoff_options& o) {
   // The plot: correct digits against cost, both on log scales (the fixed-precision types from 13
   // to 34 digits apart, mpfr and mpfi up to 300), one key entry per row (no label over a point:
   // mpfr and mpfi at one precision lie side by side), circles for point types, squares for the
-  // interval types (their digits certified), one colour per precision (a point type and the
-  // interval type of about its width side by side: double and interval, mpfr 257 and mpfi 256).
+  // interval types (their digits certified) but triangles for arb (else indistinguishable from
+  // mpfi's squares of the same colour), one colour per precision (a point type and the interval
+  // type of about its width side by side: double and interval, mpfr 257 and mpfi 256).
   std::string rows_data, series;
   int k = 0;
   for (const auto& r : rows) {
@@ -159,7 +160,7 @@ int tradeoff(const tradeoff_options& o) {
     const int colour = r.scalar == "dd" ? 3 : r.bits <= 53 ? 1 : r.bits <= 65 ? 2 : r.bits <= 114 ? 4 : r.bits <= 257 ? 5 : 6;
     rows_data += figure(r.ratio, 6) + " " + figure(r.digits, 6) + "\n";
     series += std::string(k ? ", " : "") + "$rows every ::" + std::to_string(k) + "::" + std::to_string(k) +
-              " using 1:2 with points pt " + (rigorous ? "5" : "7") + " ps 1.6 lc " + std::to_string(colour) + " title " +
+              " using 1:2 with points pt " + (r.scalar == "arb" ? "9" : rigorous ? "5" : "7") + " ps 1.6 lc " + std::to_string(colour) + " title " +
               gnuplot_quoted(name);
     ++k;
   }
