@@ -19,6 +19,7 @@
 #include <string>
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
+#include "generated_chain.hpp"
 #include "appell/io/json.hpp"
 #include "appell/models/euler_body.hpp"  // euler_free_body_solution
 #include "appell/scalar/standard_scalars.hpp"
@@ -1021,11 +1022,7 @@ BOOST_AUTO_TEST_CASE(simulate_and_enclose_refuse_bad_input_naming_the_flag) {
   const std::string big_scene = scene_file("fourteen", big);
   expect_bad_input("enclose " + big_scene + " --t-end 1 --out " + out, "enclose");
   BOOST_TEST(run("simulate " + big_scene + " --t-end 1 --quiet --out " + out + "_big").status == 0);
-  // A tree of links is carried in up to 24 components (the recursion's right-hand side): Atlas,
-  // pelvis fixed (54), is refused saying so.
-  if (std::filesystem::exists("/usr/share/doc/dart/data/sdf/atlas/atlas_v3_no_head.urdf"))
-    expect_bad_input("enclose " + APPELL_SOURCE_DIR + "/data/scenes/urdf_atlas.json --t-end 0.1 --out " + out,
-                     "24 for a tree of links");
+  // (A tree of links is carried in any size: a_tree_of_any_size_is_enclosed_around_its_motion.)
   // A state the scene refuses is refused as by eval (theta = 0: the Euler angles are singular).
   expect_bad_input("simulate " +
                        scene_file("top_upright", "{\"model\": \"heavy_top\", \"top\": {\"A\": \"0.08\", \"C\": \"0.02\", "
@@ -1262,6 +1259,39 @@ bool meet(const std::string& lo1, const std::string& hi1, const std::string& lo2
   return less_eq(lo1, hi2) && less_eq(lo2, hi1);
 }
 }  // namespace
+
+BOOST_AUTO_TEST_CASE(a_tree_of_any_size_is_enclosed_around_its_motion) {
+  // A tree of links is enclosed with its slopes sized at run time (the fixed capacities stop at
+  // 12 components): a generated chain of 7 links (14 components) and Atlas, pelvis fixed (54;
+  // where Debian's dart-doc is installed), each to a short T, every coordinate and rate of the
+  // last step meeting (containing, to the decimals printed) MPFR's simulation at 200 bits.
+  auto check = [&](const std::string& scene, const std::string& T, int components, const std::string& tag) {
+    const std::string enc = (work / (tag + "_enclose")).string(), sim = (work / (tag + "_simulate")).string();
+    const outcome e = run("enclose " + scene + " --t-end " + T + " --quiet --out " + enc);
+    BOOST_TEST_REQUIRE(e.status == 0, tag << ": " << e.err);
+    const outcome m =
+        run("simulate " + scene + " --t-end " + T + " --every " + T + " --scalar mpfr --bits 200 --quiet --out " + sim);
+    BOOST_TEST_REQUIRE(m.status == 0, tag << ": " << m.err);
+    const auto rows = csv_rows(sim + "/trajectory.csv");
+    BOOST_TEST_REQUIRE(rows.size() == 3u);  // header, t = 0, t = T
+    const auto last = last_step(enc);
+    BOOST_TEST_REQUIRE(!last.empty());
+    int compared = 0;
+    for (std::size_t c = 1; c < rows[0].size(); ++c) {
+      const std::string& name = rows[0][c];
+      if (name.find("_ddot") != std::string::npos) continue;  // results, not the state
+      BOOST_TEST_REQUIRE(last.count(name + "_lo") == 1u, tag << ": " << name);
+      const std::string& v = rows[2][c];
+      BOOST_TEST(meet(last.at(name + "_lo"), last.at(name + "_hi"), v, v),
+                 tag << ": " << name << ": " << v << " outside [" << last.at(name + "_lo") << ", " << last.at(name + "_hi") << "]");
+      ++compared;
+    }
+    BOOST_TEST(compared == components, tag);
+  };
+  check(appell::testing::generated_chain_scene(7, "appell_cli_chain"), "0.002", 14, "chain7");
+  if (std::filesystem::exists("/usr/share/doc/dart/data/sdf/atlas/atlas_v3_no_head.urdf"))
+    check(APPELL_SOURCE_DIR + "/data/scenes/urdf_atlas.json", "0.0005", 54, "atlas");
+}
 
 BOOST_AUTO_TEST_CASE(system_files_move_as_their_dedicated_models) {
   // The paper's scenes as system files (one generic path) and as their dedicated models: the

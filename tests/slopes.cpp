@@ -5,7 +5,10 @@
 //     the generic path: Euler's body (quadratic), the heavy top and the pendulum (sines, a solve),
 //     Example I's cone (an expression), the sphere in a bowl (Cotton's elimination);
 //   - each slope is no wider than the Jacobian over X (the mean-value form it replaces), and on
-//     Euler's body, whose right-hand side is quadratic, about half as wide.
+//     Euler's body, whose right-hand side is quadratic, about half as wide;
+//   - a tree of links (a generated chain, the recursion's right-hand side) carried at run time
+//     (slope<T, runtime_slopes>: vectors, a constant's empty) gives, entry for entry, the slopes
+//     of the fixed capacity padded with zeros, and they hold true differences as above.
 #define BOOST_TEST_MODULE slopes
 #include <boost/test/unit_test.hpp>
 
@@ -17,6 +20,8 @@
 #include "appell/io/scene.hpp"
 #include "appell/models/euler_body.hpp"
 #include "appell/models/heavy_top.hpp"
+#include "generated_chain.hpp"
+#include "appell/models/system_motion.hpp"
 #include "pendulum_problem.hpp"
 #include "appell/ode/taylor.hpp"
 
@@ -71,7 +76,17 @@ tally check(Make&& make, const std::vector<double>& x0, const std::vector<double
     {
       const evaluation_scope<interval> scope;
       ode::taylor_series_slopes(prob_i, xh, X, q, S);
-      ode::taylor_series_jacobian(prob_i, X, q, c, D);
+      using P = std::remove_cvref_t<decltype(prob_i)>;
+      if constexpr (P::dim == runtime_slopes) {  // multi_dual has a fixed count: the Jacobian padded to 12
+        BOOST_REQUIRE(n <= 12);
+        vector_t<interval> X12 = vector_t<interval>::Zero(12);
+        X12.head(n) = X;
+        std::vector<matrix_t<interval>> D12;
+        ode::taylor_series_jacobian(prob_i.template with_capacity<12>(), X12, q, c, D12);
+        for (const auto& m : D12) D.push_back(m.topLeftCorner(n, n));
+      } else {
+        ode::taylor_series_jacobian(prob_i, X, q, c, D);
+      }
     }
     for (int k = 1; k <= q; ++k)
       for (int i = 0; i < n; ++i)
@@ -194,4 +209,54 @@ BOOST_AUTO_TEST_CASE(slopes_of_example_one_and_the_sphere_in_a_bowl_hold_true_di
   const tally b = check(sphere, x0, scale, 6, 12, 4, 20261129u);
   report("rolling_sphere (bowl)", b);
   BOOST_TEST(b.slope_width < b.jacobian_width);
+}
+
+namespace {
+/// The motion of a `system` (or urdf) scene carried in D components (D = runtime_slopes: its own size).
+template <Scalar T, int D>
+system_problem<T, D> tree_problem(const scene_input& scene) {
+  const auto m = system_model::prepare<T>(scene.as<system_input>());
+  return model_motion<system_model>::start<T>(m).first.template with_capacity<D>();
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(slopes_of_a_tree_carried_at_run_time_equal_the_fixed_capacity_s_and_hold_true_differences) {
+  const scene_input scene = read_scene_file(testing::generated_chain_scene(5, "appell_test_slopes_chain"));
+  const auto point = tree_problem<double, runtime_slopes>(scene);
+  BOOST_REQUIRE(point.recursion());
+  const int n = point.size();
+  BOOST_REQUIRE(n == 10);
+  const vector_t<double> x0d = point.initial_state();
+  std::vector<double> x0(x0d.data(), x0d.data() + n), scale(static_cast<std::size_t>(n), 1e-2);  // radii up to 1e-3
+  // The same box and centre through both: the run-time slopes are the padded capacity's n x n
+  // block, bit for bit (the same operations on the same numbers), and the padding's are 0.
+  {
+    const auto run_time = tree_problem<interval, runtime_slopes>(scene);
+    const auto padded = tree_problem<interval, 12>(scene);
+    vector_t<interval> X(n), xh(n), X12 = vector_t<interval>::Zero(12), xh12 = vector_t<interval>::Zero(12);
+    for (int i = 0; i < n; ++i) {
+      const double c = x0[static_cast<std::size_t>(i)];
+      X(i) = X12(i) = interval(c - 1e-3, c + 2e-3);
+      xh(i) = xh12(i) = interval(c + 1e-4);
+    }
+    std::vector<matrix_t<interval>> S, S12;
+    const evaluation_scope<interval> scope;
+    ode::taylor_series_slopes(run_time, xh, X, 8, S);
+    ode::taylor_series_slopes(padded, xh12, X12, 8, S12);
+    long differ = 0, padding = 0;
+    for (std::size_t k = 0; k <= 8; ++k)
+      for (int i = 0; i < 12; ++i)
+        for (int j = 0; j < 12; ++j) {
+          const interval& b = S12[k](i, j);
+          if (i < n && j < n) differ += !(b.lower() == S[k](i, j).lower() && b.upper() == S[k](i, j).upper());
+          else if (i != j || k > 0) padding += !(b.lower() == 0 && b.upper() == 0);
+        }
+    BOOST_TEST(differ == 0);
+    BOOST_TEST(padding == 0);
+    BOOST_TEST(S[1].rows() == n);
+  }
+  auto make = [&]<class T>(std::type_identity<T>) { return tree_problem<T, runtime_slopes>(scene); };
+  const tally t = check(make, x0, scale, 6, 8, 4, 20261204u);
+  report("generated chain of 5 links (run-time slopes)", t);
+  BOOST_TEST(t.slope_width < t.jacobian_width);
 }

@@ -19,6 +19,8 @@
 // box's matrix and the centre's solution where the derivative's has the value's twice.
 #pragma once
 
+#include <algorithm>
+
 #include "appell/derivatives/dual.hpp"
 #include "appell/derivatives/slope.hpp"
 #include "appell/linalg/solve.hpp"
@@ -33,14 +35,24 @@ template <class X, class T, class Solve>
 void solve_derivatives(const matrix_t<X>& A, const vector_t<X>& b, const matrix_t<T>& Am, const vector_t<T>& y,
                        vector_t<X>& r, Solve&& value_solve) {
   const Eigen::Index n = A.rows();
-  for (std::size_t k = 0; k < b(0).d.size(); ++k) {
+  // slopes of a run-time count: a constant's list is empty (every slope 0); the others' as long
+  std::size_t count = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    count = std::max(count, b(i).d.size());
+    for (Eigen::Index j = 0; j < n; ++j) count = std::max(count, A(i, j).d.size());
+  }
+  auto part = [](const X& x, std::size_t k) -> T {
+    if constexpr (requires { x.part(k); }) return x.part(k);
+    else return x.d[k];
+  };
+  for (std::size_t k = 0; k < count; ++k) {
     bool constant = true;
     vector_t<T> rhs(n);
     for (Eigen::Index i = 0; i < n; ++i) {
-      T x = b(i).d[k];
+      T x = part(b(i), k);
       constant = constant && structurally_zero(x);
       for (Eigen::Index j = 0; j < n; ++j) {
-        if (structurally_zero(A(i, j).d[k])) continue;
+        if (k >= A(i, j).d.size() || structurally_zero(A(i, j).d[k])) continue;
         constant = false;
         x -= A(i, j).d[k] * y(j);
       }
@@ -48,7 +60,11 @@ void solve_derivatives(const matrix_t<X>& A, const vector_t<X>& b, const matrix_
     }
     if (constant) continue;
     const vector_t<T> yk = value_solve(Am, rhs);
-    for (Eigen::Index i = 0; i < n; ++i) r(i).d[k] = yk(i);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if constexpr (requires { r(i).d.resize(count); })  // a run-time count: the result may start empty
+        if (r(i).d.size() < count) r(i).d.resize(count);
+      r(i).d[k] = yk(i);
+    }
   }
 }
 template <class T, int N, class Solve>

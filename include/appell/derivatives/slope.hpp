@@ -30,7 +30,9 @@
 // on random boxes and states, and the width against the Jacobian's.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <vector>
 
 #include "appell/derivatives/dual.hpp"
 
@@ -112,6 +114,117 @@ struct slope {
     return r;
   }
   /// Every slope exactly 0.
+  bool derivatives_zero() const {
+    for (const T& di : d)
+      if (!structurally_zero(di)) return false;
+    return true;
+  }
+};
+
+/// The number of slopes given at run time: slope<T, runtime_slopes> keeps them in a vector, empty
+/// while every slope is exactly 0 (a constant: most quantities of a tree's recursion are), else
+/// one per variable, as many as the seeded variables have.  The rules are those above, the
+/// missing slopes of a constant read as exact zeros; enclose carries a state of any size so (a
+/// humanoid's 54 components and more), where the fixed capacities stop at 12 components.
+inline constexpr int runtime_slopes = -1;
+
+template <class T>
+struct slope<T, runtime_slopes> {
+  T v;               ///< over the box
+  T c;               ///< at the centre
+  std::vector<T> d;  ///< the slopes, or empty: all exactly 0
+
+  slope() : v(0), c(0) {}
+  slope(const T& value) : v(value), c(value) {}  // NOLINT: constants convert implicitly
+  template <class X>
+    requires std::is_arithmetic_v<X>
+  slope(X n) : v(T(n)), c(T(n)) {}  // NOLINT
+  slope(T box, T centre) : v(std::move(box)), c(std::move(centre)) {}
+
+  /// The k-th slope (an exact 0 past a constant's empty list).
+  T part(std::size_t k) const { return k < d.size() ? d[k] : T(0); }
+
+  slope& operator+=(const slope& o) {
+    v += o.v;
+    c += o.c;
+    if (d.empty()) d = o.d;
+    else if (!o.d.empty()) for (std::size_t i = 0; i < d.size(); ++i) d[i] += o.d[i];
+    return *this;
+  }
+  slope& operator-=(const slope& o) { *this = *this - o; return *this; }
+  slope& operator*=(const slope& o) { *this = *this * o; return *this; }
+  slope& operator/=(const slope& o) { *this = *this / o; return *this; }
+  friend slope operator-(const slope& a) {
+    slope r(-a.v, -a.c);
+    r.d.reserve(a.d.size());
+    for (const T& x : a.d) r.d.push_back(-x);
+    return r;
+  }
+  friend slope operator+(const slope& a) { return a; }
+  friend slope operator+(const slope& a, const slope& b) {
+    slope r(a.v + b.v, a.c + b.c);
+    if (a.d.empty()) r.d = b.d;
+    else if (b.d.empty()) r.d = a.d;
+    else {
+      r.d.resize(a.d.size());
+      for (std::size_t i = 0; i < a.d.size(); ++i) r.d[i] = a.d[i] + b.d[i];
+    }
+    return r;
+  }
+  friend slope operator-(const slope& a, const slope& b) {
+    slope r(a.v - b.v, a.c - b.c);
+    if (b.d.empty()) r.d = a.d;
+    else if (a.d.empty()) {
+      r.d.reserve(b.d.size());
+      for (const T& x : b.d) r.d.push_back(-x);
+    } else {
+      r.d.resize(a.d.size());
+      for (std::size_t i = 0; i < a.d.size(); ++i) r.d[i] = a.d[i] - b.d[i];
+    }
+    return r;
+  }
+  friend slope operator*(const slope& a, const slope& b) {
+    slope r(a.v * b.v, a.c * b.c);
+    const std::size_t n = std::max(a.d.size(), b.d.size());
+    if (n == 0) return r;
+    r.d.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const bool az = i >= a.d.size() || structurally_zero(a.d[i]), bz = i >= b.d.size() || structurally_zero(b.d[i]);
+      if (az && bz) continue;
+      if (az) r.d[i] = a.c * b.d[i];
+      else if (bz) r.d[i] = a.d[i] * b.v;
+      else r.d[i] = a.d[i] * b.v + a.c * b.d[i];
+    }
+    return r;
+  }
+  friend slope operator/(const slope& a, const slope& b) {
+    slope r(a.v / b.v, a.c / b.c);
+    const std::size_t n = std::max(a.d.size(), b.d.size());
+    if (n == 0) return r;
+    r.d.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const bool az = i >= a.d.size() || structurally_zero(a.d[i]), bz = i >= b.d.size() || structurally_zero(b.d[i]);
+      if (az && bz) continue;
+      if (bz) r.d[i] = a.d[i] / b.v;
+      else if (az) r.d[i] = -(r.c * b.d[i]) / b.v;
+      else r.d[i] = (a.d[i] - r.c * b.d[i]) / b.v;
+    }
+    return r;
+  }
+  static slope chain(const T& box, const T& centre, const T& s, const slope& x) {
+    slope r(box, centre);
+    r.d.resize(x.d.size());
+    for (std::size_t i = 0; i < x.d.size(); ++i)
+      if (!structurally_zero(x.d[i])) r.d[i] = s * x.d[i];
+    return r;
+  }
+  static slope chain_over(const T& box, const T& centre, const T& den, const slope& x) {
+    slope r(box, centre);
+    r.d.resize(x.d.size());
+    for (std::size_t i = 0; i < x.d.size(); ++i)
+      if (!structurally_zero(x.d[i])) r.d[i] = x.d[i] / den;
+    return r;
+  }
   bool derivatives_zero() const {
     for (const T& di : d)
       if (!structurally_zero(di)) return false;

@@ -100,9 +100,11 @@ inline bool energy_conserved(const system_definition& d) {
 }
 
 /// A system file's motion as an ordinary differential equation x' = f(x) (ode/).
-/// Dim: 0 for the point integrator (any size); otherwise the compile-time size the
-/// enclosure's Jacobians and slopes are carried in, at least size(): the state is then
-/// padded with constant zeros (x' = 0 there), which state_names() leaves out.
+/// Dim: 0 for the point integrator (any size); runtime_slopes (derivatives/slope.hpp) for
+/// enclose at the state's own size, the slopes in vectors (a tree of links: any size);
+/// otherwise the compile-time size the enclosure's Jacobians and slopes are carried in, at
+/// least size(): the state is then padded with constant zeros (x' = 0 there), which
+/// state_names() leaves out.
 template <Scalar T, int Dim = 0>
 struct system_problem {
   static constexpr int dim = Dim;
@@ -121,8 +123,9 @@ struct system_problem {
 
   /// The most components the generic path's right-hand side is carried in (its kinematics on
   /// multi_dual numbers of slopes: 3 x 3 matrices of them outgrow Eigen's fixed-size storage
-  /// beyond); a tree of links (tree_recursions_apply) takes the recursion, carried in up to 24.
+  /// beyond); a tree of links (tree_recursions_apply) takes the recursion, in any size.
   static constexpr int generic_capacity = 12;
+  static constexpr bool generic_path_fits = Dim >= 0 && Dim <= generic_capacity;
   bool recursion() const { return tree_recursions_apply(model->sys); }
 
   /// The same motion carried in D components.
@@ -180,13 +183,13 @@ struct system_problem {
         appell_equations<S> e;
         tree_equations_into<T, S>(model->sys, a.q, a.v_a, a.t, e);
         acc = e.accelerations();
-      } else if constexpr (Dim > generic_capacity) {
-        throw std::logic_error("system_problem: the generic path carried in more than 12 components");
+      } else if constexpr (!generic_path_fits) {
+        throw std::logic_error("system_problem: the generic path carried in more than 12 components, or at run time");
       } else {
         acc = cotton_free_accelerations<4>(sys, a.q, a.v_a, a.t, 0);
       }
-    } else if constexpr (Dim > generic_capacity) {
-      throw std::logic_error("system_problem: the generic path carried in more than 12 components");
+    } else if constexpr (!generic_path_fits) {
+      throw std::logic_error("system_problem: the generic path carried in more than 12 components, or at run time");
     } else {
       const auto adapted = change_speeds(sys, change(), speeds());
       vector_t<S> v = vector_t<S>::Zero(speeds());

@@ -370,7 +370,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
                       int pieces,
                       const std::type_identity_t<std::function<void(const enclosed_step<I>&)>>& emit,
                       const std::function<void(double)>& progress = {}) {
-  constexpr int n = P::dim;
+  const int n = P::dim == runtime_slopes ? static_cast<int>(x0.size()) : P::dim;  // run-time size: x0's
   const auto start = std::chrono::steady_clock::now();
   enclose_stats st;
   vector_t<I> X = x0;

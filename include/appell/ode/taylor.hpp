@@ -164,8 +164,9 @@ void taylor_series_jacobian(const P& prob, const vector_t<I>& X0, int p, series<
 template <class P, class I>
 void taylor_series_slopes(const P& prob, const vector_t<I>& xh, const vector_t<I>& X0, int p,
                           std::vector<matrix_t<I>>& D, bool memo = true, series<I>* centre = nullptr) {
-  constexpr int n = P::dim;
-  using SL = slope<jet<I>, n>;
+  // a problem of a run-time size (P::dim == runtime_slopes) carries as many slopes as X0 has components
+  const int n = P::dim == runtime_slopes ? static_cast<int>(X0.size()) : P::dim;
+  using SL = slope<jet<I>, P::dim>;
   series<I> cv(static_cast<std::size_t>(p + 1), vector_t<I>(n)), cc(static_cast<std::size_t>(p + 1), vector_t<I>(n));
   D.assign(static_cast<std::size_t>(p + 1), matrix_t<I>(n, n));
   cv[0] = X0;
@@ -182,6 +183,7 @@ void taylor_series_slopes(const P& prob, const vector_t<I>& xh, const vector_t<I
     for (int i = 0; i < n; ++i) {
       X(i).v = component_jet(cv, i, k);
       X(i).c = component_jet(cc, i, k);
+      if constexpr (P::dim == runtime_slopes) X(i).d.resize(static_cast<std::size_t>(n));
       derivative_jets(D, i, k, X(i).d);
     }
     const vector_t<SL> F = prob.template rhs<SL>(X);
@@ -189,7 +191,13 @@ void taylor_series_slopes(const P& prob, const vector_t<I>& xh, const vector_t<I
     for (int i = 0; i < n; ++i) {
       cv[static_cast<std::size_t>(k + 1)](i) = F(i).v[k] / kp1;
       cc[static_cast<std::size_t>(k + 1)](i) = F(i).c[k] / kp1;
-      for (int j = 0; j < n; ++j) D[static_cast<std::size_t>(k + 1)](i, j) = F(i).d[static_cast<std::size_t>(j)][k] / kp1;
+      for (int j = 0; j < n; ++j) {
+        const auto sj = static_cast<std::size_t>(j);
+        if constexpr (P::dim == runtime_slopes)
+          D[static_cast<std::size_t>(k + 1)](i, j) = sj < F(i).d.size() ? I(F(i).d[sj][k] / kp1) : I(0);
+        else
+          D[static_cast<std::size_t>(k + 1)](i, j) = F(i).d[sj][k] / kp1;
+      }
     }
   }
   if (centre) *centre = std::move(cc);
