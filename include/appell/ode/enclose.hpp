@@ -399,7 +399,10 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // dependent) or a quantity of the step may not be finite.
     try {
     const series<I> cX = taylor_series(prob, X, p);
-    const int q = std::min(p - 1, std::max(6, p / 2));
+    // The slopes' order: half the series' by default; a problem may say otherwise (a tree of
+    // links takes 6: docs/benchmarks.md, "Motion of any size").
+    int q = std::min(p - 1, std::max(6, p / 2));
+    if constexpr (requires { prob.slope_order(p); }) q = prob.slope_order(p);
     std::vector<matrix_t<I>> DX;
     series<I> cc;  // the coefficients at the centre xh, to q: T_q(xh)
     {
