@@ -129,8 +129,8 @@ struct system_problem {
   bool recursion() const { return tree_recursions_apply(model->sys); }
   /// The order of the slopes enclose takes at series order p: 6 for a tree of links (the terms
   /// past it over the step's thin box are far below the state's width: the robots' enclosures
-  /// are as wide with 6 as with 12, at half the time), half of p otherwise (enclose's default).
-  int slope_order(int p) const { return std::min(p - 1, recursion() ? 6 : std::max(6, p / 2)); }
+  /// are as wide with 6 as with 12, at half the time), enclose's default otherwise.
+  int slope_order(int p) const { return recursion() ? std::min(p - 1, 6) : ode::default_slope_order(p); }
 
   /// The same motion carried in D components.
   template <int D>

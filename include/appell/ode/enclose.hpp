@@ -364,6 +364,10 @@ struct affine_set {
 /// widen long runs, more cost time (docs/motion.md, "The affine set", has the measurements).
 inline constexpr int affine_symbols_per_component = 3000;
 
+/// The order of the slopes a step takes at series order p, unless the problem gives its own
+/// (slope_order): half the series' order, at least 6.
+inline int default_slope_order(int p) { return std::min(p - 1, std::max(6, p / 2)); }
+
 /// Encloses the motion of prob from the box x0 over [0, t_end]; calls `emit` for every step.
 template <class P, class I>
 enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int p, double tol, double max_width,
@@ -399,9 +403,9 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // dependent) or a quantity of the step may not be finite.
     try {
     const series<I> cX = taylor_series(prob, X, p);
-    // The slopes' order: half the series' by default; a problem may say otherwise (a tree of
-    // links takes 6: docs/benchmarks.md, "Motion of any size").
-    int q = std::min(p - 1, std::max(6, p / 2));
+    // The slopes' order: default_slope_order, or the problem's own (a tree of links takes 6:
+    // docs/benchmarks.md, "Motion of any size").
+    int q = default_slope_order(p);
     if constexpr (requires { prob.slope_order(p); }) q = prob.slope_order(p);
     std::vector<matrix_t<I>> DX;
     series<I> cc;  // the coefficients at the centre xh, to q: T_q(xh)
