@@ -2,6 +2,7 @@
 // urdfdom uses), every number kept as the decimal text written in the file.
 #include "appell/io/urdf.hpp"
 
+#include <mpfi.h>
 #include <tinyxml2.h>
 
 #include <algorithm>
@@ -86,6 +87,27 @@ void read_origin(const std::string& file, const tinyxml2::XMLElement* parent, st
 
 bool is_zero(const std::string& d) { return decimal_sign_of_sum({{1, d}}) == 0; }
 
+/// Whether |cos(pitch)| > floating_base_pitch_margin is proved for the decimal `pitch` (MPFI at
+/// 256 bits on the decimal's exact enclosure): false near +-90 degrees, and where undecided.
+bool pitch_is_regular(const std::string& pitch) {
+  const mpfr_producer exact = decimal_producer(pitch);
+  mpfr_t lo, hi, margin;
+  mpfi_t x;
+  mpfr_inits2(256, lo, hi, margin, static_cast<mpfr_ptr>(nullptr));
+  mpfi_init2(x, 256);
+  exact(lo, MPFR_RNDD);
+  exact(hi, MPFR_RNDU);
+  mpfi_interv_fr(x, lo, hi);
+  mpfi_cos(x, x);
+  mpfi_abs(x, x);
+  mpfr_set_d(margin, floating_base_pitch_margin, MPFR_RNDU);
+  mpfi_get_left(lo, x);
+  const bool regular = mpfr_cmp(lo, margin) > 0;
+  mpfi_clear(x);
+  mpfr_clears(lo, hi, margin, static_cast<mpfr_ptr>(nullptr));
+  return regular;
+}
+
 }  // namespace
 
 urdf_robot parse_urdf(const std::string& text, const std::string& file) {
@@ -142,7 +164,7 @@ urdf_robot parse_urdf(const std::string& text, const std::string& file) {
       j.type = attribute(file, e, "type");
       if (j.type == "floating" || j.type == "planar")
         throw input_error(where(file, e) + ": a " + j.type + " joint is not supported (revolute, continuous, "
-                                           "prismatic and fixed are; the base is fixed)");
+                                           "prismatic and fixed are; a floating base is a \"urdf\" scene's \"base\": \"floating\")");
       if (j.type != "revolute" && j.type != "continuous" && j.type != "prismatic" && j.type != "fixed")
         throw input_error(where(file, e) + ": unknown joint type \"" + printable(j.type) +
                           "\" (revolute, continuous, prismatic, fixed)");
@@ -205,8 +227,6 @@ urdf_robot parse_urdf(const std::string& text, const std::string& file) {
                           "\">: not reached from the root link \"" + printable(robot.root) + "\" (a loop)");
   }
   robot.joints = std::move(ordered);
-  if (std::none_of(robot.joints.begin(), robot.joints.end(), [](const urdf_robot::joint& j) { return j.type != "fixed"; }))
-    throw input_error(file + ": no joint moves (revolute, continuous or prismatic): nothing to compute");
   return robot;
 }
 
@@ -230,10 +250,10 @@ const parsed_urdf_file& parsed_urdf(const std::string& path) {
 
 urdf_robot read_urdf_file(const std::string& path) { return parsed_urdf(path).robot; }
 
-std::map<std::string, std::string> urdf_joint_names(const urdf_robot& robot) {
+std::map<std::string, std::string> urdf_joint_names(const urdf_robot& robot, const std::vector<std::string>& taken) {
   static const std::set<std::string> reserved{"pi", "t", "sin", "cos", "tan", "exp", "log", "sqrt", "rx", "ry", "rz"};
   std::map<std::string, std::string> out;
-  std::set<std::string> used;
+  std::set<std::string> used(taken.begin(), taken.end());
   for (const auto& j : robot.joints) {
     std::string s;
     for (char ch : j.name) s += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
@@ -258,6 +278,12 @@ namespace {
 template <class F>
 void for_each_state_entry(const urdf_robot& robot, const std::map<std::string, std::string>& names,
                           const urdf_scene_options& o, F&& f) {
+  if (o.floating)
+    for (const auto& b : floating_base_coordinates()) {
+      const auto it = o.state.find(b);
+      f(b, it == o.state.end() ? std::string("0") : it->second.first);
+      f(b + "_dot", it == o.state.end() ? std::string("0") : it->second.second);
+    }
   for (const auto& j : robot.joints) {
     if (j.type == "fixed") continue;
     const std::string& n = names.at(j.name);
@@ -268,9 +294,23 @@ void for_each_state_entry(const urdf_robot& robot, const std::map<std::string, s
 }
 }  // namespace
 
+namespace {
+std::vector<std::string> floating_base_taken_names(const urdf_scene_options& o) {
+  return o.floating ? floating_base_coordinates() : std::vector<std::string>{};
+}
+
+/// The system file's body for a floating base's k-th joint (0 to 4: the frames of no mass between
+/// the ground and the root link, which hangs from the last, base_roll).
+std::string floating_base_frame(std::size_t k) { return floating_base_coordinates()[k] + "_frame"; }
+}  // namespace
+
 std::string urdf_to_system(const urdf_robot& robot, const urdf_scene_options& o) {
   using json = nlohmann::ordered_json;
-  const std::map<std::string, std::string> names = urdf_joint_names(robot);
+  if (!o.floating &&
+      std::none_of(robot.joints.begin(), robot.joints.end(), [](const urdf_robot::joint& j) { return j.type != "fixed"; }))
+    throw input_error("the robot \"" + printable(robot.name) + "\": no joint moves (revolute, continuous or prismatic) "
+                      "and its base is fixed: nothing to compute");
+  const std::map<std::string, std::string> names = urdf_joint_names(robot, floating_base_taken_names(o));
   auto list = [](const auto& a) {
     json j = json::array();
     for (const auto& x : a) j.push_back(x);
@@ -279,14 +319,14 @@ std::string urdf_to_system(const urdf_robot& robot, const urdf_scene_options& o)
   json doc;
   doc["model"] = "system";
   json coords = json::array();
+  if (o.floating)
+    for (const auto& b : floating_base_coordinates()) coords.push_back(b);
   for (const auto& j : robot.joints)
     if (j.type != "fixed") coords.push_back(names.at(j.name));
   doc["coordinates"] = coords;
   doc["gravity"] = list(o.gravity);
   json bodies = json::object();
-  for (const auto& j : robot.joints) {
-    const auto& l = *std::find_if(robot.links.begin(), robot.links.end(), [&](const urdf_robot::link& x) { return x.name == j.child; });
-    json body = json::object();
+  auto inertial_of = [&](const urdf_robot::link& l, json& body) {
     if (l.in.given && !is_zero(l.in.mass)) {
       body["mass"] = l.in.mass;
       body["inertia"] = list(l.in.inertia);
@@ -295,9 +335,39 @@ std::string urdf_to_system(const urdf_robot& robot, const urdf_scene_options& o)
       if (!(is_zero(l.in.rpy[0]) && is_zero(l.in.rpy[1]) && is_zero(l.in.rpy[2]))) in["rpy"] = list(l.in.rpy);
       if (!in.empty()) body["inertial"] = in;
     }
+  };
+  if (o.floating) {
+    // The six joints of a free body, from the ground out: translations along the fixed axes x,
+    // y, z, then the rotations about z, y, x of URDF's rpy (R = Rz(yaw) Ry(pitch) Rx(roll)); the
+    // root link hangs from the last one, its frame that joint's frame.
+    const auto& bases = floating_base_coordinates();
+    for (std::size_t k = 0; k < bases.size(); ++k) {
+      const std::array<std::string, 3> axis = k == 0 || k == 5 ? std::array<std::string, 3>{"1", "0", "0"}
+                                              : k == 1 || k == 4 ? std::array<std::string, 3>{"0", "1", "0"}
+                                                                 : std::array<std::string, 3>{"0", "0", "1"};
+      json body = json::object();
+      if (k == 5) {
+        const auto& root = *std::find_if(robot.links.begin(), robot.links.end(),
+                                         [&](const urdf_robot::link& x) { return x.name == robot.root; });
+        inertial_of(root, body);
+      }
+      json joint = json::object();
+      joint["name"] = bases[k];
+      if (k > 0) joint["parent"] = floating_base_frame(k - 1);
+      joint["type"] = k < 3 ? "prismatic" : "revolute";
+      joint["coordinate"] = bases[k];
+      joint["axis"] = list(axis);
+      body["joint"] = joint;
+      bodies[k == 5 ? robot.root : floating_base_frame(k)] = body;
+    }
+  }
+  for (const auto& j : robot.joints) {
+    const auto& l = *std::find_if(robot.links.begin(), robot.links.end(), [&](const urdf_robot::link& x) { return x.name == j.child; });
+    json body = json::object();
+    inertial_of(l, body);
     json joint = json::object();
     joint["name"] = names.at(j.name);
-    if (j.parent != robot.root) joint["parent"] = j.parent;
+    if (j.parent != robot.root || o.floating) joint["parent"] = j.parent;
     joint["type"] = j.type == "continuous" ? "revolute" : j.type;
     if (j.type != "fixed") joint["coordinate"] = names.at(j.name);
     joint["origin"] = list(j.xyz);
@@ -315,6 +385,8 @@ std::string urdf_to_system(const urdf_robot& robot, const urdf_scene_options& o)
   doc["state"] = state;
   if (!o.accelerations.empty()) {
     json acc = json::object();
+    if (o.floating)
+      for (const auto& b : floating_base_coordinates()) acc[b + "_ddot"] = o.accelerations.at(b);
     for (const auto& j : robot.joints)
       if (j.type != "fixed") acc[names.at(j.name) + "_ddot"] = o.accelerations.at(j.name);
     doc["accelerations"] = acc;
@@ -333,14 +405,38 @@ const parsed_urdf_file& read_urdf_scene_options(object_reader& scene, std::strin
   if (path.is_relative() && !scene_directory().empty()) path = std::filesystem::path(scene_directory()) / path;
   const parsed_urdf_file& parsed = parsed_urdf(path.string());
   const urdf_robot& robot = parsed.robot;
-  if (scene.has("base") && scene.string("base") != "fixed")
-    throw input_error(scene.path("base") + ": only \"fixed\" is supported (the root link is the ground)");
+  if (scene.has("base")) {
+    const std::string base = scene.string("base");
+    if (base != "fixed" && base != "floating")
+      throw input_error(scene.path("base") + ": \"fixed\" (the root link is the ground) or \"floating\" (it moves "
+                        "freely), not \"" + printable(base) + "\"");
+    o.floating = base == "floating";
+  }
+  if (o.floating) {
+    // The base's coordinates are named as joints are: no joint or link may take their names.
+    for (const auto& j : robot.joints)
+      for (const auto& b : floating_base_coordinates())
+        if (j.name == b)
+          throw input_error(scene.path("base") + ": the URDF's joint \"" + printable(j.name) + "\" (" + file + ":" +
+                            std::to_string(j.line) + ") has the name of a floating base's coordinate (" + b + ")");
+    for (const auto& l : robot.links)
+      for (std::size_t k = 0; k + 1 < floating_base_coordinates().size(); ++k)
+        if (l.name == floating_base_frame(k))
+          throw input_error(scene.path("base") + ": the URDF's link \"" + printable(l.name) + "\" (" + file + ":" +
+                            std::to_string(l.line) + ") has the name of a floating base's frame");
+  } else if (std::none_of(robot.joints.begin(), robot.joints.end(), [](const urdf_robot::joint& j) { return j.type != "fixed"; })) {
+    throw input_error(file + ": no joint moves (revolute, continuous or prismatic) and the base is fixed: nothing to compute");
+  }
   const std::vector<decimal_field> g = scene.numbers("gravity", 3);
   for (std::size_t i = 0; i < 3; ++i) o.gravity[i] = g[i].text;
   std::set<std::string> moving;
   for (const auto& j : robot.joints)
     if (j.type != "fixed") moving.insert(j.name);
+  if (o.floating) moving.insert(floating_base_coordinates().begin(), floating_base_coordinates().end());
   auto joint_of = [&](const std::string& section, const std::string& name) {
+    if (o.floating && section == "torques" &&
+        std::count(floating_base_coordinates().begin(), floating_base_coordinates().end(), name))
+      throw input_error(section + "." + name + ": a floating base's coordinate has no actuator (its joints are free)");
     if (!moving.count(name)) {
       const bool fixed = std::any_of(robot.joints.begin(), robot.joints.end(), [&](const auto& j) { return j.name == name; });
       throw input_error(section + "." + printable(name) + ": " +
@@ -355,6 +451,15 @@ const parsed_urdf_file& read_urdf_scene_options(object_reader& scene, std::strin
     const decimal_field q = r.number("q"), qd = r.number("q_dot");
     r.finish();
     o.state[m.key] = {q.text, qd.text};
+  }
+  if (o.floating && o.state.count("base_pitch")) {
+    // Roll-pitch-yaw angles are singular where cos(pitch) = 0 (gimbal lock): refused by name
+    // within floating_base_pitch_margin of it (decided at 256 bits on the decimal as written).
+    if (!pitch_is_regular(o.state.at("base_pitch").first))
+      throw input_error("state.base_pitch: " + o.state.at("base_pitch").first +
+                        " is within 1e-6 (in cos) of +-90 degrees, where a floating base's roll-pitch-yaw angles are "
+                        "singular (gimbal lock: roll and yaw turn about one axis); turn the base's frame, or the "
+                        "scene's axes, so that the pitch stays away from it");
   }
   for (const auto& j : moving)
     if (!o.state.count(j)) throw input_error("state: joint \"" + printable(j) + "\" is missing (q and q_dot of every moving joint)");
@@ -440,7 +545,7 @@ thread_local std::optional<kept_system_document> last_system_document;
 
 bool same_but_state(const urdf_scene_options& a, const urdf_scene_options& b) {
   return a.gravity == b.gravity && a.efforts == b.efforts && a.accelerations == b.accelerations &&
-         a.with_state == b.with_state;
+         a.with_state == b.with_state && a.floating == b.floating;
 }
 
 std::shared_ptr<const model_input> read_urdf_scene(object_reader& scene) {
@@ -455,7 +560,8 @@ std::shared_ptr<const model_input> read_urdf_scene(object_reader& scene) {
   }
   json_value document = parse_json(urdf_to_system(parsed.robot, o));
   std::shared_ptr<const model_input> in = std::make_shared<system_input>(read_as_system(document, file, &parsed.robot));
-  last_system_document = kept_system_document{parsed.path, parsed.text, o, std::move(document), urdf_joint_names(parsed.robot)};
+  last_system_document = kept_system_document{parsed.path, parsed.text, o, std::move(document),
+                                              urdf_joint_names(parsed.robot, floating_base_taken_names(o))};
   return in;
 }
 
@@ -483,8 +589,10 @@ std::string convert_to_system(const std::string& path) {
     if (root != robot.links.end() && root->in.given && !is_zero(root->in.mass))
       throw input_error(path + ":" + std::to_string(root->line) + ": the root link \"" + printable(root->name) +
                         "\" has mass " + root->in.mass +
-                        ": a floating base, which appell does not read yet; to weld it to the ground, convert a "
-                        "\"urdf\" scene with \"base\": \"fixed\" (SCENES.md)");
+                        ": a floating base or a base bolted down, which the file does not say; convert a \"urdf\" "
+                        "scene with \"base\": \"floating\" or \"fixed\" (SCENES.md)");
+    if (std::none_of(robot.joints.begin(), robot.joints.end(), [](const urdf_robot::joint& j) { return j.type != "fixed"; }))
+      throw input_error(path + ": no joint moves (revolute, continuous or prismatic): nothing to compute with the base fixed");
     const std::string out = urdf_to_system(robot, urdf_scene_options{});
     (void)read_as_system(out, path, &robot);
     return out;

@@ -2,7 +2,8 @@
 // score` (tests/engine_score.sh):
 //   dart_reference states SCENE N SEED   the scene's joints at N random states (CSV for `appell reference --states`)
 //   dart_reference values SCENE STATES   DART's values at those states, columns named as appell's results
-// The robot is DART's own reading of the URDF (DartLoader, the root fixed to the world); the
+// The robot is DART's own reading of the URDF (DartLoader, the root fixed to the world, or on a
+// free joint where the scene's base floats: engine_floating.hpp turns the coordinates); the
 // scene's gravity and torques are applied; forward dynamics by DART's articulated-body
 // recursion (Skeleton::computeForwardDynamics); each joint's wrench is
 // -Joint::getWrenchToChildBodyNode() (torque first, then force, on the joint's frame: the child
@@ -10,6 +11,7 @@
 // DART's headers are C++17 (CMake builds this unit so).
 // not <dart/dart.hpp>: Debian 12 ships IkFast.hpp without the ikfast.h it includes
 #include <dart/dynamics/BodyNode.hpp>
+#include <dart/dynamics/FreeJoint.hpp>
 #include <dart/dynamics/Joint.hpp>
 #include <dart/dynamics/Skeleton.hpp>
 #include <dart/utils/urdf/DartLoader.hpp>
@@ -17,6 +19,9 @@
 #include <chrono>
 #include <cstdio>
 #include "engine_common.hpp"
+#include "engine_floating.hpp"
+#include <algorithm>
+#include <optional>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -40,14 +45,58 @@ using engine::scene;
 
 dart::dynamics::SkeletonPtr load(const scene& s) {
   dart::utils::DartLoader::Options options;
-  options.mDefaultRootJointType = dart::utils::DartLoader::RootJointType::FIXED;
+  options.mDefaultRootJointType =
+      s.floating ? dart::utils::DartLoader::RootJointType::FLOATING : dart::utils::DartLoader::RootJointType::FIXED;
   dart::utils::DartLoader loader(options);
   const std::string bare = engine::without_geometry(s.urdf, "dart_reference");
   auto skel = loader.parseSkeleton(dart::common::Uri::createFromPath(bare));
   std::filesystem::remove(bare);
   if (!skel) throw std::runtime_error("DART could not read " + s.urdf);
+  // A link without <inertial> is a frame of no mass in URDF (and in appell); DART gives it its
+  // default body, 1 kg with a unit inertia: set to none here.
+  // URDF's <dynamics damping friction> are not read by appell (SCENES.md, "urdf"): DART's
+  // damping and Coulomb friction set to 0 (Atlas's joints have damping 0.1).
+  for (std::size_t k = 0; k < skel->getNumJoints(); ++k) {
+    auto* joint = skel->getJoint(k);
+    for (std::size_t i = 0; i < joint->getNumDofs(); ++i) {
+      joint->setDampingCoefficient(i, 0.0);
+      joint->setCoulombFriction(i, 0.0);
+      joint->setSpringStiffness(i, 0.0);
+    }
+  }
+  for (const auto& name : engine::links_without_inertial(s.urdf))
+    if (auto* body = skel->getBodyNode(name))
+      body->setInertia(dart::dynamics::Inertia(0.0, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero()));
   skel->setGravity(Eigen::Vector3d(s.gravity[0], s.gravity[1], s.gravity[2]));
   return skel;
+}
+
+/// The joints' coordinates and rates set on the skeleton; with a floating base, DART's FreeJoint
+/// takes its positions (rotation vector, translation) and velocities (the body's twist on its own
+/// axes, angular first), and its accelerations are that twist's derivative.
+std::optional<engine::floating_base> set_state(dart::dynamics::Skeleton& skel, const scene& s,
+                                               const std::map<std::string, double>& q,
+                                               const std::map<std::string, double>& qd) {
+  std::optional<engine::floating_base> base;
+  if (s.floating) {
+    base.emplace(q, qd);
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = base->R;
+    T.translation() = base->p;
+    auto* root = skel.getRootJoint();
+    root->setPositions(dart::dynamics::FreeJoint::convertToPositions(T));
+    Eigen::Vector6d V;
+    V << base->R.transpose() * base->omega, base->R.transpose() * base->p_dot;
+    root->setVelocities(V);
+  }
+  for (const auto& [joint, x] : q) {
+    if (s.floating && std::count(engine::base_coordinates.begin(), engine::base_coordinates.end(), joint)) continue;
+    auto* jt = skel.getJoint(joint);
+    if (!jt) throw std::runtime_error("no joint " + joint + " in DART's skeleton");
+    jt->setPosition(0, x);
+    jt->setVelocity(0, qd.at(joint));
+  }
+  return base;
 }
 
 }  // namespace
@@ -68,10 +117,12 @@ int main(int argc, char** argv) try {
   if (mode == "time") {  // the scene's own state: forward dynamics and every joint's wrench, per call
     std::ifstream sin(argv[2]);
     const nlohmann::json j = nlohmann::json::parse(sin);
+    std::map<std::string, double> q, qd;
     for (auto it = j.at("state").begin(); it != j.at("state").end(); ++it) {
-      skel->getJoint(it.key())->setPosition(0, std::stod(it.value().at("q").get<std::string>()));
-      skel->getJoint(it.key())->setVelocity(0, std::stod(it.value().at("q_dot").get<std::string>()));
+      q[it.key()] = std::stod(it.value().at("q").get<std::string>());
+      qd[it.key()] = std::stod(it.value().at("q_dot").get<std::string>());
     }
+    set_state(*skel, s, q, qd);
     for (const auto& [name, tau] : s.torques) skel->getJoint(name)->setForce(0, tau);
     const int reps = std::stoi(argv[3]);
     double sink = 0;
@@ -102,16 +153,21 @@ int main(int argc, char** argv) try {
     const std::vector<std::string> f = engine::fields(line);
     std::map<std::string, double> q, qd;
     engine::read_state(header, f, q, qd);
-    for (const auto& [joint, x] : q) {
-      auto* jt = skel->getJoint(joint);
-      if (!jt) throw std::runtime_error("no joint " + joint + " in DART's skeleton");
-      jt->setPosition(0, x);
-      jt->setVelocity(0, qd.at(joint));
-    }
+    const std::optional<engine::floating_base> base = set_state(*skel, s, q, qd);
     for (const auto& [j, tau] : s.torques) skel->getJoint(j)->setForce(0, tau);
     skel->computeForwardDynamics();
     std::cout << f[0];
-    for (const auto& j : s.joints) std::cout << "," << g17(skel->getJoint(j)->getAcceleration(0));
+    if (base) {
+      const Eigen::Vector6d A = skel->getRootJoint()->getAccelerations();
+      const Eigen::Vector3d omega_b = base->R.transpose() * base->omega, v_b = base->R.transpose() * base->p_dot;
+      const Eigen::Vector3d p_ddot = base->R * (A.tail<3>() + omega_b.cross(v_b));
+      const Eigen::Vector3d alpha = base->R * A.head<3>();
+      for (const double x : base->second_derivatives(p_ddot, alpha)) std::cout << "," << g17(x);
+    }
+    for (const auto& j : s.joints) {
+      if (s.floating && std::count(engine::base_coordinates.begin(), engine::base_coordinates.end(), j)) continue;
+      std::cout << "," << g17(skel->getJoint(j)->getAcceleration(0));
+    }
     for (std::size_t k = 0; k < skel->getNumJoints(); ++k) {
       const auto* joint = skel->getJoint(k);
       if (joint->getParentBodyNode() == nullptr) continue;

@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cstdio>
@@ -29,7 +30,10 @@ inline std::string appell_name(const std::string& urdf) {
   s = b == std::string::npos ? "" : s.substr(b);
   while (!s.empty() && s.back() == '_') s.pop_back();
   if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) s = "joint_" + s;
-  return s;
+  if (s.size() > 48) s.resize(48);  // cut to 48 characters (Atlas's camera frames' joints)
+  for (const char* reserved : {"pi", "t", "sin", "cos", "tan", "exp", "log", "sqrt", "rx", "ry", "rz"})
+    if (s == reserved) s += "_";
+  return s;  // (a name taken twice gets _2, _3 in appell: no robot scored here has one)
 }
 
 inline std::string g17(double x) {
@@ -52,8 +56,12 @@ struct scene {
   std::string urdf;
   std::array<double, 3> gravity{};
   std::map<std::string, double> torques;
-  std::vector<std::string> joints;
+  std::vector<std::string> joints;  ///< with a floating base, its six coordinates first (base_x ... base_roll)
+  bool floating = false;            ///< "base": "floating"
 };
+
+/// A floating base's six coordinates (appell's urdf.hpp, SCENES.md): x, y, z, yaw, pitch, roll.
+inline const std::array<std::string, 6> base_coordinates{"base_x", "base_y", "base_z", "base_yaw", "base_pitch", "base_roll"};
 
 inline scene read_scene(const std::string& path) {
   std::ifstream in(path);
@@ -65,7 +73,11 @@ inline scene read_scene(const std::string& path) {
   for (int i = 0; i < 3; ++i) s.gravity[static_cast<std::size_t>(i)] = std::stod(j.at("gravity")[i].get<std::string>());
   if (j.contains("torques"))
     for (auto it = j["torques"].begin(); it != j["torques"].end(); ++it) s.torques[it.key()] = std::stod(it.value().get<std::string>());
-  for (auto it = j.at("state").begin(); it != j.at("state").end(); ++it) s.joints.push_back(it.key());
+  s.floating = j.contains("base") && j.at("base").get<std::string>() == "floating";
+  if (s.floating) s.joints.assign(base_coordinates.begin(), base_coordinates.end());
+  for (auto it = j.at("state").begin(); it != j.at("state").end(); ++it)
+    if (!s.floating || std::find(base_coordinates.begin(), base_coordinates.end(), it.key()) == base_coordinates.end())
+      s.joints.push_back(it.key());
   return s;
 }
 
@@ -78,6 +90,24 @@ inline void read_state(const std::vector<std::string>& header, const std::vector
     const bool rate = h.size() > 6 && h.compare(h.size() - 6, 6, ".q_dot") == 0;
     (rate ? qd : q)[h.substr(6, h.size() - 6 - (rate ? 6 : 2))] = std::stod(f[c]);
   }
+}
+
+/// The names of the URDF's links that have no <inertial> (frames: a camera's optical frame).  In
+/// URDF they carry nothing; engines that give a body a default mass (DART: 1 kg and a unit
+/// inertia) must be told so.
+inline std::vector<std::string> links_without_inertial(const std::string& urdf_path) {
+  std::ifstream in(urdf_path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<std::string> out;
+  for (std::size_t at = 0; (at = text.find("<link", at)) != std::string::npos; ++at) {
+    const std::size_t name = text.find("name=\"", at), gt = text.find('>', at);
+    if (name == std::string::npos || gt == std::string::npos || name > gt) continue;
+    const std::string n = text.substr(name + 6, text.find('"', name + 6) - name - 6);
+    const bool self_closed = text[gt - 1] == '/';
+    const std::size_t end = self_closed ? gt : text.find("</link>", gt);
+    if (self_closed || text.substr(gt, end - gt).find("<inertial") == std::string::npos) out.push_back(n);
+  }
+  return out;
 }
 
 /// The CSV columns of one joint's wrench, in appell's names: force then moment, 3 components each.

@@ -62,8 +62,22 @@ urdf_robot parse_urdf(const std::string& text, const std::string& file);
 urdf_robot read_urdf_file(const std::string& path);
 
 /// The joint's name as a name of the system file (letters, digits and _; URDF names such as
-/// "/j1" become "j1"), distinct over the robot.
-std::map<std::string, std::string> urdf_joint_names(const urdf_robot& robot);
+/// "/j1" become "j1"), distinct over the robot and from the names in `taken` (a floating base's
+/// coordinates).
+std::map<std::string, std::string> urdf_joint_names(const urdf_robot& robot, const std::vector<std::string>& taken = {});
+
+/// A floating base's six coordinates, in the order of its joints from the ground to the root link
+/// (SCENES.md, "urdf"): the root frame's origin x, y, z on the fixed axes, then its orientation
+/// R = Rz(yaw) Ry(pitch) Rx(roll), URDF's roll-pitch-yaw.  Singular (gimbal lock) where
+/// cos(pitch) = 0: a state within floating_base_pitch_margin of it is refused by name.
+inline const std::vector<std::string>& floating_base_coordinates() {
+  static const std::vector<std::string> names{"base_x", "base_y", "base_z", "base_yaw", "base_pitch", "base_roll"};
+  return names;
+}
+/// How close to +-90 degrees a floating base's pitch may come, as a bound on |cos(pitch)|: below
+/// it the mass matrix's condition number (about 1/cos(pitch)^2) passes 1e12 and the roll and
+/// yaw rates are no longer the orientation's coordinates anyone means.
+inline constexpr double floating_base_pitch_margin = 1e-6;
 
 /// The options of a "urdf" scene that the system file carries.
 struct urdf_scene_options {
@@ -72,9 +86,14 @@ struct urdf_scene_options {
   std::map<std::string, std::string> efforts;                          ///< joint -> torque or force
   std::map<std::string, std::string> accelerations;                    ///< joint -> q_ddot (inverse dynamics)
   bool with_state = false;
+  /// "base": "floating": the root link hangs from the ground by six joints of no mass
+  /// (floating_base_coordinates(): three prismatic along x, y, z, three revolute about z, y, x),
+  /// whose coordinates the maps above name as joints.  Otherwise the root link is the ground.
+  bool floating = false;
 };
 
-/// The `system` scene file (JSON text) of the robot, its base fixed to the ground.
+/// The `system` scene file (JSON text) of the robot, its base fixed to the ground (or floating:
+/// urdf_scene_options::floating).
 std::string urdf_to_system(const urdf_robot& robot, const urdf_scene_options& o);
 
 /// `appell convert PATH`: the system file of a URDF file (at rest, gravity 0 0 -9.81) or of a
