@@ -45,6 +45,9 @@
 #include <vector>
 
 #include "engine_common.hpp"
+#include "engine_floating.hpp"
+#include <algorithm>
+#include <array>
 
 #ifndef BT_USE_DOUBLE_PRECISION
 #error "bullet_reference scores Bullet's float64 build: compile with BT_USE_DOUBLE_PRECISION"
@@ -106,6 +109,10 @@ void principal_frame(const urdf::LinkConstSharedPtr& l, double& mass, Vector3d& 
 
 struct robot {
   std::unique_ptr<btMultiBody> body;
+  bool floating = false;
+  double base_mass = 0;
+  Matrix3d base_R;   ///< the base's principal axes on the root link's
+  Vector3d base_c;   ///< its centre of mass on the root link's axes
   std::vector<mb_link> links;                       ///< in Bullet's link order (parents first)
   std::vector<btMultiBodyJointFeedback> feedback;
   std::map<std::string, int> index;              ///< URDF joint name -> Bullet link index
@@ -129,8 +136,11 @@ robot build(const scene& s) {
   Vector3d root_moments, root_c;
   Matrix3d root_R;
   principal_frame(model->getRoot(), root_mass, root_moments, root_R, root_c);
+  if (s.floating && !(root_mass > 0))
+    throw std::runtime_error("a floating base whose root link has no mass: Bullet's base needs one");
+  r.floating = s.floating, r.base_mass = root_mass, r.base_R = root_R, r.base_c = root_c;
   r.body = std::make_unique<btMultiBody>(static_cast<int>(order.size()), root_mass > 0 ? root_mass : 1.0,
-                                         bt(root_mass > 0 ? root_moments : Vector3d(1, 1, 1)), true, false);
+                                         bt(root_mass > 0 ? root_moments : Vector3d(1, 1, 1)), !s.floating, false);
   r.body->setBaseWorldTransform(btTransform(btq(root_R), bt(root_c)));
   r.body->setLinearDamping(0);
   r.body->setAngularDamping(0);
@@ -189,6 +199,15 @@ robot build(const scene& s) {
 /// The state and the applied forces: q, q', the scene's torques, gravity on every link.
 void load_state(robot& r, const scene& s, const std::map<std::string, double>& q, const std::map<std::string, double>& qd,
                 bool gravity) {
+  if (r.floating) {
+    // Bullet's base: its centre of mass and principal axes in the world, the centre's velocity
+    // and the angular velocity on the world's axes.
+    const engine::floating_base b(q, qd);
+    const Vector3d c = b.R * r.base_c;
+    r.body->setBaseWorldTransform(btTransform(btq(b.R * r.base_R), bt(Vector3d(b.p + c))));
+    r.body->setBaseVel(bt(Vector3d(b.p_dot + b.omega.cross(c))));
+    r.body->setBaseOmega(bt(b.omega));
+  }
   for (const auto& [name, k] : r.index)
     if (r.links[k].moves) {
       r.body->setJointPos(k, q.at(name));
@@ -196,8 +215,23 @@ void load_state(robot& r, const scene& s, const std::map<std::string, double>& q
     }
   r.body->clearForcesAndTorques();
   for (const auto& [name, tau] : s.torques) r.body->addJointTorque(r.index.at(name), tau);
-  if (gravity)
+  if (gravity) {
     for (std::size_t k = 0; k < r.links.size(); ++k) r.body->addLinkForce(static_cast<int>(k), bt(Vector3d(r.links[k].mass * gravity_of(s))));
+    if (r.floating) r.body->addBaseForce(bt(Vector3d(r.base_mass * gravity_of(s))));
+  }
+}
+
+/// A floating base's coordinates' second derivatives from Bullet's base accelerations (the
+/// first six outputs: the angular acceleration, then the centre of mass's acceleration, both on
+/// the world's axes).
+std::array<double, 6> base_second_derivatives(const robot& r, const std::map<std::string, double>& q,
+                                              const std::map<std::string, double>& qd,
+                                              const btAlignedObjectArray<btScalar>& sr) {
+  const engine::floating_base b(q, qd);
+  const int dofs = r.body->getNumDofs();
+  const Vector3d alpha(sr[dofs + 0], sr[dofs + 1], sr[dofs + 2]), a_c(sr[dofs + 3], sr[dofs + 4], sr[dofs + 5]);
+  const Vector3d c = b.R * r.base_c;
+  return b.second_derivatives(a_c - alpha.cross(c) - b.omega.cross(b.omega.cross(c)), alpha);
 }
 
 /// Featherstone's forward dynamics as btMultiBodyDynamicsWorld calls it, with dt = 0 (no step):
@@ -235,8 +269,13 @@ int main(int argc, char** argv) try {
     return 0;
   }
   robot r = build(s);
+  auto is_base = [&](const std::string& j) {
+    return s.floating && std::count(engine::base_coordinates.begin(), engine::base_coordinates.end(), j);
+  };
   for (const auto& j : s.joints)
-    if (!r.index.count(j) || !r.links[r.index.at(j)].moves) throw std::runtime_error("no moving joint " + j + " in the multibody");
+    if (!is_base(j) && (!r.index.count(j) || !r.links[r.index.at(j)].moves))
+      throw std::runtime_error("no moving joint " + j + " in the multibody");
+  if (s.floating && mode != "values") throw std::runtime_error(mode + ": a fixed base only");
   btAlignedObjectArray<btScalar> sr;
   btAlignedObjectArray<btVector3> sv;
   btAlignedObjectArray<btMatrix3x3> sm;
@@ -328,7 +367,10 @@ int main(int argc, char** argv) try {
     if (mode == "values") {
       load_state(r, s, q, qd, true);
       const std::vector<double> qdd = forward(r, sr, sv, sm);
-      for (const auto& j : s.joints) std::cout << "," << g17(qdd[r.index.at(j)]);
+      if (s.floating)
+        for (const double x : base_second_derivatives(r, q, qd, sr)) std::cout << "," << g17(x);
+      for (const auto& j : s.joints)
+        if (!is_base(j)) std::cout << "," << g17(qdd[r.index.at(j)]);
     } else {
       load_state(r, s, q, qd, false);  // the world adds gravity
       world.stepSimulation(1e-9, 0, 1e-9);

@@ -4,7 +4,7 @@
 //   mujoco_reference values SCENE STATES   MuJoCo's values at those states, named as appell's results
 // MuJoCo compiles the URDF itself (mj_loadXML; the geometry stripped, static bodies kept apart:
 // fusestatic off); joint limits and contacts disabled (appell models neither), the scene's
-// gravity and torques (qfrc_applied). Forward dynamics: mj_forward's qacc. Wrenches: cfrc_int
+// gravity and torques (qfrc_applied); a floating base on a free joint (below). Forward dynamics: mj_forward's qacc. Wrenches: cfrc_int
 // after mj_rnePostConstraint, the interaction force with the parent, rotation first, on the world
 // axes about the subtree centre of mass of the root (d->subtree_com[m->body_rootid[b]]): shifted
 // here to the body's origin (the joint's, for a URDF) and turned onto the body's axes.
@@ -13,6 +13,9 @@
 #include <chrono>
 #include <cstdio>
 #include "engine_common.hpp"
+#include "engine_floating.hpp"
+#include <algorithm>
+#include <optional>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -41,8 +44,8 @@ int main(int argc, char** argv) try {
   }
   std::ifstream sin(argv[2]);
   const nlohmann::json scene = nlohmann::json::parse(sin);
-  std::vector<std::string> joints;
-  for (auto it = scene.at("state").begin(); it != scene.at("state").end(); ++it) joints.push_back(it.key());
+  const engine::scene es = engine::read_scene(argv[2]);
+  const std::vector<std::string>& joints = es.joints;  // a floating base's six coordinates first
   if (mode == "states") {
     engine::print_states(joints, std::stoi(argv[3]), std::stoull(argv[4]), false);
     return 0;
@@ -50,9 +53,32 @@ int main(int argc, char** argv) try {
   std::filesystem::path file = scene.at("file").get<std::string>();
   if (file.is_relative()) file = std::filesystem::path(argv[2]).parent_path() / file;
   // static bodies kept apart (fusestatic off), so that every URDF link is a MuJoCo body
-  const std::string bare = engine::without_geometry(
-      file.string(), "mujoco_reference",
-      "<mujoco><compiler fusestatic=\"false\" discardvisual=\"true\" balanceinertia=\"false\"/></mujoco>");
+  // A floating base: MuJoCo's URDF reader takes a link named "world" as its world body and a
+  // URDF "floating" joint as a free joint (qpos: position, unit quaternion w x y z; qvel: the
+  // origin's velocity on the world's axes, the angular velocity on the body's; qacc their rates).
+  std::string extra = "<mujoco><compiler fusestatic=\"false\" discardvisual=\"true\" balanceinertia=\"false\"/></mujoco>";
+  if (es.floating) {
+    std::string root;
+    {
+      // the root link: the one no joint has as its child
+      std::ifstream u(file);
+      const std::string text((std::istreambuf_iterator<char>(u)), std::istreambuf_iterator<char>());
+      std::vector<std::string> links, children;
+      for (std::size_t at = 0; (at = text.find("<link", at)) != std::string::npos; ++at) {
+        const std::size_t n = text.find("name=\"", at);
+        links.push_back(text.substr(n + 6, text.find('"', n + 6) - n - 6));
+      }
+      for (std::size_t at = 0; (at = text.find("<child", at)) != std::string::npos; ++at) {
+        const std::size_t n = text.find("link=\"", at);
+        children.push_back(text.substr(n + 6, text.find('"', n + 6) - n - 6));
+      }
+      for (const auto& l : links)
+        if (std::find(children.begin(), children.end(), l) == children.end()) root = l;
+    }
+    extra += "<link name=\"world\"/><joint name=\"appell_free\" type=\"floating\"><parent link=\"world\"/>"
+             "<child link=\"" + root + "\"/></joint>";
+  }
+  const std::string bare = engine::without_geometry(file.string(), "mujoco_reference", extra);
   char error[1000] = "";
   mjModel* m = mj_loadXML(bare.c_str(), nullptr, error, sizeof error);
   std::filesystem::remove(bare);
@@ -67,6 +93,7 @@ int main(int argc, char** argv) try {
     return id;
   };
   if (mode == "time") {  // the scene's own state: mj_forward and mj_rnePostConstraint, per call
+    if (es.floating) throw std::runtime_error("time: a fixed base only");
     for (auto it = scene.at("state").begin(); it != scene.at("state").end(); ++it) {
       const int id = joint_id(it.key());
       d->qpos[m->jnt_qposadr[id]] = std::stod(it.value().at("q").get<std::string>());
@@ -95,6 +122,7 @@ int main(int argc, char** argv) try {
   std::vector<std::pair<int, std::string>> wrenches;  // (body, joint name)
   for (int b = 1; b < m->nbody; ++b) {
     if (m->body_jntnum[b] != 1) continue;  // a fixed joint's body has no MuJoCo joint: left out
+    if (m->jnt_type[m->body_jntadr[b]] == mjJNT_FREE) continue;  // the floating base's: no URDF joint
     const std::string name = mj_id2name(m, mjOBJ_JOINT, m->body_jntadr[b]);
     wrenches.emplace_back(b, name);
     engine::print_wrench_columns(name);
@@ -106,15 +134,41 @@ int main(int argc, char** argv) try {
     mj_resetData(m, d);
     std::map<std::string, double> q, qd;
     engine::read_state(header, f, q, qd);
-    for (const auto& [j, x] : q) d->qpos[m->jnt_qposadr[joint_id(j)]] = x;
-    for (const auto& [j, x] : qd) d->qvel[m->jnt_dofadr[joint_id(j)]] = x;
+    std::optional<engine::floating_base> base;
+    int free_q = 0, free_v = 0;
+    if (es.floating) {
+      base.emplace(q, qd);
+      const int id = joint_id("appell_free");
+      free_q = m->jnt_qposadr[id], free_v = m->jnt_dofadr[id];
+      const Eigen::Quaterniond o(base->R);
+      const Eigen::Vector3d w_b = base->R.transpose() * base->omega;
+      for (int i = 0; i < 3; ++i) {
+        d->qpos[free_q + i] = base->p[i];
+        d->qvel[free_v + i] = base->p_dot[i];
+        d->qvel[free_v + 3 + i] = w_b[i];
+      }
+      d->qpos[free_q + 3] = o.w(), d->qpos[free_q + 4] = o.x(), d->qpos[free_q + 5] = o.y(), d->qpos[free_q + 6] = o.z();
+    }
+    auto is_base = [&](const std::string& j) {
+      return es.floating && std::count(engine::base_coordinates.begin(), engine::base_coordinates.end(), j);
+    };
+    for (const auto& [j, x] : q)
+      if (!is_base(j)) d->qpos[m->jnt_qposadr[joint_id(j)]] = x;
+    for (const auto& [j, x] : qd)
+      if (!is_base(j)) d->qvel[m->jnt_dofadr[joint_id(j)]] = x;
     if (scene.contains("torques"))
       for (auto it = scene["torques"].begin(); it != scene["torques"].end(); ++it)
         d->qfrc_applied[m->jnt_dofadr[joint_id(it.key())]] = std::stod(it.value().get<std::string>());
     mj_forward(m, d);
     mj_rnePostConstraint(m, d);
     std::cout << f[0];
-    for (const auto& j : joints) std::cout << "," << g17(d->qacc[m->jnt_dofadr[joint_id(j)]]);
+    if (base) {
+      const Eigen::Vector3d p_ddot(d->qacc[free_v], d->qacc[free_v + 1], d->qacc[free_v + 2]);
+      const Eigen::Vector3d alpha = base->R * Eigen::Vector3d(d->qacc[free_v + 3], d->qacc[free_v + 4], d->qacc[free_v + 5]);
+      for (const double x : base->second_derivatives(p_ddot, alpha)) std::cout << "," << g17(x);
+    }
+    for (const auto& j : joints)
+      if (!is_base(j)) std::cout << "," << g17(d->qacc[m->jnt_dofadr[joint_id(j)]]);
     for (const auto& [b, name] : wrenches) {
       const mjtNum* w = d->cfrc_int + 6 * b;  // torque about c, force; world axes
       const mjtNum* c = d->subtree_com + 3 * m->body_rootid[b];
