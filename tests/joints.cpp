@@ -25,6 +25,7 @@
 #include "appell/models/system.hpp"
 #include "appell/io/scene.hpp"
 #include "appell/io/urdf.hpp"
+#include "appell/motion/motion.hpp"
 #include "bounds_400.hpp"
 
 using namespace appell;
@@ -783,4 +784,171 @@ BOOST_AUTO_TEST_CASE(a_floating_base_refuses_its_singular_pitch_and_its_names_ta
   BOOST_TEST(named.find("base: the URDF's joint \"base_yaw\"") == 0, named);
   std::filesystem::remove(urdf);
   std::filesystem::remove(scene);
+}
+
+// A floating body's motion (the library's simulate and enclose): with no force but gravity, its
+// centre of mass moves on the parabola G0 + V0 t + g t^2 / 2 and its angular momentum about the
+// centre of mass, I_w omega on the fixed axes, keeps its initial value.  Both computed here from
+// each row's state (G = O + R c, V_G = O' + omega x R c, omega = E rates), in MPFI at 256 bits
+// over every enclosed step's box at its end (the truth at t1 must lie inside), and in 400 bits
+// from simulate's double rows (within double's rounding).
+namespace floating {
+
+/// Keeps, per row of one table, t1 (or t) and each named column's text.
+struct kept_rows final : motion::row_sink {
+  std::string table;
+  std::vector<std::string> names;
+  std::vector<std::vector<std::string>> rows;
+  explicit kept_rows(std::string t) : table(std::move(t)) {}
+  void columns(const std::string& t, const std::vector<std::string>& n) override {
+    if (t == table) names = n;
+  }
+  void row(const std::string& t, const std::vector<std::string>& cells) override {
+    if (t == table) rows.push_back(cells);
+  }
+  std::size_t at(const std::string& name) const {
+    const auto it = std::find(names.begin(), names.end(), name);
+    BOOST_REQUIRE(it != names.end());
+    return static_cast<std::size_t>(it - names.begin());
+  }
+};
+
+/// The centre of mass, its velocity and the angular momentum about it, on the fixed axes, of the
+/// body b at base coordinates q and rates qd (any scalar with cos, sin: ref_t, mpfi).
+template <class S>
+struct free_body_state {
+  std::array<S, 3> G, V, L;
+};
+template <class S>
+free_body_state<S> momenta(const body& b, const std::array<S, 6>& q, const std::array<S, 6>& qd) {
+  using a3 = std::array<S, 3>;
+  using n3 = std::array<a3, 3>;
+  auto mulm = [](const n3& x, const n3& y) {
+    n3 r;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) r[i][j] = x[i][0] * y[0][j] + x[i][1] * y[1][j] + x[i][2] * y[2][j];
+    return r;
+  };
+  auto mulv = [](const n3& x, const a3& v) {
+    a3 r;
+    for (int i = 0; i < 3; ++i) r[i] = x[i][0] * v[0] + x[i][1] * v[1] + x[i][2] * v[2];
+    return r;
+  };
+  auto crossv = [](const a3& x, const a3& y) {
+    return a3{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+  };
+  auto elem = [](int axis, const S& angle) {
+    const S c = cos(angle), s = sin(angle);
+    n3 r{a3{S(1), S(0), S(0)}, a3{S(0), S(1), S(0)}, a3{S(0), S(0), S(1)}};
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    r[i][i] = c, r[i][j] = -s, r[j][i] = s, r[j][j] = c;
+    return r;
+  };
+  auto d = [](const std::string& x) { return S(x); };
+  const n3 Rz = elem(2, q[3]), RzRy = mulm(Rz, elem(1, q[4])), R = mulm(RzRy, elem(0, q[5]));
+  const n3 Rin = mulm(elem(2, d(b.com_rpy[2])), mulm(elem(1, d(b.com_rpy[1])), elem(0, d(b.com_rpy[0]))));
+  const n3 I{a3{d(b.inertia[0]), d(b.inertia[3]), d(b.inertia[5])}, a3{d(b.inertia[3]), d(b.inertia[1]), d(b.inertia[4])},
+             a3{d(b.inertia[5]), d(b.inertia[4]), d(b.inertia[2])}};
+  const n3 A = mulm(R, Rin);
+  n3 At;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) At[i][j] = A[j][i];
+  const n3 Iw = mulm(A, mulm(I, At));
+  const a3 e2 = mulv(Rz, a3{S(0), S(1), S(0)}), e3 = mulv(RzRy, a3{S(1), S(0), S(0)});
+  a3 omega;
+  for (int i = 0; i < 3; ++i) omega[i] = (i == 2 ? qd[3] : S(0)) + e2[i] * qd[4] + e3[i] * qd[5];
+  const a3 c = mulv(R, a3{d(b.com[0]), d(b.com[1]), d(b.com[2])});
+  const a3 wc = crossv(omega, c);
+  free_body_state<S> out;
+  const S m = d(b.mass);
+  const a3 Lw = mulv(Iw, omega);
+  for (int i = 0; i < 3; ++i) out.G[i] = q[i] + c[i], out.V[i] = qd[i] + wc[i], out.L[i] = Lw[i];
+  (void)m;
+  return out;
+}
+
+}  // namespace floating
+
+BOOST_AUTO_TEST_CASE(a_floating_body_keeps_its_momenta_along_its_motion) {
+  using namespace floating;
+  const body b{"3.5", {"0.12", "-0.07", "0.05"}, {"0.3", "-0.2", "0.9"}, {"1.6", "1.9", "1.75", "0.03", "-0.04", "0.02"}};
+  base_state s{{"0.1", "-0.2", "1.0", "0.3", "-0.25", "0.4"}, {"0.5", "-0.3", "2.0", "1.1", "-0.7", "1.6"}};
+  const std::array<std::string, 3> g{"0", "0", "-9.81"};
+  const std::string dir = std::filesystem::temp_directory_path().string();
+  const std::string urdf = dir + "/appell_floating_motion_" + std::to_string(::getpid()) + ".urdf";
+  const std::string scene_path = dir + "/appell_floating_motion_" + std::to_string(::getpid()) + ".json";
+  std::ofstream(urdf) << urdf_of(b);
+  std::ofstream(scene_path) << scene_of(urdf, s, g);
+  const scene_input scene = read_scene_file(scene_path);
+  // the truth at t = 0, at 400 bits
+  std::array<ref_t, 6> q0, qd0;
+  for (int k = 0; k < 6; ++k) q0[k] = ref_t(s.q[k]), qd0[k] = ref_t(s.qd[k]);
+  const free_body_state<ref_t> start = momenta<ref_t>(b, q0, qd0);
+  auto truth_at = [&](const ref_t& t) {
+    free_body_state<ref_t> x = start;
+    for (int i = 0; i < 3; ++i) {
+      x.G[i] = start.G[i] + start.V[i] * t + ref_t(g[i]) * t * t / 2;
+      x.V[i] = start.V[i] + ref_t(g[i]) * t;
+    }
+    return x;
+  };
+  const std::vector<std::string>& bases = floating_base_coordinates();
+  // enclose over [0, 1] in interval: every step's end box holds the truth
+  {
+    motion::settings set;
+    set.t_end = "1";
+    kept_rows rows("steps");
+    const motion::enclose_report r = motion::enclose(scene, set, rows);
+    BOOST_TEST_REQUIRE(r.complete, r.reason);
+    BOOST_TEST(rows.rows.size() >= 5u);
+    const mp_precision_scope scope(256);
+    int held = 0;
+    for (const auto& row : rows.rows) {
+      std::array<mpfi, 6> q, qd;
+      for (int k = 0; k < 6; ++k) {
+        auto box = [&](const std::string& name) {
+          return mpfi_from_bounds(mpfr(std::stod(row[rows.at(name + "_lo")])), mpfr(std::stod(row[rows.at(name + "_hi")])));
+        };
+        q[k] = box(bases[k]), qd[k] = box(bases[k] + "_dot");
+      }
+      const ref_t t1(std::stod(row[rows.at("t1")]));
+      const free_body_state<mpfi> x = momenta<mpfi>(b, q, qd);
+      const free_body_state<ref_t> truth = truth_at(t1);
+      for (int i = 0; i < 3; ++i)
+        for (const auto& [what, enc, tv] : {std::tuple{"G", x.G[i], truth.G[i]}, std::tuple{"V_G", x.V[i], truth.V[i]},
+                                            std::tuple{"L", x.L[i], truth.L[i]}}) {
+          const auto [lo, hi] = bounds_of(enc);
+          BOOST_TEST((lo <= tv && tv <= hi), what << "[" << i << "] at t1 = " << t1 << ": " << tv << " outside [" << lo
+                                                  << ", " << hi << "]");
+          BOOST_TEST(double(hi - lo) < 1e-6, what << "[" << i << "] at t1 = " << t1 << " is " << double(hi - lo) << " wide");
+          ++held;
+        }
+    }
+    BOOST_TEST_MESSAGE("a free body enclosed to t = 1 in " << rows.rows.size() << " steps: " << held
+                                                           << " momenta and positions hold their truth");
+  }
+  // simulate in double: every row within double's rounding of the truth
+  {
+    motion::settings set;
+    set.t_end = "1";
+    set.every = "0.05";
+    kept_rows rows("trajectory");
+    const motion::simulate_report r = motion::simulate(scene, set, rows);
+    BOOST_TEST_REQUIRE(r.failure.empty(), r.failure);
+    BOOST_TEST(rows.rows.size() == 21u);
+    double worst = 0;
+    for (const auto& row : rows.rows) {
+      std::array<ref_t, 6> q, qd;
+      for (int k = 0; k < 6; ++k) q[k] = ref_t(row[rows.at(bases[k])]), qd[k] = ref_t(row[rows.at(bases[k] + "_dot")]);
+      const ref_t t(row[rows.at("t")]);
+      const free_body_state<ref_t> x = momenta<ref_t>(b, q, qd), truth = truth_at(t);
+      for (int i = 0; i < 3; ++i)
+        worst = std::max({worst, double(abs(x.G[i] - truth.G[i])), double(abs(x.V[i] - truth.V[i])),
+                          double(abs(x.L[i] - truth.L[i]))});
+    }
+    BOOST_TEST(worst < 1e-11, "simulate's largest error in G, V_G, L: " << worst);
+    BOOST_TEST_MESSAGE("simulate in double: G, V_G and L within " << worst << " of their truth over 21 rows");
+  }
+  std::filesystem::remove(urdf);
+  std::filesystem::remove(scene_path);
 }
