@@ -952,3 +952,269 @@ BOOST_AUTO_TEST_CASE(a_floating_body_keeps_its_momenta_along_its_motion) {
   std::filesystem::remove(urdf);
   std::filesystem::remove(scene_path);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Contacts of links (SCENES.md, "contacts of links"): a link held by the ground at a point or by
+// a flat rectangular sole; the constraints' reactions are the contact's force (and the sole's
+// couple) on the contact frame's axes.  Truth in closed form, derived here without the tree:
+//  * a block standing on its sole with an arm hinged on top (the block held, the arm swinging
+//    under a torque): the arm's hinge equation gives theta''; the whole system's momentum gives
+//    the sole's wrench, F = m_a a_A - (m_b + m_a) g and, about the sole's centre O,
+//    M = r_A x m_a a_A + I_yy theta'' e_y - r_B x m_b g - r_A x m_a g;  the centre of pressure
+//    (-M_y / F_z, M_x / F_z), and whether the sole holds (its wrench cone) or tips;
+//  * a block at rest on one corner (a point contact): it turns about the corner,
+//    alpha = I_O^-1 (r x m g), and the ground pushes F = m (alpha x r) - m g.
+namespace contact_truth {
+
+using floating::v3;
+using floating::m3;
+
+struct block_and_arm {
+  std::string mb = "12", hb = "0.15", mb_i[3] = {"0.09", "0.11", "0.07"};
+  std::string ma = "1.5", cx = "0.08", cz = "0.25", ia[3] = {"0.012", "0.015", "0.004"};
+  std::string X = "0.2", Y = "0.12", mu = "0.6";
+};
+
+std::string block_arm_urdf(const block_and_arm& b) {
+  std::ostringstream o;
+  o << "<robot name=\"block_arm\">\n"
+    << "  <link name=\"block\"><inertial><origin xyz=\"0 0 " << b.hb << "\"/><mass value=\"" << b.mb << "\"/>"
+    << "<inertia ixx=\"" << b.mb_i[0] << "\" iyy=\"" << b.mb_i[1] << "\" izz=\"" << b.mb_i[2]
+    << "\" ixy=\"0\" iyz=\"0\" ixz=\"0\"/></inertial></link>\n"
+    << "  <link name=\"arm\"><inertial><origin xyz=\"" << b.cx << " 0 " << b.cz << "\"/><mass value=\"" << b.ma << "\"/>"
+    << "<inertia ixx=\"" << b.ia[0] << "\" iyy=\"" << b.ia[1] << "\" izz=\"" << b.ia[2]
+    << "\" ixy=\"0\" iyz=\"0\" ixz=\"0\"/></inertial></link>\n"
+    << "  <joint name=\"hinge\" type=\"continuous\"><parent link=\"block\"/><child link=\"arm\"/>"
+    << "<origin xyz=\"0 0 0.3\"/><axis xyz=\"0 1 0\"/></joint>\n</robot>\n";
+  return o.str();
+}
+
+std::string block_arm_scene(const std::string& urdf, const block_and_arm& b, const std::string& yaw, const std::string& theta,
+                            const std::string& theta_dot, const std::string& tau) {
+  std::ostringstream o;
+  o << "{\"model\": \"urdf\", \"file\": \"" << urdf << "\", \"base\": \"floating\", \"gravity\": [\"0\", \"0\", \"-9.81\"],"
+    << " \"state\": {\"base_x\": {\"q\": \"0.4\", \"q_dot\": \"0\"}, \"base_y\": {\"q\": \"-1.2\", \"q_dot\": \"0\"},"
+    << " \"base_z\": {\"q\": \"0\", \"q_dot\": \"0\"}, \"base_yaw\": {\"q\": \"" << yaw << "\", \"q_dot\": \"0\"},"
+    << " \"base_pitch\": {\"q\": \"0\", \"q_dot\": \"0\"}, \"base_roll\": {\"q\": \"0\", \"q_dot\": \"0\"},"
+    << " \"hinge\": {\"q\": \"" << theta << "\", \"q_dot\": \"" << theta_dot << "\"}},"
+    << " \"torques\": {\"hinge\": \"" << tau << "\"},"
+    << " \"contacts\": {\"sole\": {\"link\": \"block\", \"type\": \"surface\", \"sole\": {\"center\": [\"0\", \"0\", \"0\"],"
+    << " \"half_lengths\": [\"" << b.X << "\", \"" << b.Y << "\"]}, \"mu\": \"" << b.mu << "\"}}}";
+  return o.str();
+}
+
+struct sole_truth {
+  ref_t theta_ddot;
+  v3 F, M;
+};
+
+/// The closed form above, on the block's axes (= the sole's; gravity (0, 0, -9.81) there: the
+/// block stands upright, turned about z only).
+sole_truth block_arm_truth(const block_and_arm& b, const std::string& theta_s, const std::string& theta_dot_s,
+                           const std::string& tau_s) {
+  using floating::cross;
+  const ref_t mb(b.mb), hb(b.hb), ma(b.ma), cx(b.cx), cz(b.cz), iyy(b.ia[1]), g("9.81");
+  const ref_t th(theta_s), thd(theta_dot_s), tau(tau_s);
+  const v3 p{0, 0, ref_t("0.3")};
+  const m3 Ry = floating::elementary(1, th);
+  const v3 c = floating::mul(Ry, v3{cx, 0, cz});  // pivot to the arm's centre
+  v3 rA;
+  for (int i = 0; i < 3; ++i) rA[i] = p[i] + c[i];
+  const v3 gv{0, 0, -g};
+  // the hinge: (Iyy + ma |c|^2) theta'' = tau + (c x ma g)_y
+  const v3 cg = cross(c, gv);
+  const ref_t Ip = iyy + ma * (cx * cx + cz * cz);
+  sole_truth t;
+  t.theta_ddot = (tau + ma * cg[1]) / Ip;
+  const v3 alpha{0, t.theta_ddot, 0}, omega{0, thd, 0};
+  const v3 a1 = cross(alpha, c), a2 = cross(omega, cross(omega, c));
+  v3 aA;
+  for (int i = 0; i < 3; ++i) aA[i] = a1[i] + a2[i];
+  for (int i = 0; i < 3; ++i) t.F[i] = ma * aA[i] - (mb + ma) * gv[i];
+  v3 maA, mag, mbg;
+  for (int i = 0; i < 3; ++i) maA[i] = ma * aA[i], mag[i] = ma * gv[i], mbg[i] = mb * gv[i];
+  const v3 rB{0, 0, hb};
+  const v3 h1 = cross(rA, maA), h2 = cross(rB, mbg), h3 = cross(rA, mag);
+  for (int i = 0; i < 3; ++i) t.M[i] = h1[i] - h2[i] - h3[i] + (i == 1 ? iyy * t.theta_ddot : ref_t(0));
+  return t;
+}
+
+}  // namespace contact_truth
+
+BOOST_AUTO_TEST_CASE(a_block_on_its_sole_carries_the_wrench_newton_and_euler_give) {
+  using namespace contact_truth;
+  const block_and_arm b;
+  const std::string dir = std::filesystem::temp_directory_path().string();
+  const std::string urdf = dir + "/appell_block_arm_" + std::to_string(::getpid()) + ".urdf";
+  const std::string scene = dir + "/appell_block_arm_" + std::to_string(::getpid()) + ".json";
+  std::ofstream(urdf) << block_arm_urdf(b);
+  std::mt19937_64 rng(20261205);
+  std::uniform_real_distribution<double> angle(-3, 3), rate(-3, 3), torque(-40, 40);
+  int holds = 0, fails = 0, checked = 0;
+  for (int n = 0; n < 30; ++n) {
+    const std::string yaw = floating::fixed4(angle(rng)), theta = floating::fixed4(angle(rng)),
+                      theta_dot = floating::fixed4(rate(rng)), tau = floating::fixed4(torque(rng));
+    std::ofstream(scene) << block_arm_scene(urdf, b, yaw, theta, theta_dot, tau);
+    const sole_truth t = block_arm_truth(b, theta, theta_dot, tau);
+    const scene_input in = read_scene_file(scene);
+    const evaluation<interval> narrow = evaluate<interval>(in);
+    const mp_precision_scope scope(256);
+    const evaluation<mpfi> wide = evaluate<mpfi>(in);
+    auto holds_truth = [&](const std::string& name, std::size_t i, const ref_t& x) {
+      for (const auto& [lo, hi] : {bounds(narrow, name, i), bounds(wide, name, i)}) {
+        BOOST_TEST((lo <= x && x <= hi), name << "[" << i << "] at state " << n << ": " << x << " outside [" << lo << ", " << hi << "]");
+        BOOST_TEST(double(hi - lo) <= 1e-9 * std::max(1.0, double(abs(x))), name << " at state " << n);
+      }
+      ++checked;
+    };
+    holds_truth("hinge_ddot", 0, t.theta_ddot);
+    for (std::size_t i = 0; i < 3; ++i) holds_truth("sole_moment", i, t.M[i]);
+    holds_truth("sole_normal_force", 0, t.F[2]);
+    for (std::size_t i = 0; i < 2; ++i) holds_truth("sole_friction_force", i, t.F[i]);
+    // the verdict: the wrench cone of the truth, decided here in 400 bits
+    const ref_t X(b.X), Y(b.Y), mu(b.mu);
+    const auto m = sole_wrench_margins(t.F, t.M, X, Y, mu);
+    ref_t least = 1e300;
+    for (const ref_t& x : all_margins(m)) least = std::min(least, x);
+    std::string verdict;
+    for (const auto& c : narrow.contacts)
+      if (c.name == "sole") verdict = c.verdict;
+    if (abs(least) > 1e-6) {
+      BOOST_TEST(verdict == (least > 0 ? "holds" : "fails"), "state " << n << ": least margin " << least << ", verdict " << verdict);
+      (least > 0 ? holds : fails) += 1;
+    }
+    // the centre of pressure, where the sole pushes
+    if (t.F[2] > 0) {
+      for (const auto& c : narrow.contacts)
+        if (c.name == "sole") {
+          BOOST_TEST_REQUIRE(bool(c.center_of_pressure));
+          const ref_t cop_x = -t.M[1] / t.F[2];
+          const auto& p = (*c.center_of_pressure)[0];
+          BOOST_TEST((ref_t(p.lo) <= cop_x + 1e-30 && cop_x - 1e-30 <= ref_t(p.hi)), "centre of pressure x at state " << n);
+        }
+    }
+  }
+  BOOST_TEST(checked == 30 * 7);
+  BOOST_TEST(holds >= 3);
+  BOOST_TEST(fails >= 3);
+  BOOST_TEST_MESSAGE("a block on its sole: " << checked << " quantities enclosed; verdicts " << holds << " holds, " << fails
+                                             << " fails, each the truth's");
+  std::filesystem::remove(urdf);
+  std::filesystem::remove(scene);
+}
+
+BOOST_AUTO_TEST_CASE(a_block_on_a_corner_turns_about_it_as_euler_says) {
+  using namespace floating;
+  std::mt19937_64 rng(20261206);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const std::string dir = std::filesystem::temp_directory_path().string();
+  const std::string urdf = dir + "/appell_corner_" + std::to_string(::getpid()) + ".urdf";
+  const std::string scene = dir + "/appell_corner_" + std::to_string(::getpid()) + ".json";
+  const body b{"7.5", {"0", "0", "0.15"}, {"0", "0", "0"}, {"0.09", "0.11", "0.07", "0.004", "-0.003", "0.002"}};
+  std::ofstream(urdf) << urdf_of(b);
+  int checked = 0;
+  for (int n = 0; n < 20; ++n) {
+    const std::array<std::string, 3> corner{fixed4(0.2 * u(rng)), fixed4(0.12 * u(rng)), "0"};
+    base_state s{{fixed4(u(rng)), fixed4(u(rng)), fixed4(u(rng)), fixed4(3 * u(rng)), fixed4(1.2 * u(rng)), fixed4(3 * u(rng))},
+                 {"0", "0", "0", "0", "0", "0"}};
+    std::string text = scene_of(urdf, s, {"0", "0", "-9.81"});
+    text.insert(text.size() - 1, ", \"contacts\": {\"corner\": {\"link\": \"brick\", \"type\": \"point\", \"point\": [\"" +
+                                     corner[0] + "\", \"" + corner[1] + "\", \"0\"], \"mu\": \"0.5\"}}");
+    std::ofstream(scene) << text;
+    // the truth: turning about the corner from rest
+    const ref_t m(b.mass);
+    const m3 R = rpy(ref_t(s.q[5]), ref_t(s.q[4]), ref_t(s.q[3]));
+    const m3 I{v3{ref_t(b.inertia[0]), ref_t(b.inertia[3]), ref_t(b.inertia[5])},
+               v3{ref_t(b.inertia[3]), ref_t(b.inertia[1]), ref_t(b.inertia[4])},
+               v3{ref_t(b.inertia[5]), ref_t(b.inertia[4]), ref_t(b.inertia[2])}};
+    m3 Iw = mul(R, mul(I, transposed(R)));
+    const v3 Rc = mul(R, v3{ref_t(b.com[0]), ref_t(b.com[1]), ref_t(b.com[2])});
+    const v3 r = mul(R, v3{ref_t(b.com[0]) - ref_t(corner[0]), ref_t(b.com[1]) - ref_t(corner[1]), ref_t(b.com[2])});
+    const ref_t rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) Iw[i][j] += m * ((i == j ? rr : ref_t(0)) - r[i] * r[j]);
+    const v3 gm{0, 0, -m * ref_t("9.81")};
+    const v3 alpha = solve(Iw, cross(r, gm));
+    const v3 aG = cross(alpha, r);
+    v3 F;
+    for (int i = 0; i < 3; ++i) F[i] = m * aG[i] - gm[i];
+    const v3 aRc = cross(alpha, Rc);
+    const ref_t yaw(s.q[3]), pitch(s.q[4]);
+    const v3 e2 = mul(elementary(2, yaw), v3{0, 1, 0});
+    const v3 e3 = mul(mul(elementary(2, yaw), elementary(1, pitch)), v3{1, 0, 0});
+    const m3 E{v3{0, e2[0], e3[0]}, v3{0, e2[1], e3[1]}, v3{1, e2[2], e3[2]}};
+    const v3 rates = solve(E, alpha);
+    const std::vector<std::pair<std::string, ref_t>> truth{
+        {"base_x_ddot", aG[0] - aRc[0]}, {"base_y_ddot", aG[1] - aRc[1]}, {"base_z_ddot", aG[2] - aRc[2]},
+        {"base_yaw_ddot", rates[0]},     {"base_pitch_ddot", rates[1]},   {"base_roll_ddot", rates[2]},
+        {"corner_normal_force", F[2]}};
+    const scene_input in = read_scene_file(scene);
+    const evaluation<interval> narrow = evaluate<interval>(in);
+    const mp_precision_scope scope(256);
+    const evaluation<mpfi> wide = evaluate<mpfi>(in);
+    for (const auto& [name, x] : truth)
+      for (const auto& [lo, hi] : {bounds(narrow, name), bounds(wide, name)}) {
+        BOOST_TEST((lo <= x && x <= hi), name << " at state " << n << ": " << x << " outside [" << lo << ", " << hi << "]");
+        BOOST_TEST(double(hi - lo) <= 1e-9 * std::max(1.0, double(abs(x))), name << " at state " << n);
+        ++checked;
+      }
+    for (std::size_t i = 0; i < 2; ++i) {
+      const auto [lo, hi] = bounds(narrow, "corner_friction_force", i);
+      BOOST_TEST((lo <= F[i] && F[i] <= hi), "friction force " << i << " at state " << n);
+    }
+  }
+  BOOST_TEST(checked == 20 * 7 * 2);
+  BOOST_TEST_MESSAGE("a block on a corner: " << checked << " enclosures hold the turning about the corner");
+  std::filesystem::remove(urdf);
+  std::filesystem::remove(scene);
+}
+
+// A link's contacts refused as bad input: an unknown link, a non-positive half-length, a negative
+// mu, a sole's constraint dependent on another contact's (exit 2, naming the contact).
+BOOST_AUTO_TEST_CASE(a_link_contact_refuses_bad_input_naming_the_field) {
+  using namespace contact_truth;
+  const block_and_arm b;
+  const std::string dir = std::filesystem::temp_directory_path().string();
+  const std::string urdf = dir + "/appell_contact_refusals_" + std::to_string(::getpid()) + ".urdf";
+  const std::string scene = dir + "/appell_contact_refusals_" + std::to_string(::getpid()) + ".json";
+  std::ofstream(urdf) << block_arm_urdf(b);
+  const std::string good = block_arm_scene(urdf, b, "0.3", "0.5", "0.2", "1");
+  auto refusal = [&](const std::string& from, const std::string& to) {
+    std::string text = good;
+    const auto at = text.find(from);
+    BOOST_REQUIRE(at != std::string::npos);
+    text.replace(at, from.size(), to);
+    std::ofstream(scene) << text;
+    try {
+      (void)read_scene_file(scene);
+    } catch (const input_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  BOOST_TEST(refusal("\"link\": \"block\"", "\"link\": \"block\"") == "(accepted)");
+  BOOST_TEST(refusal("\"link\": \"block\"", "\"link\": \"foot\"").find("contacts.sole.link: no body named 'foot'") != std::string::npos,
+             refusal("\"link\": \"block\"", "\"link\": \"foot\""));
+  const std::string h = refusal("[\"0.2\", \"0.12\"]", "[\"0.2\", \"0\"]");
+  BOOST_TEST(h.find("contacts.sole.sole.half_lengths[1]: a sole's half-length must be positive") != std::string::npos, h);
+  const std::string mu = refusal("\"mu\": \"0.6\"", "\"mu\": \"-0.1\"");
+  BOOST_TEST(mu.find("contacts.sole.mu: a friction coefficient must not be negative") != std::string::npos, mu);
+  // two points of the block held: the second's row along the line between them repeats the
+  // first's (the block may still turn about that line), named
+  const auto from = good.find("\"contacts\"");
+  BOOST_REQUIRE(from != std::string::npos);
+  std::string two = good.substr(0, from) +
+                    "\"contacts\": {\"toe\": {\"link\": \"block\", \"point\": [\"0.2\", \"0\", \"0\"]}, "
+                    "\"heel\": {\"link\": \"block\", \"point\": [\"-0.2\", \"0\", \"0\"]}}}";
+  std::ofstream(scene) << two;
+  std::string twice = "(accepted)";
+  try {
+    (void)read_scene_file(scene);
+  } catch (const input_error& e) {
+    twice = e.what();
+  }
+  BOOST_TEST(twice.find("contacts.heel: its constraint heel_") != std::string::npos, twice);
+  BOOST_TEST(twice.find("depends on the constraints before it at the state (with the contacts toe") != std::string::npos, twice);
+  std::filesystem::remove(urdf);
+  std::filesystem::remove(scene);
+}

@@ -46,6 +46,8 @@ std::string format_json(const printed_evaluation& e) {
       nlohmann::ordered_json one = {{"verdict", c.verdict}};
       if (!c.mu.empty()) one["mu"] = c.mu;
       if (c.required_mu) one["required_mu"] = number_json(*c.required_mu);
+      if (c.center_of_pressure)
+        one["center_of_pressure"] = {number_json((*c.center_of_pressure)[0]), number_json((*c.center_of_pressure)[1])};
       contacts[c.name] = std::move(one);
     }
     j["contacts"] = std::move(contacts);
@@ -71,7 +73,11 @@ std::string format_text(const printed_evaluation& e) {
   if (!e.contacts.empty()) s += "contacts (" + std::string(e.scalar.rigorous ? "proved" : "not proved: point values") + "):\n";
   for (const auto& c : e.contacts)
     s += "  " + c.name + ": " + c.verdict + (c.mu.empty() ? " (the normal force's sign only)" : " (mu = " + c.mu + ")") +
-         (c.required_mu ? "; required mu " + json_text(number_json(*c.required_mu), json_style::spaced) : "") + "\n";
+         (c.required_mu ? "; required mu " + json_text(number_json(*c.required_mu), json_style::spaced) : "") +
+         (c.center_of_pressure ? "; centre of pressure (" + text_of((*c.center_of_pressure)[0]) + ", " +
+                                     text_of((*c.center_of_pressure)[1]) + ")"
+                               : "") +
+         "\n";
   return s;
 }
 

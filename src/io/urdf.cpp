@@ -87,6 +87,27 @@ void read_origin(const std::string& file, const tinyxml2::XMLElement* parent, st
 
 bool is_zero(const std::string& d) { return decimal_sign_of_sum({{1, d}}) == 0; }
 
+/// A parsed JSON value written back as JSON text (a number as its decimal text, exactly).
+nlohmann::ordered_json json_of(const json_value& v) {
+  switch (v.type) {
+    case json_value::kind::null: return nullptr;
+    case json_value::kind::boolean: return v.boolean;
+    case json_value::kind::number: return v.text;  // as a string: the decimal exactly as written
+    case json_value::kind::string: return v.text;
+    case json_value::kind::array: {
+      nlohmann::ordered_json a = nlohmann::ordered_json::array();
+      for (const auto& x : v.items) a.push_back(json_of(x));
+      return a;
+    }
+    default: {
+      nlohmann::ordered_json o = nlohmann::ordered_json::object();
+      for (const auto& m : v.members) o[m.key] = json_of(m.value);
+      return o;
+    }
+  }
+}
+std::string json_value_text(const json_value& v) { return json_of(v).dump(); }
+
 /// Whether |cos(pitch)| > floating_base_pitch_margin is proved for the decimal `pitch` (MPFI at
 /// 256 bits on the decimal's exact enclosure): false near +-90 degrees, and where undecided.
 bool pitch_is_regular(const std::string& pitch) {
@@ -380,6 +401,7 @@ std::string urdf_to_system(const urdf_robot& robot, const urdf_scene_options& o)
     bodies[l.name] = body;
   }
   doc["bodies"] = bodies;
+  if (!o.contacts.empty()) doc["contacts"] = json::parse(o.contacts);
   json state = json::object();
   for_each_state_entry(robot, names, o, [&](const std::string& key, const std::string& text) { state[key] = text; });
   doc["state"] = state;
@@ -464,6 +486,12 @@ const parsed_urdf_file& read_urdf_scene_options(object_reader& scene, std::strin
   for (const auto& j : moving)
     if (!o.state.count(j)) throw input_error("state: joint \"" + printable(j) + "\" is missing (q and q_dot of every moving joint)");
   o.with_state = true;
+  if (scene.has("contacts")) {
+    // Passed to the system file as written; its reader checks them (SCENES.md, "contacts of links").
+    const json_value& c = scene.raw("contacts");
+    if (c.type != json_value::kind::object) throw input_error(scene.path("contacts") + ": expected an object, contact by contact");
+    o.contacts = json_value_text(c);
+  }
   if (scene.has("torques") && scene.has("accelerations"))
     throw input_error("accelerations: give the torques (forward dynamics) or the accelerations (inverse dynamics), not both");
   for (const char* section : {"torques", "accelerations"}) {
@@ -545,7 +573,7 @@ thread_local std::optional<kept_system_document> last_system_document;
 
 bool same_but_state(const urdf_scene_options& a, const urdf_scene_options& b) {
   return a.gravity == b.gravity && a.efforts == b.efforts && a.accelerations == b.accelerations &&
-         a.with_state == b.with_state && a.floating == b.floating;
+         a.with_state == b.with_state && a.floating == b.floating && a.contacts == b.contacts;
 }
 
 std::shared_ptr<const model_input> read_urdf_scene(object_reader& scene) {

@@ -668,6 +668,82 @@ void read_wrenches(reading& R) {
   }
 }
 
+/// A contact of a link with the fixed ground (SCENES.md, "contacts of links"): its link, its
+/// kind, its frame, its friction; its constraints made here, one per row, named
+/// <contact>_x, _y, _z (the point's velocity along the frame's axes) and, for a sole,
+/// <contact>_wx, _wy, _wz (the link's angular velocity).
+void read_link_contact(reading& R, object_reader& r, system_contact_definition& k) {
+  system_definition& def = R.b.def;
+  const std::string link = r.string("link");
+  const auto it = std::find_if(def.bodies.begin(), def.bodies.end(), [&](const system_body_definition& x) { return x.name == link; });
+  if (it == def.bodies.end()) throw input_error(r.path("link") + ": no body named '" + printable(link) + "'");
+  if (!it->is_link)
+    throw input_error(r.path("link") + ": '" + printable(link) + "' is not a link of a tree (a body placed by its "
+                      "joint); a contact of another body names its constraints (\"constraints\")");
+  for (const char* other : {"constraints", "body", "direction"})
+    if (r.has(other))
+      throw input_error(r.path(other) + ": a link's contact makes its own constraints; leave \"" + std::string(other) + "\" out");
+  k.link = static_cast<int>(it - def.bodies.begin());
+  const std::string type = r.has("type") ? r.string("type") : std::string("point");
+  if (type != "point" && type != "surface")
+    throw input_error(r.path("type") + ": \"point\" (the link's point held: three constraints) or \"surface\" (the "
+                      "link held by a flat rectangular sole: six), not \"" + printable(type) + "\"");
+  k.surface = type == "surface";
+  if (k.surface) {
+    for (const char* other : {"point", "normal"})
+      if (r.has(other))
+        throw input_error(r.path(other) + ": a surface contact is placed by its \"sole\" (centre, rpy, half_lengths)");
+    object_reader sole = r.object("sole");
+    const std::vector<decimal_field> c = sole.numbers("center", 3);
+    for (std::size_t i = 0; i < 3; ++i) k.frame_origin[i] = c[i].text;
+    if (sole.has("rpy")) {
+      const std::vector<decimal_field> a = sole.numbers("rpy", 3);
+      for (std::size_t i = 0; i < 3; ++i) k.frame_rpy[i] = a[i].text;
+    }
+    const std::vector<decimal_field> h = sole.numbers("half_lengths", 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+      if (decimal_sign_of_sum({{1, h[i].text}}) <= 0)
+        throw input_error(sole.path("half_lengths") + "[" + std::to_string(i) + "]: a sole's half-length must be positive, got " +
+                          h[i].text);
+      k.half_lengths[i] = h[i].text;
+    }
+    sole.finish();
+  } else {
+    if (r.has("sole")) throw input_error(r.path("sole") + ": a point contact has no sole (\"type\": \"surface\" has one)");
+    const std::vector<decimal_field> p = r.numbers("point", 3);
+    for (std::size_t i = 0; i < 3; ++i) k.frame_origin[i] = p[i].text;
+    if (r.has("normal")) {
+      const std::vector<decimal_field> n = r.numbers("normal", 3);
+      for (std::size_t i = 0; i < 3; ++i) k.frame_normal[i] = n[i].text;
+      if (decimal_sign_of_polynomial({{1, {n[0].text, n[0].text}}, {1, {n[1].text, n[1].text}}, {1, {n[2].text, n[2].text}}}) == 0)
+        throw input_error(r.path("normal") + ": the normal is 0");
+    }
+  }
+  if (r.has("mu")) {
+    const decimal_field mu = r.number("mu");
+    if (decimal_sign_of_sum({{1, mu.text}}) < 0)
+      throw input_error(r.path("mu") + ": a friction coefficient must not be negative, got " + mu.text);
+    k.mu = mu.text;
+  }
+  const int contact = static_cast<int>(def.contacts.size());
+  const std::vector<const char*> rows = k.surface ? std::vector<const char*>{"_x", "_y", "_z", "_wx", "_wy", "_wz"}
+                                                  : std::vector<const char*>{"_x", "_y", "_z"};
+  for (std::size_t row = 0; row < rows.size(); ++row) {
+    system_constraint_definition c;
+    c.name = k.name + rows[row];
+    if (std::any_of(def.constraints.begin(), def.constraints.end(), [&](const system_constraint_definition& x) { return x.name == c.name; }))
+      throw input_error("contacts." + k.name + ": its constraint " + c.name + " has the name of another constraint");
+    c.holonomic = false;
+    c.link_contact = contact;
+    c.link_row = static_cast<int>(row);
+    k.constraints.push_back(static_cast<int>(def.constraints.size()));
+    def.constraints.push_back(std::move(c));
+  }
+  if (def.constraints.size() >= static_cast<std::size_t>(def.vars.speeds))
+    throw input_error("contacts." + k.name + ": " + std::to_string(def.constraints.size()) + " constraints on " +
+                      std::to_string(def.vars.speeds) + " speeds leave nothing to move");
+}
+
 /// The contacts: which constraints make one, its normal, its friction (SCENES.md "contacts").
 void read_contacts(reading& R) {
   object_reader& scene = R.scene;
@@ -683,6 +759,12 @@ void read_contacts(reading& R) {
       k.name = m.key;
       if (!is_identifier(k.name))
         throw input_error("contacts: '" + printable(k.name) + "' is not a name (a letter or _, then letters, digits, _)");
+      if (r.has("link")) {
+        read_link_contact(R, r, k);
+        r.finish();
+        def.contacts.push_back(std::move(k));
+        continue;
+      }
       auto constraint_index = [&](const std::string& name, const std::string& where) {
         const auto it = std::find_if(def.constraints.begin(), def.constraints.end(),
                                      [&](const system_constraint_definition& x) { return x.name == name; });
@@ -986,8 +1068,9 @@ void check_result_names(reading& R) {
                             " has the name of another result");
     }
     for (const auto& k : def.contacts)
-      for (const char* suffix : {"_normal_force", "_friction_force", "_tangential_force", "_required_mu"})
-        if (!results.insert(k.name + suffix).second)
+      for (const char* suffix : {"_normal_force", "_friction_force", "_tangential_force", "_required_mu", "_moment", "_margins"})
+        if ((k.surface || std::string(suffix) != "_moment") && (k.surface || std::string(suffix) != "_margins") &&
+            !results.insert(k.name + suffix).second)
           throw input_error("contacts." + k.name + ": its result " + k.name + suffix + " has the name of another result");
   }
 }

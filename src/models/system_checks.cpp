@@ -317,7 +317,8 @@ void check_constraints_at_state(const state_at_256_bits& at, bool projected) {
       mpfi res = -a(r);
       for (int j = 0; j < n; ++j) res += A(r, j) * u(j);
       if (!possibly_zero(res))
-        throw input_error(where + ": the speeds violate it (" + std::string(k.holonomic ? "df/dt" : k.body >= 0 ? "n . v" : "g") + " = " +
+        throw input_error(where + ": the speeds violate it (" +
+                          std::string(k.holonomic ? "df/dt" : k.body >= 0 ? "n . v" : k.link_contact >= 0 ? "the link's velocity there" : "g") + " = " +
                           to_string(res) + ")" + projection_remedy(res, projected));
     }
     // Independence: elimination with a pivot that is certainly nonzero in each row.
@@ -330,9 +331,19 @@ void check_constraints_at_state(const state_at_256_bits& at, bool projected) {
           best_abs = std::abs(approx_double(A(r, j)));
           best = j;
         }
-      if (best < 0)
-        throw input_error("constraints." + d.constraints[static_cast<std::size_t>(r)].name +
-                          ": depends on the constraints before it at the state (or is 0 there)");
+      if (best < 0) {
+        const system_constraint_definition& k = d.constraints[static_cast<std::size_t>(r)];
+        if (k.link_contact >= 0) {  // a link's contact: name it, and the contacts before it
+          std::string before;
+          for (int c = 0; c < k.link_contact; ++c)
+            if (d.contacts[static_cast<std::size_t>(c)].link >= 0) before += (before.empty() ? "" : ", ") + d.contacts[static_cast<std::size_t>(c)].name;
+          throw input_error("contacts." + d.contacts[static_cast<std::size_t>(k.link_contact)].name + ": its constraint " + k.name +
+                            " depends on the constraints before it at the state" +
+                            (before.empty() ? std::string(" (the joints cannot move the link that way)")
+                                            : " (with the contacts " + before + ": a closed chain through the ground at a singular pose)"));
+        }
+        throw input_error("constraints." + k.name + ": depends on the constraints before it at the state (or is 0 there)");
+      }
       used[static_cast<std::size_t>(best)] = true;
       for (int r2 = r + 1; r2 < s; ++r2) {
         const mpfi f = A(r2, best) / A(r, best);
@@ -368,6 +379,7 @@ void check_contacts_at_state(const state_at_256_bits& at) {
     for (std::size_t k = 0; k < d.contacts.size(); ++k) {
       const system_contact_definition& kd = d.contacts[k];
       const std::string where = "contacts." + kd.name;
+      if (kd.link >= 0) continue;  // a link's contact: its rows are its frame's axes (read_link_contact)
       if (kd.body >= 0) {
         const matrix_t<mpfi> J = contact_twist_jacobian(sys, sys.contacts[k], w0.data());
         check_body_fixes_force(d, where, kd.body, J, A, kd.constraints, "the contact's force");

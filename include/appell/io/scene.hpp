@@ -12,6 +12,7 @@
 // once per standard scalar (scalar/standard_scalars.hpp) in generated units.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -23,6 +24,7 @@
 #include "appell/dynamics/gibbs_appell.hpp"  // vec3
 #include "appell/io/json.hpp"
 #include "appell/reactions/contact.hpp"
+#include "appell/reactions/wrench_cone.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/format.hpp"
 #include "appell/scalar/policy.hpp"
@@ -83,6 +85,8 @@ printed_number printed(const T& x) {
 struct contact_judgement {
   std::string name, verdict, mu;
   std::optional<printed_number> required_mu;
+  /// A sole's centre of pressure on its axes (x, y), where the normal force is proved positive.
+  std::optional<std::array<printed_number, 2>> center_of_pressure;
 };
 
 /// One contact's judgement for eval's document from its normal force, its tangential force's
@@ -94,7 +98,45 @@ contact_judgement judged_contact(const std::string& name, const T& normal, const
   if (certainly_positive(normal)) required = printed(T(tangential / normal));
   std::optional<T> mu;
   if (!mu_text.empty()) mu = from_decimal<T>(mu_text);
-  return {name, verdict_name(judge_contact(normal, tangential, mu ? &*mu : nullptr)), mu_text, required};
+  return {name, verdict_name(judge_contact(normal, tangential, mu ? &*mu : nullptr)), mu_text, required, std::nullopt};
+}
+
+/// A sole's margins as a result (SCENES.md, "contacts of links"): with mu the 16 of its contact
+/// wrench cone (friction 4, centre of pressure 4, yaw 8; reactions/wrench_cone.hpp), without mu
+/// the 4 of the centre of pressure; each >= 0 exactly when that half-space holds.
+template <Scalar T>
+std::vector<T> sole_margin_values(const vec3<T>& force, const vec3<T>& moment, const T& X, const T& Y,
+                                  const std::optional<T>& mu) {
+  const wrench_cone_margins<T> w = sole_wrench_margins(force, moment, X, Y, mu ? *mu : T(0));
+  if (mu) {
+    const std::array<T, 16> all = all_margins(w);
+    return std::vector<T>(all.begin(), all.end());
+  }
+  return std::vector<T>(w.pressure.begin(), w.pressure.end());
+}
+
+/// A sole's judgement: with mu its contact wrench cone (judge_sole), without mu the normal force's
+/// sign and the centre of pressure in the sole; the friction it requires on the resultant and
+/// its centre of pressure, where the normal force is proved positive.
+template <Scalar T>
+contact_judgement judged_sole(const std::string& name, const vec3<T>& force, const vec3<T>& moment, const T& X,
+                              const T& Y, const std::optional<T>& mu, const std::string& mu_text) {
+  contact_verdict v;
+  if (mu) {
+    v = judge_sole(sole_wrench_margins(force, moment, X, Y, *mu));
+  } else {
+    const wrench_cone_margins<T> w = sole_wrench_margins(force, moment, X, Y, T(0));
+    bool all = certainly_positive(force(2)), fails = certainly_negative(force(2));
+    for (const T& x : w.pressure) all = all && certainly_positive(x), fails = fails || certainly_negative(x);
+    v = fails ? contact_verdict::fails : all ? contact_verdict::holds : contact_verdict::undecided;
+  }
+  contact_judgement j{name, verdict_name(v), mu_text, std::nullopt, std::nullopt};
+  if (certainly_positive(force(2))) {
+    using std::sqrt;
+    j.required_mu = printed(T(sqrt(T(force(0) * force(0) + force(1) * force(1))) / force(2)));
+    j.center_of_pressure = std::array<printed_number, 2>{printed(T(-moment(1) / force(2))), printed(T(moment(0) / force(2)))};
+  }
+  return j;
 }
 
 /// Whether an evaluation computes its checks (the identities `appell eval` prints: eq. (4), Cotton
@@ -171,6 +213,11 @@ class evaluation_writer {
     named_result<T>& r = next(g, name, suffix, true);
     r.values.resize(3);
     for (int i = 0; i < 3; ++i) r.values[static_cast<std::size_t>(i)] = v(i);
+  }
+  /// A list of any length (a sole's margins), printed as a vector.
+  void list(group_id g, std::string_view name, const char* suffix, const std::vector<T>& v) {
+    named_result<T>& r = next(g, name, suffix, true);
+    r.values.assign(v.begin(), v.end());
   }
   /// The evaluation's contacts' judgements, written whole (they hold strings of the values).
   std::vector<contact_judgement>& contacts() { return e_.contacts; }

@@ -90,6 +90,9 @@ struct urdf_scene_options {
   /// (floating_base_coordinates(): three prismatic along x, y, z, three revolute about z, y, x),
   /// whose coordinates the maps above name as joints.  Otherwise the root link is the ground.
   bool floating = false;
+  /// The scene's "contacts" (SCENES.md, "contacts of links"), as JSON text: written into the
+  /// system file as they are (a link is named by its URDF name, which is its body's), read there.
+  std::string contacts;
 };
 
 /// The `system` scene file (JSON text) of the robot, its base fixed to the ground (or floating:

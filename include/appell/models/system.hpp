@@ -194,6 +194,15 @@ struct system_model {
         out.scalar(W::results, name, "_normal_force", f[k].normal);
         out.vector(W::results, name, "_friction_force", f[k].tangential);
         out.scalar(W::results, name, "_tangential_force", tangential);
+        if (contacts[k].surface) {  // a sole: its couple and its contact wrench cone (reactions/wrench_cone.hpp)
+          out.vector(W::results, name, "_moment", f[k].moment);
+          const auto& ck = m.sys.contacts[k];
+          const std::optional<T> mu = contacts[k].mu.empty() ? std::nullopt : std::optional<T>(from_decimal<T>(contacts[k].mu));
+          const vec3<T> force(f[k].tangential(0), f[k].tangential(1), f[k].normal);
+          e.contacts.push_back(judged_sole(name, force, f[k].moment, ck.half_x, ck.half_y, mu, contacts[k].mu));
+          out.list(W::results, name, "_margins", sole_margin_values(force, f[k].moment, ck.half_x, ck.half_y, mu));
+          continue;
+        }
         // required mu in the contacts group: the results' list must not depend on the values
         e.contacts.push_back(judged_contact(name, f[k].normal, tangential, contacts[k].mu));
       }

@@ -240,6 +240,22 @@ struct system_problem {
       for (std::size_t k = 0; k < f.size(); ++k) {
         out.push_back({d.contacts[k].name + "_normal_force", {f[k].normal}});
         out.push_back({d.contacts[k].name + "_friction_force", {f[k].tangential(0), f[k].tangential(1), f[k].tangential(2)}});
+        if (!d.contacts[k].surface) continue;
+        // a sole: its couple and its wrench cone's margins (judged along the motion: contact_track.hpp)
+        out.push_back({d.contacts[k].name + "_moment", {f[k].moment(0), f[k].moment(1), f[k].moment(2)}});
+        const auto& ck = model->sys.contacts[k];
+        const vec3<S> force(f[k].tangential(0), f[k].tangential(1), f[k].normal);
+        const bool has_mu = !d.contacts[k].mu.empty();
+        const S mu = has_mu ? S(from_decimal<T>(d.contacts[k].mu)) : S(0);
+        const wrench_cone_margins<S> w = sole_wrench_margins(force, f[k].moment, S(ck.half_x), S(ck.half_y), mu);
+        std::vector<S> margins;
+        if (has_mu) {
+          const std::array<S, 16> all = all_margins(w);
+          margins.assign(all.begin(), all.end());
+        } else {
+          margins.assign(w.pressure.begin(), w.pressure.end());
+        }
+        out.push_back({d.contacts[k].name + "_margins", margins});
       }
     }
   }

@@ -34,6 +34,9 @@ template <Scalar I>
 struct contact_values {
   I normal, tangential;
   bool known = true;  ///< false: the results could not be evaluated there (then nothing is decided)
+  /// A sole's margins (`<name>_margins`: its contact wrench cone, SCENES.md), judged with the
+  /// normal force in place of the friction on the resultant; empty for a point contact.
+  std::vector<I> margins = {};
 };
 
 template <Scalar I>
@@ -47,7 +50,10 @@ contact_values<I> find_contact(const std::vector<ode::named_values<I>>& results,
   if (!n || !f || f->values.size() != 3) throw std::logic_error("contact " + name + ": its results are missing");
   using std::sqrt;
   I s = sqr(f->values[0]) + sqr(f->values[1]) + sqr(f->values[2]);
-  return {n->values[0], I(sqrt(s)), true};
+  contact_values<I> out{n->values[0], I(sqrt(s)), true};
+  for (const auto& r : results)
+    if (r.name == name + "_margins") out.margins = r.values;
+  return out;
 }
 
 /// An upper bound (to within rounding) of b - a, as a double: how far apart two times are.
@@ -85,6 +91,11 @@ struct contact_track {
 
   contact_verdict verdict_of(const contact_values<I>& v) const {
     if (!v.known) return contact_verdict::undecided;
+    if (!v.margins.empty()) {  // a sole: its normal force and every margin of its wrench cone
+      bool all = certainly_positive(v.normal), fails = certainly_negative(v.normal);
+      for (const I& x : v.margins) all = all && certainly_positive(x), fails = fails || certainly_negative(x);
+      return fails ? contact_verdict::fails : all ? contact_verdict::holds : contact_verdict::undecided;
+    }
     return judge_contact(v.normal, v.tangential, mu ? &*mu : nullptr);
   }
 

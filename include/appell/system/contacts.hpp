@@ -84,6 +84,28 @@ void contact_forces_into(const compiled_system<T>& c, const vector_t<S>& q, cons
   for (std::size_t k = 0; k < c.contacts.size(); ++k) {
     const auto& ck = c.contacts[k];
     const system_contact_definition& dk = c.def->contacts[k];
+    if (ck.link >= 0) {
+      // A link's contact: its rows are the contact frame's axes, so the reactions are the force
+      // (and, for a sole, the couple) on those axes at the frame's origin, exactly.
+      auto lambda = [&](std::size_t i) { return S(reactions(dk.constraints[i])); };
+      const vec3<S> F(lambda(0), lambda(1), lambda(2));
+      contact_force_result<S> res{S(0), zero_matrix<vec3<S>>(), zero_matrix<vec3<S>>(), zero_matrix<vec3<S>>()};
+      if (ck.surface) {  // the sole's axes: z its normal
+        res.normal = F(2);
+        res.tangential = vec3<S>(F(0), F(1), S(0));
+        res.moment = vec3<S>(lambda(3), lambda(4), lambda(5));
+        res.unit_normal(2) = S(1);
+      } else {  // the fixed axes; the normal as given, normalized
+        vec3<S> n = vec3<S>(detail::from_base<S>(ck.normal(0)), detail::from_base<S>(ck.normal(1)), detail::from_base<S>(ck.normal(2)));
+        const S len = sqrt(dot(n, n));
+        for (int i = 0; i < 3; ++i) n(i) = n(i) / len;
+        res.normal = dot(F, n);
+        for (int i = 0; i < 3; ++i) res.tangential(i) = F(i) - res.normal * n(i);
+        res.unit_normal = n;
+      }
+      out.push_back(std::move(res));
+      continue;
+    }
     std::vector<vec3<S>>&d = *d_held, &m = *m_held;
     d.clear(), m.clear();
     if (ck.frame.body < 0) {

@@ -132,6 +132,10 @@ struct system_constraint_definition {
   /// point_velocity on a moving support: the support's velocity at the point (fixed axes, a
   /// function of q and t; null: 0), so that n . (v - support) = 0.
   std::array<shared_expression, 3> support;
+  /// A row of a link's contact (system_contact_definition::link >= 0): the contact's number
+  /// and the row, 0 to 2 the contact point's velocity, 3 to 5 the link's angular velocity,
+  /// along the contact frame's axes x, y, z (nonholonomic, A u = 0: the support is fixed).
+  int link_contact = -1, link_row = -1;
 };
 
 /// The wrench that some constraints exert on one body, reduced to a point of
@@ -170,6 +174,22 @@ struct system_contact_definition {
   int side = 1;     ///< +1: the support pushes along d_normal (or `direction`); -1: against it
   std::array<shared_expression, 3> direction;
   std::string mu;   ///< the friction coefficient as written (a decimal), empty: none given
+  /// A contact of a link of a tree with the fixed ground (SCENES.md, "contacts of links"): the
+  /// link's body number (-1: a contact of the kinds above).  Its constraints are made by the
+  /// reader, one per row (system_constraint_definition::link_contact), on the contact frame F:
+  ///   point:   F's origin `point` on the link's axes, its axes the fixed axes; three rows, the
+  ///            point's velocity: a force at the point (the normal `direction` on the fixed axes,
+  ///            by default +z);
+  ///   surface: F the sole's frame (origin its centre, axes turned by `rpy` from the link's, z
+  ///            its normal out of the ground into the link); six rows, the velocity of the
+  ///            centre and the angular velocity: the wrench at the centre on the sole's axes,
+  ///            judged by the rectangle's contact wrench cone (reactions/wrench_cone.hpp).
+  /// Every number a decimal as written.
+  int link = -1;
+  bool surface = false;
+  std::array<std::string, 3> frame_origin{"0", "0", "0"}, frame_rpy{"0", "0", "0"};
+  std::array<std::string, 3> frame_normal{"0", "0", "1"};  ///< point: the normal, fixed axes
+  std::array<std::string, 2> half_lengths{"0", "0"};       ///< surface: X, Y along the sole's x, y
 };
 
 /// A whole system file's mechanics, independent of any scalar.

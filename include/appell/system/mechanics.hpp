@@ -201,6 +201,80 @@ struct expression_system {
   }
 };
 
+/// A link contact's rows per unit of each coordinate's rate (system_contact_definition::link):
+/// 3 x nq for a point contact (the point's velocity on the fixed axes), 6 x nq for a surface
+/// (the sole centre's velocity and the link's angular velocity, on the sole's axes).  From the
+/// link up to the ground: r, the contact point from each ancestor's joint origin on that
+/// ancestor's axes, and M, the ancestor's axes to the link's; joint j (axis a) moves the point
+/// by M (a x r) and turns the link by M a per unit rate (revolute), or moves it by M a
+/// (prismatic).  At the ground M turns the fixed axes onto the link's.  O(depth).
+template <Scalar T, class S>
+void link_contact_rows_into(const compiled_system<T>& c, const typename compiled_system<T>::contact& k,
+                            const vector_t<S>& q, matrix_t<S>& J) {
+  using K = system_joint_definition::kind;
+  using std::cos, std::sin;
+  const int nq = c.def->vars.coordinates;
+  J.setZero(k.surface ? 6 : 3, nq);
+  auto lift = [](const vec3<T>& x) { return vec3<S>(detail::from_base<S>(x(0)), detail::from_base<S>(x(1)), detail::from_base<S>(x(2))); };
+  auto times = [](const mat3<S>& m, const vec3<S>& x) {
+    vec3<S> y;
+    for (int i = 0; i < 3; ++i) y(i) = m(i, 0) * x(0) + m(i, 1) * x(1) + m(i, 2) * x(2);
+    return y;
+  };
+  auto transpose_times = [](const mat3<S>& m, const vec3<S>& x) {
+    vec3<S> y;
+    for (int i = 0; i < 3; ++i) y(i) = m(0, i) * x(0) + m(1, i) * x(1) + m(2, i) * x(2);
+    return y;
+  };
+  struct site;
+  const scratch<matrix_t<S>, site> cols_held;  // the velocity (rows 0-2) and angular velocity (3-5) on the link's axes
+  matrix_t<S>& cols = *cols_held;
+  cols.setZero(6, nq);
+  vec3<S> r = lift(k.origin);
+  mat3<S> M = mat3<S>::Identity();
+  for (int body = k.link; body >= 0;) {
+    const auto& L = c.links[static_cast<std::size_t>(c.link_of[static_cast<std::size_t>(body)])];
+    typename compiled_system<T>::template link_state<S> st;
+    const S qk = L.coordinate >= 0 ? q(L.coordinate) : S(0);
+    if (L.type == K::revolute) st.c = cos(qk), st.s = sin(qk);
+    if (L.coordinate >= 0) {
+      const vec3<S> a = lift(L.axis);
+      const vec3<S> w = times(M, a);
+      const vec3<S> v = L.type == K::revolute ? times(M, vec3<S>(cross(a, r))) : w;
+      for (int i = 0; i < 3; ++i) {
+        cols(i, L.coordinate) += v(i);
+        if (L.type == K::revolute) cols(3 + i, L.coordinate) += w(i);
+      }
+    }
+    vec3<S> offset = lift(L.origin);
+    if (L.type == K::prismatic) offset += compiled_system<T>::times(L.R0, compiled_system<T>::scaled(L.axis, qk));
+    r = vec3<S>(c.to_parent(L, st, r) + offset);
+    mat3<S> Mp;
+    for (int i = 0; i < 3; ++i) {
+      vec3<S> e = vec3<S>::Zero();
+      e(i) = S(1);
+      const vec3<S> col = times(M, c.to_link(L, st, e));
+      for (int x = 0; x < 3; ++x) Mp(x, i) = col(x);
+    }
+    M = Mp;
+    body = L.parent;
+  }
+  const mat3<S> F = [&] {  // the contact frame's axes on the link's: the sole's, or (point) the fixed axes
+    if (!k.surface) return M;
+    mat3<S> f;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) f(i, j) = detail::from_base<S>(k.sole_axes(i, j));
+    return f;
+  }();
+  for (int j = 0; j < nq; ++j) {
+    const vec3<S> v = transpose_times(F, vec3<S>(cols(0, j), cols(1, j), cols(2, j)));
+    for (int i = 0; i < 3; ++i) J(i, j) = v(i);
+    if (!k.surface) continue;
+    const vec3<S> w = transpose_times(F, vec3<S>(cols(3, j), cols(4, j), cols(5, j)));
+    for (int i = 0; i < 3; ++i) J(3 + i, j) = w(i);
+  }
+}
+
 /// The constraints, A(q, t) u = a(q, t), one row each (see the top of this file).
 template <Scalar T>
 struct expression_constraints {
@@ -220,8 +294,28 @@ struct expression_constraints {
     c->evaluate_into(c->constraint_tape, *x, *values);
     const S* v = values->data();
     A.setZero();
+    const scratch<matrix_t<S>, detail::row_tag> J_held;  // a link contact's rows, for its consecutive constraints
+    int rows_of = -1;
     for (int r = 0; r < count(); ++r) {
       const auto& k = c->constraints[static_cast<std::size_t>(r)];
+      if (k.link_contact >= 0) {  // a row of a link's contact with the fixed ground: J_row u = 0
+        if (rows_of != k.link_contact) {
+          link_contact_rows_into<T, S>(*c, c->contacts[static_cast<std::size_t>(k.link_contact)], q, *J_held);
+          rows_of = k.link_contact;
+        }
+        S rhs = S(0);
+        for (int i = 0; i < c->def->vars.coordinates; ++i) {
+          const S ji = (*J_held)(k.link_row, i);
+          if (c->def->rates_as_speeds) {
+            A(r, i) += ji;
+            continue;
+          }
+          for (const auto& [j, w] : c->kinematics_du[static_cast<std::size_t>(i)]) A(r, j) += ji * w.at(v);
+          rhs += ji * c->kinematics_on_constraint_tape[static_cast<std::size_t>(i)].at(v);
+        }
+        a(r) = -rhs;
+        continue;
+      }
       if (k.body >= 0) {
         point_velocity_row(k, v, r, A, a);
         continue;

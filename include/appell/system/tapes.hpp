@@ -5,6 +5,7 @@
 #include "appell/linalg/scratch.hpp"
 #include "appell/dynamics/speeds.hpp"
 #include "appell/dynamics/virtual_work.hpp"
+#include "appell/scalar/decimal.hpp"
 #include "appell/system/definition.hpp"
 
 namespace appell {
@@ -108,6 +109,7 @@ struct compiled_system {
     std::array<detail::compiled_term<T>, 3> point, direction;
     std::array<detail::compiled_term<T>, 3> rel;  ///< P - G, the terms both share cancelled (detail::offset)
     std::array<detail::compiled_term<T>, 3> support;  ///< the support's velocity at the point (0: a fixed support)
+    int link_contact = -1, link_row = -1;  ///< a link contact's row (system_constraint_definition)
   };
   struct wrench {  ///< on the constraint tape
     int body = -1;
@@ -133,6 +135,14 @@ struct compiled_system {
     bool point_body = false;  ///< a body without orientation (a point mass): a force alone, at its centre
     std::array<std::vector<std::pair<int, detail::compiled_term<T>>>, 3> omega_du;
     std::array<detail::compiled_term<T>, 3> direction;
+    /// A link's contact (system_contact_definition::link): the link's body number, the contact
+    /// frame's origin on the link's axes and its axes (surface: the sole's, turned from the
+    /// link's; point: the fixed axes), the normal (point: fixed axes), the sole's half-lengths.
+    int link = -1;
+    bool surface = false;
+    vec3<T> origin = zero_matrix<vec3<T>>(), normal = zero_matrix<vec3<T>>();
+    mat3<T> sole_axes = mat3<T>::Identity();  ///< surface: the sole's axes on the link's (its columns)
+    T half_x = T(0), half_y = T(0);
   };
   std::vector<contact> contacts;
   /// A link of a tree (system_joint_definition): its joint's constants in T, from the
@@ -369,6 +379,7 @@ struct compiled_system {
       else if (k.body < 0) c.g = detail::compiled_term<T>(constraint_tape, k.g);
       for (const auto& [j, e] : k.du) c.du.emplace_back(j, detail::compiled_term<T>(constraint_tape, e));
       c.body = k.body;
+      c.link_contact = k.link_contact, c.link_row = k.link_row;
       if (k.body >= 0) {
         const system_body_definition& b = d.bodies[static_cast<std::size_t>(k.body)];
         for (std::size_t i = 0; i < 3; ++i) {
@@ -413,6 +424,31 @@ struct compiled_system {
           c.frame.rotations.emplace_back(axis, detail::compiled_differentiated<T>(constraint_tape, angle));
       }
       for (std::size_t i = 0; i < 3; ++i) c.direction[i] = detail::compiled_term<T>(constraint_tape, k.direction[i]);
+      if (k.link >= 0) {
+        c.link = k.link;
+        c.surface = k.surface;
+        for (int i = 0; i < 3; ++i) {
+          c.origin(i) = from_decimal<T>(k.frame_origin[static_cast<std::size_t>(i)]);
+          c.normal(i) = from_decimal<T>(k.frame_normal[static_cast<std::size_t>(i)]);
+        }
+        if (k.surface) {  // the sole's axes: Rz(yaw) Ry(pitch) Rx(roll), URDF's rpy, on the link's axes
+          using std::cos, std::sin;
+          const T r = from_decimal<T>(k.frame_rpy[0]), p = from_decimal<T>(k.frame_rpy[1]), y = from_decimal<T>(k.frame_rpy[2]);
+          mat3<T> Rx = mat3<T>::Identity(), Ry = mat3<T>::Identity(), Rz = mat3<T>::Identity();
+          Rx(1, 1) = cos(r), Rx(1, 2) = -sin(r), Rx(2, 1) = sin(r), Rx(2, 2) = cos(r);
+          Ry(0, 0) = cos(p), Ry(0, 2) = sin(p), Ry(2, 0) = -sin(p), Ry(2, 2) = cos(p);
+          Rz(0, 0) = cos(y), Rz(0, 1) = -sin(y), Rz(1, 0) = sin(y), Rz(1, 1) = cos(y);
+          auto product = [](const mat3<T>& a, const mat3<T>& b) {
+            mat3<T> m;
+            for (int i = 0; i < 3; ++i)
+              for (int j = 0; j < 3; ++j) m(i, j) = T(a(i, 0) * b(0, j) + a(i, 1) * b(1, j) + a(i, 2) * b(2, j));
+            return m;
+          };
+          c.sole_axes = product(Rz, product(Ry, Rx));
+          c.half_x = from_decimal<T>(k.half_lengths[0]);
+          c.half_y = from_decimal<T>(k.half_lengths[1]);
+        }
+      }
       contacts.push_back(std::move(c));
     }
     link_of.assign(d.bodies.size(), -1);
