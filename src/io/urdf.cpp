@@ -501,6 +501,12 @@ const parsed_urdf_file& read_urdf_scene_options(object_reader& scene, std::strin
     auto& into = std::string(section) == "torques" ? o.efforts : o.accelerations;
     for (const auto& m : v.members) {
       joint_of(section, m.key);
+      // A torque may be a function of time: an expression in t (a push, a controller's ramp),
+      // which the system file's reader parses as the joint's effort.
+      if (std::string(section) == "torques" && m.value.type == json_value::kind::string && !is_decimal_literal(m.value.text)) {
+        into[m.key] = m.value.text;
+        continue;
+      }
       into[m.key] = decimal_text(m.value, std::string(section) + "." + m.key).text;
     }
     if (std::string(section) == "accelerations")

@@ -63,6 +63,9 @@ inline bool depends_on_time(const system_definition& d) {
     if (b.has_matrix)
       for (const auto& m : b.matrix)
         if (timed_d(m)) return true;
+    // a link's actuator: a torque or force given as a function of time (a push, a logged
+    // controller's ramp) makes the motion non-autonomous too
+    if (b.is_link && timed(b.joint.effort)) return true;
   }
   for (const auto& c : d.constraints) {
     if (timed_d(c.f) || timed(c.g)) return true;
