@@ -1069,6 +1069,35 @@ BOOST_AUTO_TEST_CASE(a_block_on_its_sole_carries_the_wrench_newton_and_euler_giv
     };
     holds_truth("hinge_ddot", 0, t.theta_ddot);
     for (std::size_t i = 0; i < 3; ++i) holds_truth("sole_moment", i, t.M[i]);
+    // the hinge's wrench (the block on the arm, about the hinge, on the arm's axes): the arm's
+    // momentum, f = m_a (a_A - g), m = c x f + I_yy theta'' e_y, turned by R_y(theta)^T
+    {
+      using floating::cross;
+      const ref_t ma(b.ma), th(theta), thd(theta_dot);
+      const m3 Ry = floating::elementary(1, th);
+      const v3 c = floating::mul(Ry, v3{ref_t(b.cx), 0, ref_t(b.cz)});
+      const v3 alpha{0, t.theta_ddot, 0}, omega{0, thd, 0};
+      const v3 a1 = cross(alpha, c), a2 = cross(omega, cross(omega, c));
+      v3 f;
+      for (int i = 0; i < 3; ++i) f[i] = ma * (a1[i] + a2[i]) - (i == 2 ? ma * ref_t("-9.81") : ref_t(0));
+      v3 m = cross(c, f);
+      m[1] += ref_t(b.ia[1]) * t.theta_ddot;
+      const v3 f_arm = floating::mul(floating::transposed(Ry), f), m_arm = floating::mul(floating::transposed(Ry), m);
+      for (std::size_t i = 0; i < 3; ++i) holds_truth("hinge_force", i, f_arm[i]), holds_truth("hinge_moment", i, m_arm[i]);
+    }
+    // the free base's six joints transmit nothing (the ground acts on the block itself), and
+    // every joint's virtual-work check holds
+    for (const auto& base : floating_base_coordinates())
+      for (const char* part : {"_force", "_moment"})
+        for (std::size_t i = 0; i < 3; ++i) {
+          const auto [lo, hi] = bounds(narrow, base + part, i);
+          BOOST_TEST((lo <= 0 && 0 <= hi), base << part << "[" << i << "] at state " << n << ": [" << lo << ", " << hi << "]");
+        }
+    for (const auto& c : narrow.checks)
+      if (c.name.find("_virtual_work") != std::string::npos) {
+        const auto [lo, hi] = bounds_of(c.values[0]);
+        BOOST_TEST((lo <= 0 && 0 <= hi), c.name << " at state " << n << ": [" << lo << ", " << hi << "]");
+      }
     holds_truth("sole_normal_force", 0, t.F[2]);
     for (std::size_t i = 0; i < 2; ++i) holds_truth("sole_friction_force", i, t.F[i]);
     // the verdict: the wrench cone of the truth, decided here in 400 bits
@@ -1094,7 +1123,7 @@ BOOST_AUTO_TEST_CASE(a_block_on_its_sole_carries_the_wrench_newton_and_euler_giv
         }
     }
   }
-  BOOST_TEST(checked == 30 * 7);
+  BOOST_TEST(checked == 30 * 13);
   BOOST_TEST(holds >= 3);
   BOOST_TEST(fails >= 3);
   BOOST_TEST_MESSAGE("a block on its sole: " << checked << " quantities enclosed; verdicts " << holds << " holds, " << fails
@@ -1280,6 +1309,19 @@ BOOST_AUTO_TEST_CASE(the_readme_humanoid_stands) {
       ++accelerations;
     }
   BOOST_TEST(accelerations == 33);
+  // the joints' wrenches carry the ground's push: the free base's joints nothing, every joint's
+  // virtual-work check 0
+  for (const auto& base : floating_base_coordinates())
+    for (const char* part : {"_force", "_moment"})
+      for (std::size_t i = 0; i < 3; ++i) {
+        const auto [lo, hi] = bounds(e, base + part, i);
+        BOOST_TEST((lo <= 0 && 0 <= hi), base << part << "[" << i << "]: [" << lo << ", " << hi << "]");
+      }
+  for (const auto& c : e.checks)
+    if (c.name.find("_virtual_work") != std::string::npos) {
+      const auto [lo, hi] = bounds_of(c.values[0]);
+      BOOST_TEST((lo <= 0 && 0 <= hi), c.name << ": [" << lo << ", " << hi << "]");
+    }
   BOOST_TEST(e.contacts.size() == 2u);
   for (const auto& c : e.contacts) {
     BOOST_TEST(c.verdict == "holds", c.name);

@@ -69,6 +69,77 @@ void joint_wrenches_from_sums(const compiled_system<T>& c, const std::vector<vec
     w.residual = dot(L.axis, L.type == K::revolute ? w.moment : w.force) - w.effort;
   }
 }
+/// The links' contacts with the ground (system_contact_definition::link) as applied wrenches:
+/// each contact's reactions are its force (and a sole's couple) on its frame's axes at the
+/// frame's origin P; on the link's axes f = F f_frame, about the link's origin P x f + F m_frame
+/// (F: the frame's axes on the link's: the sole's, or the fixed axes turned onto the link's),
+/// subtracted from the subtree sums (inertia minus applied) of the link and of every ancestor,
+/// carried to each one's origin.  Without this the joints' wrenches would be those of feet in the
+/// air.
+template <Scalar T>
+void subtract_contact_wrenches(const compiled_system<T>& c, const vector_t<T>& q, const vector_t<T>& reactions,
+                               std::vector<vec3<T>>& F, std::vector<vec3<T>>& M) {
+  using K = system_joint_definition::kind;
+  using std::cos, std::sin;
+  const system_definition& d = *c.def;
+  auto state_of = [&](const typename compiled_system<T>::link& L) {
+    typename compiled_system<T>::template link_state<T> st;
+    const T qk = L.coordinate >= 0 ? q(L.coordinate) : T(0);
+    if (L.type == K::revolute) st.c = cos(qk), st.s = sin(qk);
+    st.offset = L.origin;
+    if (L.type == K::prismatic) st.offset += compiled_system<T>::times(L.R0, compiled_system<T>::scaled(L.axis, qk));
+    return st;
+  };
+  for (std::size_t k = 0; k < c.contacts.size(); ++k) {
+    const auto& ck = c.contacts[k];
+    if (ck.link < 0) continue;
+    const system_contact_definition& dk = d.contacts[k];
+    vec3<T> ff, mf = zero_matrix<vec3<T>>();
+    for (int i = 0; i < 3; ++i) ff(i) = reactions(dk.constraints[static_cast<std::size_t>(i)]);
+    if (ck.surface)
+      for (int i = 0; i < 3; ++i) mf(i) = reactions(dk.constraints[static_cast<std::size_t>(3 + i)]);
+    // the frame's axes on the link's
+    mat3<T> Fr;
+    if (ck.surface) {
+      Fr = ck.sole_axes;
+    } else {  // the fixed axes on the link's: each fixed axis carried down the path to the link
+      std::vector<int> path;
+      for (int body = ck.link; body >= 0;) {
+        const int l = c.link_of[static_cast<std::size_t>(body)];
+        path.push_back(l);
+        body = c.links[static_cast<std::size_t>(l)].parent;
+      }
+      for (int i = 0; i < 3; ++i) {
+        vec3<T> e = zero_matrix<vec3<T>>();
+        e(i) = T(1);
+        for (auto it = path.rbegin(); it != path.rend(); ++it) {
+          const auto& L = c.links[static_cast<std::size_t>(*it)];
+          e = c.to_link(L, state_of(L), e);
+        }
+        for (int x = 0; x < 3; ++x) Fr(x, i) = e(x);
+      }
+    }
+    vec3<T> f, m;
+    for (int x = 0; x < 3; ++x) {
+      f(x) = Fr(x, 0) * ff(0) + Fr(x, 1) * ff(1) + Fr(x, 2) * ff(2);
+      m(x) = Fr(x, 0) * mf(0) + Fr(x, 1) * mf(1) + Fr(x, 2) * mf(2);
+    }
+    m = vec3<T>(m + cross(ck.origin, f));
+    // up the tree from the link: each ancestor's sums lose the contact's wrench about its origin
+    for (int body = ck.link; body >= 0;) {
+      const auto l = static_cast<std::size_t>(c.link_of[static_cast<std::size_t>(body)]);
+      const auto& L = c.links[l];
+      F[l] -= f;
+      M[l] -= m;
+      if (L.parent < 0) break;
+      const auto st = state_of(L);
+      const vec3<T> fp = c.to_parent(L, st, f);
+      m = vec3<T>(c.to_parent(L, st, m) + cross(st.offset, fp));
+      f = fp;
+      body = L.parent;
+    }
+  }
+}
 }  // namespace detail
 
 /// Every link's joint wrench (in the definition's link order) at (q, u, t) with accelerations
@@ -80,7 +151,8 @@ void joint_wrenches_from_sums(const compiled_system<T>& c, const std::vector<vec
 template <Scalar T>
 void joint_wrenches_by_jacobians_into(const compiled_system<T>& c, const vector_t<T>& q, const vector_t<T>& u,
                                       const T& t, const vector_t<T>& udot, const vector_t<T>* efforts,
-                                      std::vector<joint_wrench_result<T>>& out) {
+                                      std::vector<joint_wrench_result<T>>& out,
+                                      const vector_t<T>* reactions = nullptr) {
   using link = typename compiled_system<T>::link;
   const expression_system<T> sys{&c};
   // working storage borrowed (linalg/scratch.hpp)
@@ -135,6 +207,7 @@ void joint_wrenches_by_jacobians_into(const compiled_system<T>& c, const vector_
     F[p] += fp;
     M[p] += vec3<T>(c.to_parent(L, states[k], M[k]) + cross(states[k].offset, fp));
   }
+  if (reactions) detail::subtract_contact_wrenches(c, q, *reactions, F, M);
   detail::joint_wrenches_from_sums(c, F, M, values, efforts, out);
 }
 
@@ -143,15 +216,16 @@ void joint_wrenches_by_jacobians_into(const compiled_system<T>& c, const vector_
 template <Scalar T>
 void joint_wrenches_into(const compiled_system<T>& c, const vector_t<T>& q, const vector_t<T>& u, const T& t,
                          const vector_t<T>& udot, const vector_t<T>* efforts,
-                         std::vector<joint_wrench_result<T>>& out) {
+                         std::vector<joint_wrench_result<T>>& out, const vector_t<T>* reactions = nullptr) {
   if (!tree_accelerations_apply(c)) {
-    joint_wrenches_by_jacobians_into(c, q, u, t, udot, efforts, out);
+    joint_wrenches_by_jacobians_into(c, q, u, t, udot, efforts, out, reactions);
     return;
   }
   struct site;
   const scratch<std::vector<T>, site> values_held;
   const scratch<std::vector<vec3<T>>, site> F_held, M_held;
   tree_subtree_wrenches_into<T, T>(c, q, u, t, udot, *F_held, *M_held, *values_held);
+  if (reactions) detail::subtract_contact_wrenches(c, q, *reactions, *F_held, *M_held);
   detail::joint_wrenches_from_sums(c, *F_held, *M_held, *values_held, efforts, out);
 }
 template <Scalar T>
