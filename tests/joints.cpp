@@ -554,6 +554,36 @@ BOOST_AUTO_TEST_CASE(urdf_numbers_are_the_regular_expressions_language) {
 // axes) and random states.
 namespace floating {
 
+/// The refusal message of the scene `text` written to `path` and read, or "(accepted)".
+std::string refusal_of(const std::string& path, const std::string& text) {
+  std::ofstream(path) << text;
+  try {
+    (void)read_scene_file(path);
+  } catch (const input_error& e) {
+    return std::string(e.what());
+  }
+  return std::string("(accepted)");
+}
+
+/// A floating base's six joints transmit nothing: each of their wrenches' enclosures holds 0.
+void base_joints_transmit_nothing(const evaluation<interval>& e, const std::string& where) {
+  for (const auto& base : floating_base_coordinates())
+    for (const char* part : {"_force", "_moment"})
+      for (std::size_t i = 0; i < 3; ++i) {
+        const auto [lo, hi] = bounds(e, base + part, i);
+        BOOST_TEST((lo <= 0 && 0 <= hi), base << part << "[" << i << "]" << where << ": [" << lo << ", " << hi << "]");
+      }
+}
+
+/// Every joint's virtual-work check (axis . moment or force - effort) holds 0.
+void virtual_work_checks_hold(const evaluation<interval>& e, const std::string& where) {
+  for (const auto& c : e.checks)
+    if (c.name.find("_virtual_work") != std::string::npos) {
+      const auto [lo, hi] = bounds_of(c.values[0]);
+      BOOST_TEST((lo <= 0 && 0 <= hi), c.name << where << ": [" << lo << ", " << hi << "]");
+    }
+}
+
 using v3 = std::array<ref_t, 3>;
 using m3 = std::array<v3, 3>;  // rows
 
@@ -715,12 +745,7 @@ BOOST_AUTO_TEST_CASE(a_floating_body_moves_as_newton_and_euler_say) {
       ++checked;
     }
     // the six joints of a free base transmit nothing: each wrench's enclosure holds 0
-    for (const auto& c : floating_base_coordinates())
-      for (const char* part : {"_force", "_moment"})
-        for (std::size_t i = 0; i < 3; ++i) {
-          const auto [lo, hi] = bounds(narrow, c + part, i);
-          BOOST_TEST((lo <= 0 && 0 <= hi), c << part << "[" << i << "] at body " << n);
-        }
+    base_joints_transmit_nothing(narrow, " at body " + std::to_string(n));
   }
   std::filesystem::remove(urdf);
   std::filesystem::remove(scene);
@@ -739,15 +764,7 @@ BOOST_AUTO_TEST_CASE(a_floating_base_refuses_its_singular_pitch_and_its_names_ta
   const std::string scene = dir + "/appell_floating_refusals_" + std::to_string(::getpid()) + ".json";
   body b{"2", {"0", "0", "0"}, {"0", "0", "0"}, {"1", "1", "1", "0", "0", "0"}};
   std::ofstream(urdf) << urdf_of(b);
-  auto refusal = [&](const std::string& text) {
-    std::ofstream(scene) << text;
-    try {
-      (void)read_scene_file(scene);
-    } catch (const input_error& e) {
-      return std::string(e.what());
-    }
-    return std::string("(accepted)");
-  };
+  auto refusal = [&](const std::string& text) { return refusal_of(scene, text); };
   base_state s{{"0", "0", "0", "0", "0", "0"}, {"0", "0", "0", "0", "0", "0"}};
   const std::array<std::string, 3> g{"0", "0", "-9.81"};
   BOOST_TEST(refusal(scene_of(urdf, s, g)) == "(accepted)");
@@ -1087,17 +1104,8 @@ BOOST_AUTO_TEST_CASE(a_block_on_its_sole_carries_the_wrench_newton_and_euler_giv
     }
     // the free base's six joints transmit nothing (the ground acts on the block itself), and
     // every joint's virtual-work check holds
-    for (const auto& base : floating_base_coordinates())
-      for (const char* part : {"_force", "_moment"})
-        for (std::size_t i = 0; i < 3; ++i) {
-          const auto [lo, hi] = bounds(narrow, base + part, i);
-          BOOST_TEST((lo <= 0 && 0 <= hi), base << part << "[" << i << "] at state " << n << ": [" << lo << ", " << hi << "]");
-        }
-    for (const auto& c : narrow.checks)
-      if (c.name.find("_virtual_work") != std::string::npos) {
-        const auto [lo, hi] = bounds_of(c.values[0]);
-        BOOST_TEST((lo <= 0 && 0 <= hi), c.name << " at state " << n << ": [" << lo << ", " << hi << "]");
-      }
+    floating::base_joints_transmit_nothing(narrow, " at state " + std::to_string(n));
+    floating::virtual_work_checks_hold(narrow, " at state " + std::to_string(n));
     holds_truth("sole_normal_force", 0, t.F[2]);
     for (std::size_t i = 0; i < 2; ++i) holds_truth("sole_friction_force", i, t.F[i]);
     // the verdict: the wrench cone of the truth, decided here in 400 bits
@@ -1213,13 +1221,7 @@ BOOST_AUTO_TEST_CASE(a_link_contact_refuses_bad_input_naming_the_field) {
     const auto at = text.find(from);
     BOOST_REQUIRE(at != std::string::npos);
     text.replace(at, from.size(), to);
-    std::ofstream(scene) << text;
-    try {
-      (void)read_scene_file(scene);
-    } catch (const input_error& e) {
-      return std::string(e.what());
-    }
-    return std::string("(accepted)");
+    return floating::refusal_of(scene, text);
   };
   BOOST_TEST(refusal("\"link\": \"block\"", "\"link\": \"block\"") == "(accepted)");
   BOOST_TEST(refusal("\"link\": \"block\"", "\"link\": \"foot\"").find("contacts.sole.link: no body named 'foot'") != std::string::npos,
@@ -1235,13 +1237,7 @@ BOOST_AUTO_TEST_CASE(a_link_contact_refuses_bad_input_naming_the_field) {
   std::string two = good.substr(0, from) +
                     "\"contacts\": {\"toe\": {\"link\": \"block\", \"point\": [\"0.2\", \"0\", \"0\"]}, "
                     "\"heel\": {\"link\": \"block\", \"point\": [\"-0.2\", \"0\", \"0\"]}}}";
-  std::ofstream(scene) << two;
-  std::string twice = "(accepted)";
-  try {
-    (void)read_scene_file(scene);
-  } catch (const input_error& e) {
-    twice = e.what();
-  }
+  const std::string twice = floating::refusal_of(scene, two);
   BOOST_TEST(twice.find("contacts.heel: its constraint heel_") != std::string::npos, twice);
   BOOST_TEST(twice.find("depends on the constraints before it at the state (with the contacts toe") != std::string::npos, twice);
   std::filesystem::remove(urdf);
@@ -1311,17 +1307,8 @@ BOOST_AUTO_TEST_CASE(the_readme_humanoid_stands) {
   BOOST_TEST(accelerations == 33);
   // the joints' wrenches carry the ground's push: the free base's joints nothing, every joint's
   // virtual-work check 0
-  for (const auto& base : floating_base_coordinates())
-    for (const char* part : {"_force", "_moment"})
-      for (std::size_t i = 0; i < 3; ++i) {
-        const auto [lo, hi] = bounds(e, base + part, i);
-        BOOST_TEST((lo <= 0 && 0 <= hi), base << part << "[" << i << "]: [" << lo << ", " << hi << "]");
-      }
-  for (const auto& c : e.checks)
-    if (c.name.find("_virtual_work") != std::string::npos) {
-      const auto [lo, hi] = bounds_of(c.values[0]);
-      BOOST_TEST((lo <= 0 && 0 <= hi), c.name << ": [" << lo << ", " << hi << "]");
-    }
+  floating::base_joints_transmit_nothing(e, "");
+  floating::virtual_work_checks_hold(e, "");
   BOOST_TEST(e.contacts.size() == 2u);
   for (const auto& c : e.contacts) {
     BOOST_TEST(c.verdict == "holds", c.name);
