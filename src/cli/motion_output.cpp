@@ -40,6 +40,7 @@ plot_outcome plot_contacts(const std::filesystem::path& dir, const std::string& 
   std::ostringstream dat;
   std::string force_plot, margin_plot;
   bool any_mu = false;
+  double t_last = 0;  // the plot's right end: the last step's end
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     const auto& c = contacts[k];
     const double mu = c.mu_text.empty() ? 0.0 : from_decimal<double>(c.mu_text);
@@ -51,6 +52,7 @@ plot_outcome plot_contacts(const std::filesystem::path& dir, const std::string& 
       std::stringstream ls(line);
       for (std::string x; std::getline(ls, x, ',');) f.push_back(x);
       if (f.size() < 10 || f[0] != c.name) continue;
+      t_last = std::max(t_last, std::stod(f[2]));
       const double t = (std::stod(f[1]) + std::stod(f[2])) / 2;
       dat << t << " " << f[3] << " " << f[4];
       if (!f[7].empty() && !f[8].empty()) {
@@ -77,8 +79,11 @@ plot_outcome plot_contacts(const std::filesystem::path& dir, const std::string& 
       const std::string line = "set arrow from " + std::to_string(t) + ", graph 0 to " + std::to_string(t) +
                                ", graph 1 nohead lc rgb 'red' dt 2\n";
       const std::string text = "set label '" + c.name + " fails by t = " + *c.fails_by + "' at " + std::to_string(t);
-      marks += line + text + ", graph 0.92 right offset -0.5,0 tc rgb 'red'\n";
-      marks_low += line + text + ", graph 0.08 right offset -0.5,0 tc rgb 'red'\n";
+      // written on the side of the line where the plot has room: before it in the right half,
+      // after it in the left half (an early failure's label ran off the left edge)
+      const std::string side = t > 0.5 * t_last ? " right offset -0.5,0" : " left offset 0.5,0";
+      marks += line + text + ", graph 0.92" + side + " tc rgb 'red'\n";
+      marks_low += line + text + ", graph 0.08" + side + " tc rgb 'red'\n";
     }
   return render_png(dir / "contacts.png",
                     datablock("contacts", dat.str()) + "set multiplot layout 2,1 title " +
