@@ -12,11 +12,19 @@
 //    radii 1e-9 to 1e-5): every value at the boxes' corners and random points inside contained;
 //  * on Taylor series (jets: the motion's right-hand side, models/system_motion.hpp, runs the
 //    recursion on jets and slopes), every coefficient of M, b, Q by both paths agrees;
-//  * which systems take the recursion: a tree of links, not a system with constraints or
-//    quasi-velocities.
+//  * constrained trees (random trees with nonholonomic constraints in q, u and t; the block and
+//    arm on its sole and on a point; Atlas on both soles): Cotton's method on the recursion
+//    (system/tree_constraints.hpp) against Cotton's method on the generic path: u' and the
+//    reactions agree in double, the interval and MPFI recursions enclose the generic path's
+//    512-bit values, and their checks (Lagrange minus Cotton, eq. (4)) hold 0;
+//  * which systems take the recursion: a tree of links, not a system with quasi-velocities.
 #define BOOST_TEST_MODULE tree_recursions
 #include <boost/test/unit_test.hpp>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <random>
 #include <sstream>
@@ -44,7 +52,7 @@ std::string num(double x) {
 std::string list3(double a, double b, double c) { return "[\"" + num(a) + "\", \"" + num(b) + "\", \"" + num(c) + "\"]"; }
 
 /// A random tree of n links as a system file (SCENES.md, "links of a tree"), its state random too.
-std::string random_tree(std::mt19937_64& rng, int n) {
+std::string random_tree(std::mt19937_64& rng, int n, int constraints = 0) {
   std::uniform_real_distribution<double> u01(0, 1), sym(-1, 1);
   std::vector<std::string> coordinates;
   std::string bodies, state;
@@ -108,8 +116,33 @@ std::string random_tree(std::mt19937_64& rng, int n) {
   std::string coords;
   for (const auto& q : coordinates) coords += std::string(coords.empty() ? "" : ", ") + "\"" + q + "\"";
   const double gx = sym(rng), gy = sym(rng), gz = -9.81 + sym(rng);
+  // constraints: nonholonomic, affine in the rates, in q and t; each solves the rate of a
+  // coordinate of its own (solve_speeds), so that the file's state satisfies them
+  std::string more;
+  constraints = std::min(constraints, static_cast<int>(coordinates.size()) - 1);
+  if (constraints > 0) {
+    std::string cs, solved;
+    for (int c = 0; c < constraints; ++c) {
+      const std::string& own = coordinates[static_cast<std::size_t>(c)];
+      std::string g = own + "_dot";
+      for (std::size_t j = static_cast<std::size_t>(constraints); j < coordinates.size(); ++j) {
+        const std::string& q = coordinates[j];
+        const std::string& other = coordinates[(j + static_cast<std::size_t>(c)) % coordinates.size()];
+        g += " + " + num(sym(rng)) + "*cos(" + other + ")*" + q + "_dot";
+      }
+      g += " - " + num(sym(rng)) + "*sin(" + own + " + t)";
+      cs += std::string(c ? ", " : "") + "\"c" + std::to_string(c) + "\": {\"nonholonomic\": \"" + g + "\"}";
+      solved += std::string(c ? ", " : "") + "\"" + own + "_dot\"";
+      const std::string drop = "\"" + own + "_dot\": \"";  // its rate is solved, not given
+      const auto at = state.find(drop);
+      const auto end = state.find('"', at + drop.size());
+      state.erase(at == 0 ? at : at - 2, end + 1 - (at == 0 ? at : at - 2));
+      if (at == 0 && state.rfind(", ", 0) == 0) state.erase(0, 2);
+    }
+    more = ", \"constraints\": {" + cs + "}, \"solve_speeds\": [" + solved + "]";
+  }
   return "{\"model\": \"system\", \"coordinates\": [" + coords + "], \"gravity\": " + list3(gx, gy, gz) +
-         ", \"bodies\": {" + bodies + "}, \"state\": {" + state + "}}";
+         ", \"bodies\": {" + bodies + "}" + more + ", \"state\": {" + state + "}}";
 }
 
 /// What both paths give at a state: M, b, Q, u' = M^-1 (Q - b), and every joint's wrench.
@@ -228,7 +261,155 @@ double check_state(const system_input& in, const std::string& what, const vector
   return widest;
 }
 
+/// A constrained tree at (q, u_F): u' and the reactions by Cotton's method on the recursion
+/// (system/tree_constraints.hpp) or by the generic path's (cotton_reactions on the Jacobians'
+/// equations), the free columns given (the same for every scalar), the bound speeds solved.
+/// On the recursion also the checks eval prints: Lagrange's multipliers minus Cotton's
+/// reactions and eq. (4)'s residual, named "check ...".
+template <class T>
+std::vector<std::pair<std::string, T>> constrained_numbers(const system_input& in, const vector_t<double>& q,
+                                                           const vector_t<double>& u, const std::vector<int>& free,
+                                                           const std::vector<int>& bound, bool tree) {
+  const evaluation_scope<T> scope;
+  auto m = system_model::prepare<T>(in);
+  const int n = static_cast<int>(u.size()), k = static_cast<int>(free.size());
+  const vector_t<T> qT = q.cast<T>();
+  vector_t<T> v = vector_t<T>::Zero(n), full;
+  for (int i = 0; i < k; ++i) v(i) = T(u(free[static_cast<std::size_t>(i)]));
+  const expression_constraints<T> con{&m.sys};
+  const adapted_change<expression_constraints<T>> change{con, free, bound};
+  change.template apply_into<T>(qT, v, m.t, full);
+  std::vector<std::pair<std::string, T>> out;
+  vector_t<T> udot, reactions;
+  if (tree) {
+    tree_cotton_result<T> tc;
+    tree_cotton_into<T, T>(m.sys, free, bound, qT, full, m.t, {true, true}, udot, tc);
+    reactions = tc.reactions;
+    constrained_motion<T> lagrange;
+    lagrange_multipliers_with_into(tc.equations, expression_system<T>{&m.sys}, con, qT, full, m.t, lagrange);
+    for (Eigen::Index i = 0; i < reactions.size(); ++i)
+      out.emplace_back("check lagrange - cotton " + std::to_string(i), T(lagrange.reactions(i) - reactions(i)));
+    out.emplace_back("check eq. (4)", virtual_work_residual(expression_system<T>{&m.sys}, tc.equations, qT, full, m.t, udot,
+                                                            tc.unit_displacement));
+  } else {
+    const constrained_motion<T> c = cotton_reactions(expression_system<T>{&m.sys}, change, qT, full, m.t);
+    udot = c.accelerations;
+    reactions = c.reactions;
+  }
+  for (int i = 0; i < n; ++i) out.emplace_back("udot(" + std::to_string(i) + ")", udot(i));
+  for (Eigen::Index i = 0; i < reactions.size(); ++i) out.emplace_back("reaction(" + std::to_string(i) + ")", reactions(i));
+  return out;
+}
+
+/// The checks of one constrained tree at one state (the free columns chosen in double, as
+/// adapt_speeds chooses them): the two paths agree in double; the interval and MPFI (256 bits)
+/// recursions enclose the generic path's 512-bit values, and their checks hold 0.  Returns the
+/// widest relative width in interval.
+double check_constrained_state(const system_input& in, const std::string& what, const vector_t<double>& q,
+                               const vector_t<double>& u) {
+  std::vector<int> free, bound;
+  {
+    const auto m = system_model::prepare<double>(in);
+    BOOST_REQUIRE(tree_constraints_apply(m.sys));
+    const expression_constraints<double> con{&m.sys};
+    const auto change = adapt_speeds<double>(con, q, m.t, static_cast<int>(u.size()));
+    free = change.free_columns;
+    bound = change.bound_columns;
+  }
+  const auto td = constrained_numbers<double>(in, q, u, free, bound, true);
+  const auto gd = constrained_numbers<double>(in, q, u, free, bound, false);
+  const std::size_t checks = td.size() - gd.size();
+  double scale = 1;
+  for (const auto& [name, x] : gd) scale = std::max(scale, std::abs(x));
+  for (std::size_t i = 0; i < gd.size(); ++i)
+    BOOST_TEST(std::abs(td[checks + i].second - gd[i].second) <= 1e-10 * scale,
+               what << ": " << gd[i].first << " tree " << td[checks + i].second << ", generic " << gd[i].second);
+  const auto truth = [&] {
+    const mp_precision_scope high(512);
+    return constrained_numbers<mpfr>(in, q, u, free, bound, false);
+  }();
+  const mp_precision_scope precision(256);
+  const auto ti = constrained_numbers<interval>(in, q, u, free, bound, true);
+  const auto tm = constrained_numbers<mpfi>(in, q, u, free, bound, true);
+  if (std::getenv("TREE_WIDTHS")) {  // the generic path's interval widths beside the recursion's
+    const auto gi = constrained_numbers<interval>(in, q, u, free, bound, false);
+    for (std::size_t i = 0; i < gi.size(); ++i) {
+      const auto [glo, ghi] = bounds_of(gi[i].second);
+      const auto [lo, hi] = bounds_of(ti[checks + i].second);
+      BOOST_TEST_MESSAGE(what << " " << gi[i].first << " = " << double(glo) << " width: recursion " << double(hi - lo)
+                              << ", Jacobians " << double(ghi - glo));
+    }
+  }
+  double widest = 0;
+  auto hold_zero = [&](const auto& x, const char* kind) {
+    for (std::size_t i = 0; i < checks; ++i) {
+      const auto [lo, hi] = bounds_of(x[i].second);
+      BOOST_TEST((lo <= 0 && 0 <= hi), what << ": " << x[i].first << " (" << kind << ") [" << lo << ", " << hi << "] does not hold 0");
+    }
+  };
+  hold_zero(ti, "interval");
+  hold_zero(tm, "mpfi");
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    const ref_t x = bounds_of(truth[i].second).first;
+    const auto [lo, hi] = bounds_of(ti[checks + i].second);
+    BOOST_TEST((lo <= x && x <= hi), what << ": " << truth[i].first << " = " << x << " outside [" << lo << ", " << hi << "]");
+    widest = std::max(widest, double(hi - lo) / std::max(1.0, std::abs(double(x))));
+    const auto [mlo, mhi] = bounds_of(tm[checks + i].second);
+    BOOST_TEST((mlo <= x && x <= mhi), what << ": " << truth[i].first << " (mpfi) " << std::setprecision(80) << x << " outside [" << mlo << ", " << mhi << "]");
+    BOOST_TEST(double(mhi - mlo) <= 1e-50 * std::max(1.0, std::abs(double(x))), what << ": " << truth[i].first << " (mpfi) wide");
+  }
+  return widest;
+}
+
 }  // namespace
+
+BOOST_AUTO_TEST_CASE(constrained_trees_by_cotton_on_the_recursion_agree_with_the_generic_path) {
+  // random trees with one to three nonholonomic constraints in q, u and t
+  std::mt19937_64 rng(20261205);
+  std::uniform_real_distribution<double> angle(-3, 3), rate(-2, 2);
+  int trees = 0;
+  for (int t = 0; t < 24; ++t) {
+    const int n = 4 + t % 6, s = 1 + t % 3;
+    const scene_input scene = read_scene(parse_json(random_tree(rng, n, s)));
+    const auto& in = scene.as<system_input>();
+    const auto m = system_model::prepare<double>(in);
+    if (m.q.size() < s + 1) continue;  // fixed links drawn: too few coordinates
+    vector_t<double> q(m.q.size()), u(m.u.size());
+    for (Eigen::Index i = 0; i < q.size(); ++i) q(i) = angle(rng), u(i) = rate(rng);
+    const double w = check_constrained_state(in, "tree " + std::to_string(t) + " (" + std::to_string(s) + " constraints)", q, u);
+    BOOST_TEST_MESSAGE("constrained tree " << t << ": " << q.size() << " coordinates, " << s << " constraints, widest relative width in interval " << w);
+    ++trees;
+  }
+  BOOST_TEST(trees >= 15);
+  // robots held by the ground: a block and arm on its sole (6 rows) and on a point of its corner
+  // (3 rows), Atlas on both soles (12 rows of 36 speeds)
+  const std::string dir = std::filesystem::temp_directory_path().string();
+  const std::string point_scene = dir + "/appell_point_contact_" + std::to_string(::getpid()) + ".json";
+  std::ofstream(point_scene)
+      << "{\"model\": \"urdf\", \"file\": \"" << APPELL_SOURCE_DIR << "/data/urdf/block_arm.urdf\", \"base\": \"floating\","
+         " \"gravity\": [\"0\", \"0\", \"-9.81\"], \"torques\": {\"hinge\": \"3 - 2*t\"}, \"state\": {"
+         "\"base_x\": {\"q\": \"0\", \"q_dot\": \"0\"}, \"base_y\": {\"q\": \"0\", \"q_dot\": \"0\"}, \"base_z\": {\"q\": \"0\", \"q_dot\": \"0\"},"
+         " \"base_yaw\": {\"q\": \"0\", \"q_dot\": \"0\"}, \"base_pitch\": {\"q\": \"0\", \"q_dot\": \"0\"}, \"base_roll\": {\"q\": \"0\", \"q_dot\": \"0\"},"
+         " \"hinge\": {\"q\": \"0\", \"q_dot\": \"0\"}},"
+         " \"contacts\": {\"corner\": {\"link\": \"block\", \"type\": \"point\", \"point\": [\"0.1\", \"-0.08\", \"0\"], \"mu\": \"0.5\"}}}";
+  for (const std::string& file : {APPELL_SOURCE_DIR + "/data/scenes/urdf_block_arm_push.json", point_scene,
+                                  APPELL_SOURCE_DIR + "/data/scenes/urdf_atlas_standing.json"}) {
+    const scene_input scene = read_scene_file(file);
+    const auto& in = scene.as<system_input>();
+    const auto m = system_model::prepare<double>(in);
+    const bool atlas = file.find("atlas") != std::string::npos;
+    const int states = atlas ? 3 : 8;
+    double widest = 0;
+    for (int k = 0; k < states; ++k) {
+      // the base within half a radian of upright (its pitch far from the refused singularity)
+      vector_t<double> q(m.q.size()), u(m.u.size());
+      for (Eigen::Index i = 0; i < q.size(); ++i) q(i) = (i < 6 ? 0.5 : 1.0) * angle(rng) / 3, u(i) = rate(rng);
+      widest = std::max(widest, check_constrained_state(in, file + " state " + std::to_string(k), q, u));
+    }
+    BOOST_TEST_MESSAGE(file << ": " << m.sys.constraints.size() << " constraints, widest relative width in interval " << widest);
+  }
+  std::filesystem::remove(point_scene);
+}
 
 BOOST_AUTO_TEST_CASE(random_trees_by_recursion_agree_with_the_generic_path) {
   std::mt19937_64 rng(20261204);
@@ -460,6 +641,8 @@ BOOST_AUTO_TEST_CASE(the_recursion_serves_trees_of_links_only) {
       " \"state\": {\"a\": \"0.2\", \"b\": \"0.2\", \"a_dot\": \"0.3\", \"b_dot\": \"0.3\"}}";
   const scene_input c = read_scene(parse_json(constrained));
   BOOST_TEST(!tree_recursions_apply(system_model::prepare<double>(c.as<system_input>()).sys));
+  // ... Cotton's method on the recursion does (system/tree_constraints.hpp)
+  BOOST_TEST(tree_constraints_apply(system_model::prepare<double>(c.as<system_input>()).sys));
   // a system without links
   const scene_input e = read_scene_file(APPELL_SOURCE_DIR + "/data/scenes/system_euler_body.json");
   BOOST_TEST(!tree_recursions_apply(system_model::prepare<double>(e.as<system_input>()).sys));

@@ -129,7 +129,7 @@ struct system_problem {
   /// beyond); a tree of links (tree_recursions_apply) takes the recursion, in any size.
   static constexpr int generic_capacity = 12;
   static constexpr bool generic_path_fits = Dim >= 0 && Dim <= generic_capacity;
-  bool recursion() const { return tree_recursions_apply(model->sys); }
+  bool recursion() const { return tree_links_apply(model->sys); }
   /// The order of the slopes enclose takes at series order p: 6 for a tree of links (the terms
   /// past it over the step's thin box are far below the state's width: the robots' enclosures
   /// are as wide with 6 as with 12, at half the time), enclose's default otherwise.
@@ -184,7 +184,14 @@ struct system_problem {
     const int nq = coordinates(), k = static_cast<int>(free_columns.size()), s = constraints();
     vector_t<S> d = vector_t<S>::Zero(x.size());
     vector_t<S> qd, acc;
-    if (s == 0) {
+    if (s > 0 && tree_constraints_apply(model->sys)) {  // Cotton's method on the tree (system/tree_constraints.hpp)
+      const vector_t<S> u = all_speeds(a);
+      qd = sys.template qdot<S>(a.q, u, a.t);
+      vector_t<S> udot;
+      tree_cotton_result<S> tc;
+      tree_cotton_into<T, S>(model->sys, free_columns, bound_columns, a.q, u, a.t, {}, udot, tc);
+      acc = std::move(tc.free_accelerations);
+    } else if (s == 0) {
       qd = sys.template qdot<S>(a.q, a.v_a, a.t);
       if (tree_recursions_apply(model->sys)) {  // by the recursions along the tree (system/tree.hpp)
         appell_equations<S> e;
@@ -221,6 +228,10 @@ struct system_problem {
     vector_t<S> acc, reactions;
     if (constraints() == 0) {
       acc = system_equations<T, S>(model->sys, a.q, u, a.t).accelerations();
+    } else if (tree_constraints_apply(model->sys)) {  // Cotton's method on the tree (system/tree_constraints.hpp)
+      tree_cotton_result<S> tc;
+      tree_cotton_into<T, S>(model->sys, free_columns, bound_columns, a.q, u, a.t, {true, false}, acc, tc);
+      reactions = std::move(tc.reactions);
     } else {
       const constrained_motion<S> m = cotton_reactions(sys, change(), a.q, u, a.t);
       acc = m.accelerations;

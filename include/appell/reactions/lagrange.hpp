@@ -13,14 +13,14 @@
 
 namespace appell {
 
+/// The saddle-point system on the equations e = (M, b, Q) of sys at (q, u, t), formed by the
+/// caller (a tree's recursions: system/tree_constraints.hpp).
 template <Scalar T, class Sys, class Constraint>
-void lagrange_multipliers_into(const Sys& sys, const Constraint& con, const vector_t<T>& q, const vector_t<T>& u,
-                               const T& t, constrained_motion<T>& out) {
+void lagrange_multipliers_with_into(const appell_equations<T>& e, const Sys& sys, const Constraint& con,
+                                    const vector_t<T>& q, const vector_t<T>& u, const T& t,
+                                    constrained_motion<T>& out) {
   const int n = sys.speeds(), s = con.count();
   struct site;  // this function's pools (linalg/scratch.hpp: an Eigen object keeps one size)
-  const scratch<appell_equations<T>, site> e_held;
-  const appell_equations<T>& e = *e_held;
-  gibbs_appell_into(sys, q, u, t, *e_held);
   // working storage borrowed (linalg/scratch.hpp)
   const scratch<matrix_t<T>, site> A_held, K_held;
   const scratch<vector_t<T>, site> a_held, h_held, rhs_held;
@@ -64,6 +64,15 @@ void lagrange_multipliers_into(const Sys& sys, const Constraint& con, const vect
   solve_into<site>(K, rhs, *x_held);
   out.accelerations = x.head(n);  // into out's storage
   out.reactions = x.tail(s);
+}
+/// The same with the equations by the generic path (gibbs_appell).
+template <Scalar T, class Sys, class Constraint>
+void lagrange_multipliers_into(const Sys& sys, const Constraint& con, const vector_t<T>& q, const vector_t<T>& u,
+                               const T& t, constrained_motion<T>& out) {
+  struct site;
+  const scratch<appell_equations<T>, site> e_held;
+  gibbs_appell_into(sys, q, u, t, *e_held);
+  lagrange_multipliers_with_into(*e_held, sys, con, q, u, t, out);
 }
 template <Scalar T, class Sys, class Constraint>
 constrained_motion<T> lagrange_multipliers(const Sys& sys, const Constraint& con, const vector_t<T>& q,

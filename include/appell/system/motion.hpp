@@ -5,6 +5,7 @@
 
 #include "appell/system/contacts.hpp"
 #include "appell/system/tree.hpp"
+#include "appell/system/tree_constraints.hpp"
 
 namespace appell {
 
@@ -61,6 +62,32 @@ void system_motion_into(const compiled_system<T>& c, const vector_t<T>& q, const
   const scratch<adapted_change<expression_constraints<T>>, site> change_held;
   adapt_speeds_into<T>(con, q, t, n, *change_held);
   const adapted_change<expression_constraints<T>>& change = *change_held;
+  if (tree_constraints_apply(c)) {
+    // A tree of links: Cotton's method on the recursions (system/tree_constraints.hpp), at the
+    // speeds the constraints give to u's free components (as the generic path below takes them).
+    const scratch<vector_t<T>, site> va_held, full_held;
+    const scratch<tree_cotton_result<T>, site> tc_held;
+    vector_t<T>&va = *va_held, &full = *full_held;
+    tree_cotton_result<T>& tc = *tc_held;
+    va.setZero(n);
+    for (std::size_t i = 0; i < change.free_columns.size(); ++i)
+      va(static_cast<Eigen::Index>(i)) = u(change.free_columns[i]);
+    change.template apply_into<T>(q, va, t, full);
+    tree_cotton_into<T, T>(c, change.free_columns, change.bound_columns, q, full, t, {true, checks}, r.accelerations,
+                           tc);
+    r.reactions = tc.reactions;
+    if (!checks) {
+      r.multipliers.resize(0);
+      return;
+    }
+    // Lagrange's saddle-point system on the same equations (the constraints' two treatments
+    // compared), and eq. (4) for the adapted speeds' unit displacement, written in u.
+    const scratch<constrained_motion<T>, site> lagrange;
+    lagrange_multipliers_with_into(tc.equations, sys, con, q, full, t, *lagrange);
+    r.multipliers = lagrange->reactions;
+    r.virtual_work_residual = virtual_work_residual(sys, tc.equations, q, full, t, r.accelerations, tc.unit_displacement);
+    return;
+  }
   const scratch<appell_equations<T>, site> adapted_eq;
   const scratch<constrained_motion<T>, site> m_held;
   const constrained_motion<T>& m = *m_held;

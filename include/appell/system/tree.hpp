@@ -40,16 +40,22 @@
 
 namespace appell {
 
-/// Whether a system's Appell equations come from the tree's recursions: every body a link, the
-/// speeds the coordinates' rates, every coordinate a joint's, no constraint.
+/// Whether a system's unconstrained Appell equations come from the tree's recursions: every body
+/// a link, the speeds the coordinates' rates, every coordinate a joint's (constraints or not:
+/// with them, Cotton's method on the tree, system/tree_constraints.hpp).
 template <Scalar T>
-bool tree_recursions_apply(const compiled_system<T>& c) {
+bool tree_links_apply(const compiled_system<T>& c) {
   const system_definition& d = *c.def;
-  if (!d.rates_as_speeds || !d.constraints.empty() || c.links.empty() || c.links.size() != d.bodies.size())
-    return false;
+  if (!d.rates_as_speeds || c.links.empty() || c.links.size() != d.bodies.size()) return false;
   int moving = 0;
   for (const auto& L : c.links) moving += L.coordinate >= 0 ? 1 : 0;
   return moving == d.vars.coordinates && d.vars.coordinates == d.vars.speeds;
+}
+/// Whether a system's Appell equations come from the tree's recursions: a tree of links
+/// (tree_links_apply) without constraints.
+template <Scalar T>
+bool tree_recursions_apply(const compiled_system<T>& c) {
+  return c.def->constraints.empty() && tree_links_apply(c);
 }
 
 /// Whether the links' accelerations can come from the recursion (the joints' wrenches): the
