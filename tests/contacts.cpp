@@ -1026,3 +1026,43 @@ BOOST_AUTO_TEST_CASE(a_bead_on_a_dome_carries_a_contact_at_its_centre) {
   BOOST_TEST(bare.find("shell is a holonomic constraint, not a point_velocity one: give the contact's \"body\"") != std::string::npos, bare);
   BOOST_TEST(bare.find("point of shell") == std::string::npos, bare);
 }
+
+BOOST_AUTO_TEST_CASE(a_sole_is_judged_with_the_mu_of_the_run) {
+  // A sole's wrench cone depends on mu: `enclose --mu` and `validity --vary mu` must judge it
+  // with their own mu, not with the scene's (a defect until 2026-12-05: the sole's margins came
+  // from the results, formed with the scene's 0.6, so --mu 0.01 "held").  The block and arm
+  // pushed (urdf_block_arm_push.json) needs, up to T = 0.2, the friction ratio |F_t| / N up to
+  // mu_req (enclose's required mu, about 0.135; the arm swings in x-z, so F_y is 0 and the
+  // pyramid's friction margins mu N -+ F_x ask the same): below it a friction margin is
+  // negative at some step, so no piece below mu_req can hold.
+  const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/urdf_block_arm_push.json";
+  truth_t mu_req(0);  // the largest lower bound of a step's ratio: at most the true largest ratio
+  auto judged = [&](const std::string& args) {
+    kept_rows rows;
+    const motion::settings s = settings_of(args);
+    const motion::enclose_report r = motion::enclose(read_scene_file(scene), s, rows);
+    for (const auto& row : rows.rows_of["contacts"])  // name, t0, t1, N lo, hi, |F_t| lo, hi, ratio lo, hi, verdict
+      if (!row[7].empty()) mu_req = std::max(mu_req, truth_t(row[7]));
+    return motion::summary(r, s, "scene")["contacts"]["sole"];
+  };
+  const nlohmann::json own = judged("--t-end 0.2");
+  BOOST_TEST_REQUIRE(own["verdict"] == "holds", own.dump());
+  BOOST_TEST_REQUIRE((truth_t("0.1") < mu_req && mu_req < truth_t("0.2")), mu_req);
+  const nlohmann::json low = judged("--t-end 0.2 --mu 0.01"), high = judged("--t-end 0.2 --mu 0.5");
+  BOOST_TEST(low["verdict"] == "fails", low.dump());
+  BOOST_TEST(low["mu"] == "0.01");
+  BOOST_TEST(high["verdict"] == "holds", high.dump());
+  const validity_result v = validity_run(scene, "--vary mu=0.01:0.5 --t-end 0.2 --resolution 0.01");
+  BOOST_TEST_REQUIRE(v.status == 0, v.out);
+  int holds = 0, fails = 0;
+  truth_t least_holding("1e9");
+  for (const motion::piece_report& p : v.report.run.done) {
+    if (p.verdict == "holds") ++holds, least_holding = std::min(least_holding, truth_t(p.lo));
+    if (p.verdict == "fails") ++fails;
+  }
+  BOOST_TEST(holds >= 1);
+  BOOST_TEST(fails >= 1);
+  // every holding piece lies above the ratio the motion certainly reaches
+  BOOST_TEST(least_holding >= mu_req, "a piece from " << least_holding << " holds below " << mu_req);
+  BOOST_TEST(least_holding <= truth_t("0.2"), "nothing above 0.2 holds: " << v.out);
+}

@@ -29,7 +29,9 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -365,6 +367,15 @@ struct system_problem {
     std::vector<std::pair<std::string, std::string>> out;
     for (const auto& k : model->in->def->contacts) out.emplace_back(k.name, k.mu);
     return out;
+  }
+  /// A sole's half-lengths (a `surface` contact of a link), none for another contact: the
+  /// judgement of a motion with a friction coefficient of its own (--mu, validity --vary mu)
+  /// forms the sole's margins again from its force and couple (motion/contact_track.hpp).
+  std::optional<std::array<T, 2>> sole_half_lengths(const std::string& name) const {
+    const auto& cs = model->in->def->contacts;
+    for (std::size_t k = 0; k < cs.size(); ++k)
+      if (cs[k].name == name && cs[k].surface) return std::array<T, 2>{model->sys.contacts[k].half_x, model->sys.contacts[k].half_y};
+    return std::nullopt;
   }
 
   /// The energy (when conserved) and each holonomic constraint's residual f(q, t) (0 in truth).

@@ -12,6 +12,7 @@
 //   undecided  from lo on no step decides and none fails.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
@@ -24,6 +25,7 @@
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/taylor.hpp"
 #include "appell/reactions/contact.hpp"
+#include "appell/reactions/wrench_cone.hpp"
 #include "appell/scalar/format.hpp"
 
 namespace appell::motion::detail {
@@ -37,6 +39,9 @@ struct contact_values {
   /// A sole's margins (`<name>_margins`: its contact wrench cone, SCENES.md), judged with the
   /// normal force in place of the friction on the resultant; empty for a point contact.
   std::vector<I> margins = {};
+  /// A sole's force (friction x, y and normal, on the sole's axes) and couple (`<name>_moment`):
+  /// its margins formed again for a friction coefficient other than the scene's.
+  vec3<I> force = zero_matrix<vec3<I>>(), moment = zero_matrix<vec3<I>>();
 };
 
 template <Scalar I>
@@ -51,8 +56,11 @@ contact_values<I> find_contact(const std::vector<ode::named_values<I>>& results,
   using std::sqrt;
   I s = sqr(f->values[0]) + sqr(f->values[1]) + sqr(f->values[2]);
   contact_values<I> out{n->values[0], I(sqrt(s)), true};
-  for (const auto& r : results)
+  for (const auto& r : results) {
     if (r.name == name + "_margins") out.margins = r.values;
+    if (r.name == name + "_moment" && r.values.size() == 3) out.moment = vec3<I>(r.values[0], r.values[1], r.values[2]);
+  }
+  out.force = vec3<I>(f->values[0], f->values[1], n->values[0]);
   return out;
 }
 
@@ -67,6 +75,10 @@ template <Scalar I>
 struct contact_track {
   std::string name, mu_text;
   std::optional<I> mu;
+  /// A sole's half-lengths, set where mu is not the scene's own (--mu, validity --vary mu): its
+  /// margins are then formed here with mu from its force and couple, not read from the results
+  /// (which are formed with the scene's mu).
+  std::optional<std::array<I, 2>> sole_with_own_mu;
   /// Each step: its times, the state at its start, and its verdicts over the step and at its end.
   struct record {
     I t0, t1;
@@ -92,8 +104,20 @@ struct contact_track {
   contact_verdict verdict_of(const contact_values<I>& v) const {
     if (!v.known) return contact_verdict::undecided;
     if (!v.margins.empty()) {  // a sole: its normal force and every margin of its wrench cone
+      std::vector<I> own;
+      if (sole_with_own_mu) {  // the cone of this judgement's mu (reactions/wrench_cone.hpp)
+        const auto& [X, Y] = *sole_with_own_mu;
+        const wrench_cone_margins<I> w = sole_wrench_margins(v.force, v.moment, X, Y, mu ? *mu : I(0));
+        if (mu) {
+          const std::array<I, 16> all = all_margins(w);
+          own.assign(all.begin(), all.end());
+        } else {
+          own.assign(w.pressure.begin(), w.pressure.end());
+        }
+      }
       bool all = certainly_positive(v.normal), fails = certainly_negative(v.normal);
-      for (const I& x : v.margins) all = all && certainly_positive(x), fails = fails || certainly_negative(x);
+      for (const I& x : sole_with_own_mu ? own : v.margins)
+        all = all && certainly_positive(x), fails = fails || certainly_negative(x);
       return fails ? contact_verdict::fails : all ? contact_verdict::holds : contact_verdict::undecided;
     }
     return judge_contact(v.normal, v.tangential, mu ? &*mu : nullptr);

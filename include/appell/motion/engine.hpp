@@ -212,6 +212,15 @@ simulate_report simulate_problem(const P& prob, const vector_t<T>& x0, const sce
   return r;
 }
 
+/// A sole's half-lengths in I, where the problem has soles (models/system_motion.hpp).
+template <Scalar I, class P>
+std::optional<std::array<I, 2>> sole_of(const P& prob, const std::string& name) {
+  if constexpr (requires { prob.sole_half_lengths(name); }) {
+    if (const auto h = prob.sole_half_lengths(name)) return std::array<I, 2>{I((*h)[0]), I((*h)[1])};
+  }
+  return std::nullopt;
+}
+
 /// The contacts a motion judges: each one's name and mu, --mu in place of the scene's (empty:
 /// the model has none).
 template <class P>
@@ -258,6 +267,7 @@ enclose_report enclose_problem(const P& prob, const vector_t<I>& x0, const scene
     c.name = name;
     c.mu_text = mu;
     if (!mu.empty()) c.mu = from_decimal<I>(mu);
+    if (o.mu) c.sole_with_own_mu = sole_of<I>(prob, name);  // --mu: the sole's cone of that mu
     tracks.push_back(std::move(c));
   }
   if (o.mu && tracks.empty()) throw input_error("--mu: the scene has no contacts to judge (SCENES.md, \"contacts\")");
@@ -472,6 +482,7 @@ validity_report validity_problem(const P& prob, const vector_t<I>& x0, const sce
         c.mu_text = mu;
         if (vary_mu) c.mu = box;
         else if (!mu.empty()) c.mu = from_decimal<I>(mu);
+        if (vary_mu || o.mu) c.sole_with_own_mu = sole_of<I>(model, name);  // the sole's cone of the piece's mu
         tracks.push_back(std::move(c));
       }
       auto contact_at = [&](const vector_t<I>& s, const std::string& name) {
