@@ -147,7 +147,7 @@ void bench_path(benchmark::State& state, std::string scalar, std::string file, b
   });
 }
 
-/// A humanoid standing on both soles (data/scenes/urdf_atlas_standing.json: 36 speeds, 12
+/// A humanoid standing on both soles (data/scenes/urdf_atlas_standing.json: 33 speeds, 12
 /// constraints): Cotton's method on the recursion (system/tree_constraints.hpp) against Cotton's
 /// method on the generic path (the adapted system's Jacobians), u' and the reactions, in one run.
 const char* const standing = "urdf_atlas_standing.json";
@@ -212,7 +212,7 @@ class table_reporter : public median_reporter {
       std::cout << "\n";
     }
     if (ns(std::string("interval/") + standing) > 0) {
-      std::cout << "\n" << standing << " (both soles held: 36 speeds, 12 constraints), microseconds\n";
+      std::cout << "\n" << standing << " (both soles held: 33 speeds, 12 constraints), microseconds\n";
       for (const auto& [s, b] : scalars) {
         const std::string k = std::string(s) + (b ? " " + std::to_string(*b) : "");
         const double e = ns(std::string(s) + "/" + standing), f = ns(std::string("fd-") + s + "/" + standing);

@@ -382,7 +382,7 @@ BOOST_AUTO_TEST_CASE(constrained_trees_by_cotton_on_the_recursion_agree_with_the
   }
   BOOST_TEST(trees >= 15);
   // robots held by the ground: a block and arm on its sole (6 rows) and on a point of its corner
-  // (3 rows), Atlas on both soles (12 rows of 36 speeds)
+  // (3 rows), Atlas on both soles (12 rows of 33 speeds)
   const std::string dir = std::filesystem::temp_directory_path().string();
   const std::string point_scene = dir + "/appell_point_contact_" + std::to_string(::getpid()) + ".json";
   std::ofstream(point_scene)

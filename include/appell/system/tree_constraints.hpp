@@ -20,7 +20,7 @@
 //
 // Cost: the recursions' O(N d), then O(n s k) for C^T M C and O(k^3) for its solve, where the
 // generic path (dynamics/gibbs_appell.hpp on the adapted system) differentiates every body in
-// every speed: O(n^3) and more.  A standing humanoid (n = 36, s = 12) is evaluated and its
+// every speed: O(n^3) and more.  A standing humanoid (n = 33, s = 12) is evaluated and its
 // motion enclosed at any size (the generic path's slopes stop at 12 components).
 // tests/tree_recursions.cpp holds this path to the generic path's Cotton reactions (double to
 // within its precision; interval and MPFI enclosing 256-bit MPFR).
