@@ -123,12 +123,18 @@ std::string random_tree(std::mt19937_64& rng, int n, int constraints = 0) {
   if (constraints > 0) {
     std::string cs, solved;
     for (int c = 0; c < constraints; ++c) {
+      // its own rate's coefficient in [1, 2], the other solved rates' below 0.3 (A_B diagonally
+      // dominant: a full block, eliminated), every coefficient in q and t
       const std::string& own = coordinates[static_cast<std::size_t>(c)];
-      std::string g = own + "_dot";
+      std::string g = "(1.5 + 0.5*sin(" + own + " + t))*" + own + "_dot";
+      for (int b = 0; b < constraints; ++b)
+        if (b != c)
+          g += " + " + num(0.3 * sym(rng)) + "*cos(" + coordinates[static_cast<std::size_t>(b)] + " - 2*t)*" +
+               coordinates[static_cast<std::size_t>(b)] + "_dot";
       for (std::size_t j = static_cast<std::size_t>(constraints); j < coordinates.size(); ++j) {
         const std::string& q = coordinates[j];
         const std::string& other = coordinates[(j + static_cast<std::size_t>(c)) % coordinates.size()];
-        g += " + " + num(sym(rng)) + "*cos(" + other + ")*" + q + "_dot";
+        g += " + " + num(sym(rng)) + "*cos(" + other + " + 0.5*t)*" + q + "_dot";
       }
       g += " - " + num(sym(rng)) + "*sin(" + own + " + t)";
       cs += std::string(c ? ", " : "") + "\"c" + std::to_string(c) + "\": {\"nonholonomic\": \"" + g + "\"}";
@@ -364,7 +370,8 @@ double check_constrained_state(const system_input& in, const std::string& what, 
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(constrained_trees_by_cotton_on_the_recursion_agree_with_the_generic_path) {
-  // random trees with one to three nonholonomic constraints in q, u and t
+  // random trees with one to three nonholonomic constraints, their rows in q and t (the solved
+  // rates' block a full matrix), their right-hand sides in q and t
   std::mt19937_64 rng(20261205);
   std::uniform_real_distribution<double> angle(-3, 3), rate(-2, 2);
   int trees = 0;
