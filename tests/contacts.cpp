@@ -43,6 +43,7 @@
 #include "appell/models/rolling_sphere.hpp"
 #include "appell/models/system_motion.hpp"
 #include "appell/io/scene.hpp"
+#include "appell/io/urdf.hpp"
 #include "appell/motion/motion.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 #include "affine_check.hpp"
@@ -1025,6 +1026,70 @@ BOOST_AUTO_TEST_CASE(a_bead_on_a_dome_carries_a_contact_at_its_centre) {
   const std::string bare = refusal(R"({"constraints": ["shell"], "normal": "shell"})");
   BOOST_TEST(bare.find("shell is a holonomic constraint, not a point_velocity one: give the contact's \"body\"") != std::string::npos, bare);
   BOOST_TEST(bare.find("point of shell") == std::string::npos, bare);
+}
+
+BOOST_AUTO_TEST_CASE(a_logged_torque_step_is_certified_as_run) {
+  // The block and arm, its hinge torque a table a controller logged (data/tables/
+  // block_arm_hinge_log.csv: 0 until t = 0.05, then up to 3 N m over 0.1 ms and held).  Every
+  // step ends at the table's breakpoints.  Before the step the arm swings under gravity alone and
+  // the sole needs |F_t| / N below 0.03; the step raises it to about 0.10, so with mu = 0.05 the
+  // failure lies on the ramp, located there; with the scene's mu = 0.6 the sole holds.
+  const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/urdf_block_arm_push_logged.json";
+  kept_rows rows;
+  const motion::settings s = settings_of("--t-end 0.1");
+  const motion::enclose_report r = motion::enclose(read_scene_file(scene), s, rows);
+  const nlohmann::json own = motion::summary(r, s, "scene");
+  BOOST_TEST_REQUIRE(own["contacts"]["sole"]["verdict"] == "holds", own.dump());
+  const auto& cols = rows.columns_of.at("steps");
+  const auto t1 = static_cast<std::size_t>(std::find(cols.begin(), cols.end(), "t1") - cols.begin());
+  BOOST_TEST_REQUIRE(t1 < cols.size());
+  for (const double b : {0.05, 0.0501}) {
+    const bool ends = std::any_of(rows.rows_of["steps"].begin(), rows.rows_of["steps"].end(),
+                                  [&](const std::vector<std::string>& row) { return std::fabs(std::stod(row[t1]) - b) <= 1e-15; });
+    BOOST_TEST(ends, "no step ends at the breakpoint " << b);
+  }
+  kept_rows low_rows;
+  const motion::settings low = settings_of("--t-end 0.1 --mu 0.05 --locate 1e-7 --until-contact-fails");
+  const nlohmann::json j = motion::summary(motion::enclose(read_scene_file(scene), low, low_rows), low, "scene");
+  const nlohmann::json& c = j["contacts"]["sole"];
+  BOOST_TEST_REQUIRE(c["verdict"] == "fails", j.dump());
+  const truth_t from(c["first_failure"]["from"].get<std::string>()), to(c["first_failure"]["to"].get<std::string>());
+  BOOST_TEST(from >= truth_t("0.05"), "fails from " << from);
+  BOOST_TEST(to <= truth_t("0.0501"), "fails by " << to);
+  BOOST_TEST(to - from <= truth_t("1e-7"));
+  // Where the friction ratio |F_x| / N crosses 0.05 on the ramp, by a simulate in double (rows
+  // every 1e-6 s): the located failure must bracket it to within the rows' spacing.  (--locate's
+  // runs start from states along the motion, whose tables must be read at the state's own t, not
+  // at the scene's start: a defect found here put the failure at the ramp's end, 0.0500999.)
+  {
+    struct ratio_rows final : motion::row_sink {
+      std::size_t t = 0, fx = 0, n = 0;
+      double crossing = -1;
+      void columns(const std::string& table, const std::vector<std::string>& names) override {
+        if (table != "trajectory") return;
+        auto col = [&](const std::string& x) { return static_cast<std::size_t>(std::find(names.begin(), names.end(), x) - names.begin()); };
+        t = col("t"), fx = col("sole_friction_force_x"), n = col("sole_normal_force");
+        BOOST_TEST_REQUIRE(fx < names.size());
+      }
+      void row(const std::string& table, const std::vector<std::string>& c) override {
+        if (table == "trajectory" && crossing < 0 && std::fabs(std::stod(c[fx])) > 0.05 * std::stod(c[n])) crossing = std::stod(c[t]);
+      }
+    } sim;
+    motion::settings ss;
+    ss.t_end = "0.0501";
+    ss.every = "0.000001";
+    ss.scalar = "double";
+    (void)motion::simulate(read_scene_file(scene), ss, sim);
+    BOOST_TEST_REQUIRE(sim.crossing > 0.05);
+    BOOST_TEST((from <= truth_t(sim.crossing) + truth_t("1e-9") && truth_t(sim.crossing) - truth_t("1e-6") - truth_t("1e-9") <= to),
+               "located [" << from << ", " << to << "], the double simulate crosses by " << sim.crossing);
+  }
+  BOOST_TEST_MESSAGE("a logged torque step: the sole fails with mu = 0.05 in [" << from << ", " << to << "]");
+  // convert writes the table's CSV path absolute: the converted file reads from anywhere
+  const std::string converted = convert_to_system(scene);
+  BOOST_TEST(converted.find("\"" + std::filesystem::canonical(APPELL_SOURCE_DIR + "/data/tables/block_arm_hinge_log.csv").string() + "\"") !=
+                 std::string::npos,
+             converted.substr(0, 400));
 }
 
 BOOST_AUTO_TEST_CASE(a_sole_is_judged_with_the_mu_of_the_run) {

@@ -311,6 +311,155 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused_naming_the_field) {
   expect_refused(replace(quasi_state, R"~("theta": "w")~", R"~("theta": "w/sin(theta - 0.4)")~"), "division by zero");
 }
 
+// --- tables: functions of time joined by straight lines (SCENES.md, "tables") ---------------
+// Random tables (random double times, random decimal values), evaluated through the expression
+// language in interval, MPFI at 256 bits and double, at random times and over random intervals
+// inside a piece, against the line through the two points at 120 bits (the decimals converted
+// there, the piece found by exact comparison); the rate (d/dt) against the slope; an interval
+// that may lie on both sides of a breakpoint refused, a time outside the table refused; in a
+// step's segment (time_segment_scope) the piece's line extended.
+namespace {
+struct random_table {
+  piecewise_linear table;
+  table_list list;
+  std::vector<ref_t> v;
+  explicit random_table(std::mt19937_64& rng) {
+    std::uniform_int_distribution<int> points(2, 9), digits(-99999, 99999);
+    std::uniform_real_distribution<double> gap(1e-3, 0.5);
+    table.name = "logged";
+    double t = std::uniform_real_distribution<double>(-1, 1)(rng);
+    const int n = points(rng);
+    for (int i = 0; i < n; ++i) {
+      table.times.push_back(t);
+      t += gap(rng);
+      const std::string value = std::to_string(digits(rng)) + "e-" + std::to_string(digits(rng) % 4 + 4);
+      table.values.push_back(value);
+      v.push_back(ref_t(value));
+    }
+    list.push_back(std::make_shared<const piecewise_linear>(table));
+  }
+  int piece(const ref_t& at) const {  // right-continuous: the last piece whose start at reaches
+    int k = 0;
+    while (k + 2 < static_cast<int>(table.times.size()) && at >= ref_t(table.times[static_cast<std::size_t>(k + 1)])) ++k;
+    return k;
+  }
+  ref_t slope(int k) const {
+    const auto i = static_cast<std::size_t>(k);
+    return (v[i + 1] - v[i]) / (ref_t(table.times[i + 1]) - ref_t(table.times[i]));
+  }
+  ref_t line(int k, const ref_t& at) const { return v[static_cast<std::size_t>(k)] + slope(k) * (at - ref_t(table.times[static_cast<std::size_t>(k)])); }
+};
+bool encloses(const std::pair<ref_t, ref_t>& b, const ref_t& x) { return b.first <= x && x <= b.second; }
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(a_table_is_enclosed_on_its_pieces_at_random_times) {
+  std::mt19937_64 rng(20261205);
+  const evaluation_scope<interval> scope;
+  const mp_precision_scope bits(256);
+  long checked = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const random_table r(rng);
+    const std::vector<std::string> vars{"q", "t"};
+    const expression e = expression::parse("2*logged(t) - q", vars, "test", expression_tables{&r.list, 1, ""});
+    const expression d = e.derivative(1);  // 2 * the piece's slope
+    BOOST_TEST_REQUIRE(e.calls_table());
+    const auto& ts = r.table.times;
+    std::uniform_real_distribution<double> anywhere(ts.front(), ts.back()), unit(0, 1);
+    for (int i = 0; i < 20; ++i) {
+      // a point: a random time, a breakpoint (right-continuous), or the last time
+      double t = i == 0 ? ts.back() : i < 4 ? ts[static_cast<std::size_t>(i) % ts.size()] : anywhere(rng);
+      const ref_t at(t), q("0.3");
+      const int k = r.piece(at);
+      const ref_t want = 2 * r.line(k, at) - q;
+      const interval xi[] = {from_decimal<interval>("0.3"), interval(t)};
+      BOOST_TEST(encloses(bounds_of(e.eval_at(xi)), want), "interval at t = " << t << " in trial " << trial);
+      BOOST_TEST(encloses(bounds_of(d.eval_at(xi)), ref_t(2 * r.slope(k))), "rate at t = " << t);
+      const mpfi xm[] = {from_decimal<mpfi>("0.3"), mpfi(t)};
+      BOOST_TEST(encloses(bounds_of(e.eval_at(xm)), want), "mpfi at t = " << t);
+      // the scale of the sum v_k + (t - t_k) s_k: a few of its ulps for the width and the double
+      const double a = ts[static_cast<std::size_t>(k)], b = ts[static_cast<std::size_t>(k) + 1];
+      const ref_t scale = 1 + abs(r.v[static_cast<std::size_t>(k)]) + abs(r.v[static_cast<std::size_t>(k) + 1]) +
+                          abs(r.slope(k)) * (std::fabs(t) + std::fabs(a) + std::fabs(b));
+      BOOST_TEST(ref_t(boost::numeric::width(e.eval_at(xi))) < 1e-14 * scale);
+      const double xd[] = {0.3, t};
+      BOOST_TEST(abs(ref_t(e.eval_at(xd)) - want) <= 1e-14 * scale, "double at t = " << t);
+      // an interval inside the piece: the line's range
+      double lo = a + (b - a) * unit(rng), hi = a + (b - a) * unit(rng);
+      if (lo > hi) std::swap(lo, hi);
+      const interval xw[] = {from_decimal<interval>("0.3"), interval(lo, hi)};
+      const auto got = bounds_of(e.eval_at(xw));
+      BOOST_TEST((encloses(got, ref_t(2 * r.line(k, ref_t(lo)) - q)) && encloses(got, ref_t(2 * r.line(k, ref_t(hi)) - q))));
+      // in a step's segment the piece's line, extended past it
+      {
+        const time_segment_scope segment(time_segment{a, b});
+        const double past = b + (b - a) * unit(rng);
+        const interval xp[] = {from_decimal<interval>("0.3"), interval(past)};
+        BOOST_TEST(encloses(bounds_of(e.eval_at(xp)), ref_t(2 * r.line(k, ref_t(past)) - q)), "extended to " << past);
+      }
+      checked += 7;
+    }
+    // across a breakpoint: refused (no derivative there); outside the times: bad input
+    if (ts.size() > 2) {
+      const interval across[] = {interval(0), interval(std::nextafter(ts[1], -1e9), std::nextafter(ts[1], 1e9))};
+      BOOST_CHECK_THROW((void)e.eval_at(across), certification_error);
+    }
+    const interval before[] = {interval(0), interval(ts.front() - 1e-3)};
+    BOOST_CHECK_THROW((void)e.eval_at(before), input_error);
+    const double after[] = {0, ts.back() + 1e-9};
+    BOOST_CHECK_THROW((void)e.eval_at(after), input_error);
+    const interval straddles_end[] = {interval(0), interval(ts.back(), std::nextafter(ts.back(), 1e9))};
+    BOOST_CHECK_THROW((void)e.eval_at(straddles_end), certification_error);
+  }
+  BOOST_TEST_MESSAGE("tables: " << checked << " values checked on 200 random tables");
+}
+
+BOOST_AUTO_TEST_CASE(tables_in_a_system_file_are_checked_and_kept_to_loads) {
+  // A table pushes the bead along the rod: accepted; evaluated at the state t = 0.
+  const std::string tables = R"~("tables": {"push": {"t": [0, 0.5, 1], "value": ["0", "2.5", "-1"]}},
+ "coordinates")~";
+  const std::string pushed = replace(replace(base, R"~("coordinates")~", tables),
+                                     R"~("center": ["s*sin(theta)", "0", "-s*cos(theta)"]}})~",
+                                     R"~("center": ["s*sin(theta)", "0", "-s*cos(theta)"], "force": ["push(t)", "0", "0"]}})~");
+  BOOST_TEST(refusal(pushed) == "");
+  expect_refused(replace(pushed, R"~("force": ["push(t)")~", R"~("force": ["push(2*t)")~"), "a function of the time alone");
+  expect_refused(replace(pushed, R"~("force": ["push(t)")~", R"~("force": ["push(theta)")~"), "a function of the time alone");
+  expect_refused(replace(pushed, R"~("s - 0.3")~", R"~("s - 0.3 + push(t)")~"), "constraints.stop.holonomic: the table 'push' may be called in an applied force");
+  expect_refused(replace(pushed, R"~("l/2*sin(theta)")~", R"~("l/2*sin(theta) + push(t)")~"), "may be called in an applied force");
+  expect_refused(replace(pushed, R"~("l": "0.5")~", R"~("l": "push(t)")~"), "parameters.l");
+  expect_refused(replace(pushed, R"~([0, 0.5, 1])~", R"~([0, 1, 0.5])~"), "tables.push.t[2]: 0.5 does not come after");
+  expect_refused(replace(pushed, R"~([0, 0.5, 1])~", R"~([0, 0.5])~"), "tables.push: 2 times and 3 values");
+  expect_refused(replace(pushed, R"~([0, 0.5, 1], "value": ["0", "2.5", "-1"])~", R"~([0], "value": ["0"])~"),
+                 "at least two points");
+  expect_refused(replace(pushed, R"~("push": {)~", R"~("theta": {)~"), "tables.theta: the name of a parameter");
+  expect_refused(replace(pushed, R"~("push": {)~", R"~("sin": {)~"), "reserved");
+  expect_refused(replace(pushed, R"~([0, 0.5, 1])~", R"~([0.1, 0.5, 1])~"), "outside the times of the table 'push'");
+  expect_refused(replace(pushed, R"~("value": ["0", "2.5", "-1"])~", R"~("value": ["0", "2.5x", "-1"])~"),
+                 "is not a decimal number");
+  // From a CSV file's columns, relative to the scene's directory.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "appell_tables_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "log.csv") << "# logged\ntime, f\n0, 0\n0.5, 2.5\n1, -1\n";
+  std::ofstream(dir / "bad.csv") << "time,f\n0,0\n0.5\n";
+  const std::string csv = replace(pushed, R"~({"t": [0, 0.5, 1], "value": ["0", "2.5", "-1"]})~",
+                                  R"~({"csv": "log.csv", "t": "time", "value": "f"})~");
+  auto refusal_in = [&](const std::string& json) {
+    const scene_directory_scope in(dir.string());
+    return refusal(json);
+  };
+  BOOST_TEST(refusal_in(csv) == "");
+  BOOST_TEST(refusal_in(replace(csv, R"~("value": "f")~", R"~("value": "g")~")).find("no column 'g'") != std::string::npos);
+  BOOST_TEST(refusal_in(replace(csv, "log.csv", "bad.csv")).find("bad.csv:3: 1 fields where the header has 2") != std::string::npos);
+  BOOST_TEST(refusal_in(replace(csv, "log.csv", "none.csv")).find("none.csv: cannot read") != std::string::npos);
+  // The same table from the list and from the file: the same results, bit for bit.
+  const scene_directory_scope in(dir.string());
+  const evaluation<interval> a = evaluate<interval>(read_scene(parse_json(pushed)));
+  const evaluation<interval> b = evaluate<interval>(read_scene(parse_json(replace(csv, R"~("theta": "0.4")~", R"~("theta": "0.4", "t": "0.75")~"))));
+  const evaluation<interval> c = evaluate<interval>(read_scene(parse_json(replace(pushed, R"~("theta": "0.4")~", R"~("theta": "0.4", "t": "0.75")~"))));
+  BOOST_TEST(to_string(b.result("stop_reaction").values[0]) == to_string(c.result("stop_reaction").values[0]));
+  // at t = 0.75 the push is 0.75 (halfway from 2.5 to -1) along x: the reaction differs from t = 0's
+  BOOST_TEST(to_string(a.result("stop_reaction").values[0]) != to_string(c.result("stop_reaction").values[0]));
+}
+
 // --- a rolling disk, against Newton-Euler ---------------------------------------------
 // data/scenes/system_rolling_disk.json with random parameters and states: a thin disk
 // (mass m, radius a) rolling without slipping on z = 0, orientation rz(psi) rx(theta) ry(phi)

@@ -254,6 +254,100 @@ BOOST_AUTO_TEST_CASE(a_bead_on_a_turning_wire_follows_cosh) {
                                                 << checked << " points");
 }
 
+// A slider of mass m = 2 on a line, pushed by a force a controller logged (a table:
+// data/tables/slider_force_log.csv, joined by straight lines).  Between two breakpoints t_k, t_k+1 the force
+// is F = v_k + s_k (t - t_k), so x'' = F / m integrates piece by piece in closed form:
+//   x' = x'_k + (v_k tau + s_k tau^2 / 2) / m,  x = x_k + x'_k tau + (v_k tau^2 / 2 + s_k tau^3 / 6) / m,
+// tau = t - t_k (the breakpoints are the doubles nearest the logged times: taken so here too).
+// The enclosure must hold the closed form at T and the acceleration F / m over every step; a step
+// that crossed a breakpoint would follow the wrong line past it (the force has no derivative
+// there), and the test would see it.  simulate in double must agree to a few ulps of the state.
+namespace {
+struct slider_truth {
+  std::vector<double> t{0, 0.1, 0.25, 0.3, 0.7, 1.0, 1.2};
+  std::vector<truth_t> v{truth_t(0), truth_t(3), truth_t("-1.5"), truth_t("0.5"), truth_t("0.5"), truth_t(-2), truth_t(0)};
+  truth_t m = 2;
+  truth_t force(const truth_t& at) const {
+    std::size_t k = 0;
+    while (k + 2 < t.size() && at >= truth_t(t[k + 1])) ++k;
+    return v[k] + (v[k + 1] - v[k]) / (truth_t(t[k + 1]) - truth_t(t[k])) * (at - truth_t(t[k]));
+  }
+  /// (x, x') at `at`, from x = 0, x' = 0.1 at t = 0.
+  std::pair<truth_t, truth_t> state(const truth_t& at) const {
+    truth_t x = 0, xd = truth_t("0.1");
+    for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+      const truth_t tk(t[k]), tk1(t[k + 1]);
+      const truth_t end = at < tk1 ? at : tk1;
+      if (end <= tk) break;
+      const truth_t s = (v[k + 1] - v[k]) / (tk1 - tk), tau = end - tk;
+      x += xd * tau + (v[k] * tau * tau / 2 + s * tau * tau * tau / 6) / m;
+      xd += (v[k] * tau + s * tau * tau / 2) / m;
+    }
+    return {x, xd};
+  }
+};
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(a_slider_pushed_by_a_logged_force_follows_its_piecewise_cubic) {
+  const slider_truth truth;
+  const scene_input scene = scene_file("system_slider_logged_force.json");
+  {
+    const evaluation_scope<interval> scope;
+    auto [prob, x0] = motion_of<interval, 6>(scene);
+    BOOST_TEST_REQUIRE(prob.size() == 3);  // x, x_dot, t
+    BOOST_TEST((prob.breakpoints() == truth.t));
+    const std::size_t acc = 0;  // results: x_ddot first
+    std::vector<interval> ends_at;
+    long steps = 0, checked = 0;
+    vector_t<interval> end;
+    const ode::enclose_stats st = ode::enclose(
+        prob, x0, interval(1), 16, std::ldexp(1.0, -53), 1.0, 2, [&](const ode::enclosed_step<interval>& s) {
+          ++steps;
+          end = s.end;
+          ends_at.push_back(s.t1);
+          BOOST_TEST_REQUIRE(s.results.at(acc).name == "x_ddot");
+          const truth_t t0(hi_of(s.t0)), t1(lo_of(s.t1));
+          for (int k = 0; k <= 4; ++k) {
+            const truth_t t = t0 + (t1 - t0) * k / 4;
+            BOOST_TEST(holds(s.results[acc].values[0], truth_t(truth.force(t) / truth.m)),
+                       "x_ddot over step " << steps << " at t = " << t);
+            ++checked;
+          }
+          for (double b : truth.t)  // no step crosses a breakpoint
+            BOOST_TEST(!(hi_of(s.t0) < b && b < lo_of(s.t1)), "step " << steps << " crosses the breakpoint " << b);
+        });
+    BOOST_TEST_REQUIRE(st.complete, st.reason);
+    for (double b : {0.1, 0.25, 0.3, 0.7})  // a step ends at each breakpoint
+      BOOST_TEST(std::any_of(ends_at.begin(), ends_at.end(), [&](const interval& e) { return lo_of(e) <= b && b <= hi_of(e); }),
+                 "no step ends at " << b);
+    const auto [x, xd] = truth.state(truth_t(1));
+    BOOST_TEST(holds(end(0), x), "x(1) " << to_string(end(0)) << " vs " << x);
+    BOOST_TEST(holds(end(1), xd), "x'(1) " << to_string(end(1)) << " vs " << xd);
+    BOOST_TEST(boost::numeric::width(end(0)) < 1e-13);
+    BOOST_TEST(!holds(end(0), truth_t(x + truth_t("1e-11"))));
+    BOOST_TEST_MESSAGE("slider with a logged force: " << steps << " steps to T = 1, x(1) " << to_string(end(0))
+                                                      << "; its acceleration at " << checked << " points");
+    // Past the table's last time: refused before the first step, naming the table.
+    long past_steps = 0;
+    try {
+      (void)ode::enclose(prob, x0, interval(2), 16, std::ldexp(1.0, -53), 1.0, 2,
+                         [&](const ode::enclosed_step<interval>&) { ++past_steps; });
+      BOOST_TEST(false, "a horizon past the table was accepted");
+    } catch (const input_error& e) {
+      BOOST_TEST(std::string(e.what()).find("push") != std::string::npos, e.what());
+    }
+    BOOST_TEST(past_steps == 0);
+  }
+  {
+    auto [prob, x0] = motion_of<double, 0>(scene);
+    vector_t<double> last;
+    ode::simulate(prob, x0, 1.0, 0.125, 20, 1e-16, [&](const ode::sample<double>& s) { last = s.x; });
+    const auto [x, xd] = truth.state(truth_t(1));
+    BOOST_TEST(std::fabs(last(0) - x.convert_to<double>()) < 1e-15, "simulate x(1) " << last(0) << " vs " << x);
+    BOOST_TEST(std::fabs(last(1) - xd.convert_to<double>()) < 1e-15, "simulate x'(1) " << last(1) << " vs " << xd);
+  }
+}
+
 // The nonlinear Whipple bicycle (data/scenes/system_whipple_bicycle_weave_{5,3}.json: the
 // benchmark bicycle upright, rolling straight, given a lean rate of 0.5 rad/s).  Linearized
 // (`appell linearize`, tests/system_model.cpp), its weave is -0.775 +- 4.46i at 5 m/s, inside the

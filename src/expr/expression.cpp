@@ -3,15 +3,23 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 
 namespace appell {
 namespace {
 
+/// A breakpoint or a time in a message: the shortest decimal that reads back as the double.
+std::string time_text(double x) {
+  char b[40];
+  const auto r = std::to_chars(b, b + sizeof b, x);
+  return std::string(b, r.ptr);
+}
+
 class parser {
  public:
   parser(const std::string& text, const std::vector<std::string>& variables, const std::string& where,
-         std::vector<expression::node>& nodes)
-      : s_(text), vars_(variables), where_(where), nodes_(nodes) {}
+         std::vector<expression::node>& nodes, const expression_tables& tables)
+      : s_(text), vars_(variables), where_(where), nodes_(nodes), tables_(tables) {}
 
   int parse_all() {
     const int r = expr();
@@ -119,9 +127,30 @@ class parser {
           return make(kind, arg);
         }
       }
+      if (tables_.tables)
+        for (std::size_t k = 0; k < tables_.tables->size(); ++k) {
+          const piecewise_linear& table = *(*tables_.tables)[k];
+          if (name != table.name) continue;
+          if (!tables_.refusal.empty()) {
+            i_ = start;
+            fail("the table '" + name + "' " + tables_.refusal);
+          }
+          if (!eat('(')) fail("expected '(' after the table " + name);
+          const std::size_t argument_at = i_;
+          const int arg = expr();
+          if (!eat(')')) fail("missing ')'");
+          const expression::node& a = nodes_[static_cast<std::size_t>(arg)];
+          if (a.kind != op::variable || a.var != tables_.time) {
+            i_ = argument_at;
+            fail("a table is a function of the time alone: " + name + "(t)");
+          }
+          return make(op::table, arg, -1, name, static_cast<int>(k));
+        }
       i_ = start;
       std::string known;
       for (const std::string& v : vars_) known += v + ", ";
+      if (tables_.tables)
+        for (const auto& table : *tables_.tables) known += table->name + "(t), ";
       fail("unknown name '" + name + "' (known: " + printable(known, 200) + "pi, sin, cos, tan, exp, log, sqrt)");
     }
     fail("unexpected '" + std::string(1, c) + "'");
@@ -132,6 +161,7 @@ class parser {
   std::string where_;
   std::size_t i_ = 0, depth_ = 0;
   std::vector<expression::node>& nodes_;
+  const expression_tables& tables_;
 };
 
 }  // namespace
@@ -147,16 +177,55 @@ expression expression::parse(const std::string& text, const std::string& variabl
 
 expression expression::parse(const std::string& text, const std::vector<std::string>& variables,
                              const std::string& where) {
+  return parse(text, variables, where, expression_tables{});
+}
+
+expression expression::parse(const std::string& text, const std::vector<std::string>& variables,
+                             const std::string& where, const expression_tables& tables) {
   if (text.size() > limits::characters)
     throw input_error(where + ": longer than " + std::to_string(limits::characters) + " characters");
   expression e;
   e.where_ = where;
   e.variables_ = variables;
-  parser p(text, e.variables_, where, e.nodes_);
+  parser p(text, e.variables_, where, e.nodes_, tables);
   e.root_ = p.parse_all();
   e.check_limits();
+  if (e.calls_table()) e.tables_ = *tables.tables;
   return e;
 }
+
+bool expression::calls_table() const {
+  return std::any_of(nodes_.begin(), nodes_.end(), [](const node& n) { return n.kind == op::table || n.kind == op::table_rate; });
+}
+
+int table_piece_of_segment(const piecewise_linear& table, const time_segment& s, const std::string& where) {
+  const auto& t = table.times;
+  if (s.lo < t.front() || s.hi > t.back())
+    throw input_error(where + ": the table '" + table.name + "' is given for t in [" + time_text(t.front()) + ", " +
+                      time_text(t.back()) + "]; the motion reaches t in [" + time_text(s.lo) + ", " +
+                      time_text(s.hi) + "]");
+  auto k = static_cast<int>(std::upper_bound(t.begin(), t.end(), s.lo) - t.begin()) - 1;
+  k = std::min(k, static_cast<int>(t.size()) - 2);
+  if (s.hi > t[static_cast<std::size_t>(k + 1)])
+    throw std::logic_error("table_piece_of_segment: a step across the breakpoint " +
+                           time_text(t[static_cast<std::size_t>(k + 1)]) + " of the table '" + table.name + "'");
+  return k;
+}
+
+namespace detail {
+void table_outside(const piecewise_linear& table, const std::string& at, bool certainly, const std::string& where) {
+  const std::string text = where + ": " + (certainly ? "" : "cannot exclude that ") + "t = " + at +
+                           (certainly ? " is" : " be") + " outside the times of the table '" + table.name + "' [" +
+                           time_text(table.times.front()) + ", " + time_text(table.times.back()) + "]";
+  if (certainly) throw input_error(text);
+  throw certification_error(text);
+}
+void table_across(const piecewise_linear& table, double breakpoint, const std::string& at, const std::string& where) {
+  throw certification_error(where + ": t = " + at + " may lie on either side of the breakpoint " +
+                            time_text(breakpoint) + " of the table '" + table.name +
+                            "' (no derivative there: the integrators end a step at each breakpoint)");
+}
+}  // namespace detail
 
 bool expression::depends_on(int variable) const {
   std::vector<char> reached(nodes_.size(), 0);
@@ -304,6 +373,12 @@ int expression::derive(int i, int variable, expression& out, std::vector<int>& c
       const int da = derive(n.a, variable, out, copied);
       return da < 0 ? -1 : out.add_node(op::div, da, mul(num("2"), copy(i)));
     }
+    case op::table: {  // the argument is t alone: the piece's slope where t is the variable
+      const int da = derive(n.a, variable, out, copied);
+      return da < 0 ? -1 : out.add_node(op::table_rate, copy(n.a), -1, n.number, n.var);
+    }
+    case op::table_rate:  // constant on each piece (a step never crosses a breakpoint)
+      return -1;
   }
   throw std::logic_error("expression: unknown node");
 }
@@ -312,6 +387,7 @@ expression expression::derivative(int variable) const {
   expression out;
   out.where_ = variables_.size() > 1 ? "d(" + where_ + ")/d" + variables_[static_cast<std::size_t>(variable)] : where_ + "'";
   out.variables_ = variables_;
+  out.tables_ = tables_;
   std::vector<int> copied(nodes_.size(), -1);
   const int r = derive(root_, variable, out, copied);
   out.root_ = r < 0 ? out.add_node(op::number, -1, -1, "0") : r;
@@ -324,6 +400,9 @@ expression expression::difference(const expression& a, const expression& b, cons
   expression out;
   out.where_ = where;
   out.variables_ = a.variables_;
+  if (!a.tables_.empty() && !b.tables_.empty() && a.tables_ != b.tables_)
+    throw std::logic_error("expression::difference: operands with different tables");
+  out.tables_ = a.tables_.empty() ? b.tables_ : a.tables_;
   // Both copied into out with structurally equal subtrees merged into one node, so that a
   // term's node index is its identity.
   std::map<std::tuple<int, int, int, int, std::string>, int> index;
@@ -340,7 +419,7 @@ expression expression::difference(const expression& a, const expression& b, cons
       const node& n = e.nodes_[i];
       const int x = n.a >= 0 ? mapped[static_cast<std::size_t>(n.a)] : -1;
       const int y = n.b >= 0 ? mapped[static_cast<std::size_t>(n.b)] : -1;
-      const int var = n.kind == op::variable ? n.var : 0;
+      const int var = n.kind == op::variable || n.kind == op::table || n.kind == op::table_rate ? n.var : 0;
       const auto key = std::make_tuple(static_cast<int>(n.kind), x, y, var, n.number);
       const auto found = index.find(key);
       mapped[i] = found != index.end() ? found->second : index.emplace(key, out.add_node(n.kind, x, y, n.number, var)).first->second;
@@ -415,6 +494,8 @@ std::string expression::node_string(int i) const {
     case op::exp: return "exp(" + node_string(n.a) + ")";
     case op::log: return "log(" + node_string(n.a) + ")";
     case op::sqrt: return "sqrt(" + node_string(n.a) + ")";
+    case op::table: return n.number + "(" + node_string(n.a) + ")";
+    case op::table_rate: return "d" + n.number + "/dt(" + node_string(n.a) + ")";
   }
   return "?";
 }

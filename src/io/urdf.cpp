@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "appell/io/json_text.hpp"
+#include "appell/io/tables.hpp"
 #include "appell/io/model.hpp"
 #include "appell/models/system.hpp"
 #include "appell/scalar/decimal.hpp"
@@ -402,6 +403,7 @@ std::string urdf_to_system(const urdf_robot& robot, const urdf_scene_options& o)
   }
   doc["bodies"] = bodies;
   if (!o.contacts.empty()) doc["contacts"] = json::parse(o.contacts);
+  if (!o.tables.empty()) doc["tables"] = json::parse(o.tables);
   json state = json::object();
   for_each_state_entry(robot, names, o, [&](const std::string& key, const std::string& text) { state[key] = text; });
   doc["state"] = state;
@@ -492,6 +494,21 @@ const parsed_urdf_file& read_urdf_scene_options(object_reader& scene, std::strin
     if (c.type != json_value::kind::object) throw input_error(scene.path("contacts") + ": expected an object, contact by contact");
     o.contacts = json_value_text(c);
   }
+  if (scene.has("tables")) {
+    // Checked here (read_table_points), passed to the system file with a CSV file's path absolute.
+    const json_value& t = scene.raw("tables");
+    if (t.type != json_value::kind::object) throw input_error(scene.path("tables") + ": expected an object, table by table");
+    nlohmann::ordered_json tables = json_of(t);
+    for (const auto& m : t.members) {
+      (void)read_table_points(m.value, scene.path("tables") + "." + printable(m.key));
+      if (const json_value* csv = m.value.find("csv")) {
+        std::filesystem::path p(csv->text);
+        if (p.is_relative() && !scene_directory().empty()) p = std::filesystem::path(scene_directory()) / p;
+        tables[m.key]["csv"] = std::filesystem::absolute(p).lexically_normal().string();
+      }
+    }
+    o.tables = tables.dump();
+  }
   if (scene.has("torques") && scene.has("accelerations"))
     throw input_error("accelerations: give the torques (forward dynamics) or the accelerations (inverse dynamics), not both");
   for (const char* section : {"torques", "accelerations"}) {
@@ -579,7 +596,8 @@ thread_local std::optional<kept_system_document> last_system_document;
 
 bool same_but_state(const urdf_scene_options& a, const urdf_scene_options& b) {
   return a.gravity == b.gravity && a.efforts == b.efforts && a.accelerations == b.accelerations &&
-         a.with_state == b.with_state && a.floating == b.floating && a.contacts == b.contacts;
+         a.with_state == b.with_state && a.floating == b.floating && a.contacts == b.contacts &&
+         a.tables == b.tables;
 }
 
 std::shared_ptr<const model_input> read_urdf_scene(object_reader& scene) {

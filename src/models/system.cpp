@@ -13,6 +13,8 @@
 // Example I's built-in model); the scalar the user asks for certifies the rest.
 #include "system_reading.hpp"
 
+#include "appell/io/tables.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <functional>
@@ -80,8 +82,15 @@ class builder {
                         std::to_string(system_limits::operations) + " operations (when unfolded)");
     return e;
   }
-  shared_expression parse(const std::string& text, const std::string& where) {
-    return count(std::make_shared<const expression>(expression::parse(text, def.names, where)));
+  /// An expression of the system's variables; `load`: an applied force, couple or effort, the
+  /// only place a table may be called (SCENES.md, "tables").
+  shared_expression parse(const std::string& text, const std::string& where, bool load = false) {
+    expression_tables tables{&def.tables, def.vars.t(),
+                             load ? std::string{}
+                                  : "may be called in an applied force, couple or effort only (a position, a rate, a "
+                                    "constraint or a parameter made of a table would have no derivative at its "
+                                    "breakpoints)"};
+    return count(std::make_shared<const expression>(expression::parse(text, def.names, where, tables)));
   }
   bool depends_on_range(const expression& e, int first, int last) const {
     for (int v = first; v < last; ++v)
@@ -277,7 +286,7 @@ void read_link(builder& b, object_reader& r, system_body_definition& body, const
       if (j.axis[i]) ++written, j.along = static_cast<int>(i);
     if (written == 0) throw input_error(o.path("axis") + ": the axis is 0");
     if (written > 1) j.along = -1;
-    if (o.has("effort")) j.effort = b.parse(expression_text(o.raw("effort"), o.path("effort")), o.path("effort"));
+    if (o.has("effort")) j.effort = b.parse(expression_text(o.raw("effort"), o.path("effort")), o.path("effort"), true);
   }
   o.finish();
   r.finish();
@@ -366,6 +375,19 @@ void read_names(reading& R) {
       if (!seen.insert(n).second)
         throw input_error(field + ": the name '" + n + "' is used twice" +
                           (def.rates_as_speeds ? " (the speeds are named q_dot after the coordinates)" : ""));
+    }
+  }
+  // Tables: functions of time, named apart from every variable (SCENES.md, "tables").
+  if (scene.has("tables")) {
+    const json_value& tables = object_value(scene, "tables");
+    for (const auto& m : tables.members) {
+      const std::string where = "tables." + printable(m.key);
+      if (!is_identifier(m.key))
+        throw input_error("tables: '" + printable(m.key) + "' is not a name (a letter or _, then letters, digits, _)");
+      if (reserved_names().count(m.key)) throw input_error(where + ": the name is reserved");
+      if (std::find(def.names.begin(), def.names.end(), m.key) != def.names.end())
+        throw input_error(where + ": the name of a parameter, coordinate or speed");
+      def.tables.push_back(std::make_shared<const piecewise_linear>(make_table(m.key, read_table_points(m.value, where), where)));
     }
   }
 }
@@ -468,7 +490,7 @@ void read_bodies(reading& R) {
     object_reader r(m.value, "bodies." + m.key);
     system_body_definition body;
     body.name = m.key;
-    auto list3 = [&](const std::string& key, bool constant) {
+    auto list3 = [&](const std::string& key, bool constant, bool load = false) {
       std::array<shared_expression, 3> out;
       const json_value& v = r.raw(key);
       if (v.type != json_value::kind::array || v.items.size() != 3)
@@ -476,7 +498,7 @@ void read_bodies(reading& R) {
       for (std::size_t i = 0; i < 3; ++i) {
         const std::string where = r.path(key) + "[" + std::to_string(i) + "]";
         const std::string text = expression_text(v.items[i], where);
-        out[i] = constant ? b.constant(text, where) : b.parse(text, where);
+        out[i] = constant ? b.constant(text, where) : b.parse(text, where, load);
       }
       return out;
     };
@@ -567,8 +589,8 @@ void read_bodies(reading& R) {
       for (const auto& [axis, text] : factors)
         body.rotations.emplace_back(axis, b.function_of_q_t(text, where + "[" + std::to_string(n++) + "]"));
     }
-    if (r.has("force")) body.force = list3("force", false);
-    if (r.has("couple")) body.couple = list3("couple", false);
+    if (r.has("force")) body.force = list3("force", false, true);
+    if (r.has("couple")) body.couple = list3("couple", false, true);
     r.finish();
     def.bodies.push_back(std::move(body));
   }

@@ -1,6 +1,8 @@
 // appell/expr/expression.hpp -- the scene expression language (SCENES.md):
 // numbers, pi, named variables (one for a cone's f(theta), many for a system
-// file's), + - * / ^, parentheses, sin cos tan exp log sqrt.
+// file's), + - * / ^, parentheses, sin cos tan exp log sqrt, and a system file's
+// tables: functions of time given by values at breakpoints, joined by straight
+// lines (a torque a controller logged), called by name: push(t).
 //
 // An expression is parsed once into a tree; derivative() differentiates it
 // symbolically (f' and f'' of the cone psi = f(theta) come from here, not from
@@ -23,12 +25,48 @@
 #include "appell/linalg/solve.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/format.hpp"
+#include "appell/expr/time_segment.hpp"
 
 namespace appell {
 
+/// A function of time given by a table (SCENES.md, "tables"): its values at strictly increasing
+/// times, joined by straight lines, defined on [times.front(), times.back()].  The breakpoints
+/// are doubles (the times as written, rounded to the nearest double: a controller logs doubles);
+/// the values are decimals, enclosed exactly in every scalar.  It is smooth between breakpoints
+/// only: a rigorous step must not cross one (enclose and simulate end their steps there, and
+/// say which piece the step lies in through a time_segment_scope).
+struct piecewise_linear {
+  std::string name;
+  std::vector<double> times;
+  std::vector<std::string> values;
+};
+using table_list = std::vector<std::shared_ptr<const piecewise_linear>>;
+
+/// The tables an expression may call, and where: a table's argument is the time alone
+/// (variable number `time`), and where `refusal` is not empty tables are refused with it (a
+/// position or a constraint given by a table would have no derivative at its breakpoints).
+struct expression_tables {
+  const table_list* tables = nullptr;
+  int time = -1;
+  std::string refusal;
+};
+
+/// The piece k (its line from times[k] to times[k+1]) of `table` that holds the segment;
+/// input_error (naming `where`) when the segment leaves the table's times.
+int table_piece_of_segment(const piecewise_linear& table, const time_segment& s, const std::string& where);
+
+/// The time `at` as text, for the messages below.
+namespace detail {
+[[noreturn]] void table_outside(const piecewise_linear& table, const std::string& at, bool certainly,
+                                const std::string& where);
+[[noreturn]] void table_across(const piecewise_linear& table, double breakpoint, const std::string& at,
+                               const std::string& where);
+}  // namespace detail
+
 class expression {
  public:
-  enum class op { number, pi, variable, add, sub, mul, div, pow, neg, sin, cos, tan, exp, log, sqrt };
+  enum class op { number, pi, variable, add, sub, mul, div, pow, neg, sin, cos, tan, exp, log, sqrt,
+                  table, table_rate };
   /// What parse and derivative accept (bounded time and stack on any input):
   /// longer text, deeper nesting, or an expression or derivative whose tree
   /// (shared subexpressions counted each time they are used) is larger or
@@ -56,6 +94,9 @@ class expression {
   /// Parses `text` in the named variables (a name's index is its place in the list).
   static expression parse(const std::string& text, const std::vector<std::string>& variables,
                           const std::string& where);
+  /// The same, with the tables a call may name (name(t)).
+  static expression parse(const std::string& text, const std::vector<std::string>& variables,
+                          const std::string& where, const expression_tables& tables);
   /// d/d(variable), symbolically (the only variable, or variable number `variable`).
   expression derivative(int variable = 0) const;
   /// a - b, symbolically, with the terms that a and b share cancelled: both are
@@ -81,6 +122,8 @@ class expression {
   std::string to_string() const;
   const std::string& where() const { return where_; }
   const std::vector<std::string>& variables() const { return variables_; }
+  /// Whether a table is called (the expression is then smooth between breakpoints only).
+  bool calls_table() const;
 
   /// The value at x (S a scalar or a dual of one); decimal constants and pi
   /// are converted to the scalar at each call.  For repeated evaluation use a
@@ -142,8 +185,48 @@ class expression {
   int root_ = -1;
   std::string where_;
   std::vector<std::string> variables_;
+  table_list tables_;  ///< the tables a table node names (its var: the index here)
   mutable std::size_t operations_ = 0;  ///< set by check_limits
 };
+
+/// A table's value (or its rate: the piece's slope) at x, S a scalar or a dual or jet of one:
+/// on the piece an integrator's step lies in (time_segment_scope), otherwise on the piece that
+/// holds x (right-continuous at a breakpoint: a forward step starts there).  An x that may lie
+/// on both sides of a breakpoint is refused (certification_error): no derivative there.
+/// `converted`: the values in T (null: converted here).
+template <class S>
+S table_value(const piecewise_linear& table, const base_scalar_t<S>* converted, const S& x, bool rate,
+              const std::string& where) {
+  using T = base_scalar_t<S>;
+  const int n = static_cast<int>(table.times.size());
+  int k = 0;
+  if (detail::active_time_segment) {
+    k = table_piece_of_segment(table, *detail::active_time_segment, where);
+  } else {
+    const T& d = detail::value_of(x);
+    auto at_or_after = [&](int i) { return certainly_nonnegative(T(d - T(table.times[static_cast<std::size_t>(i)]))); };
+    auto at_or_before = [&](int i) { return certainly_nonpositive(T(d - T(table.times[static_cast<std::size_t>(i)]))); };
+    if (!at_or_after(0))
+      detail::table_outside(table, to_string(d), certainly_negative(T(d - T(table.times.front()))), where);
+    if (!at_or_before(n - 1))
+      detail::table_outside(table, to_string(d), certainly_positive(T(d - T(table.times.back()))), where);
+    int lo = 0, hi = n - 2;  // the last piece whose start d certainly reaches
+    while (lo < hi) {
+      const int mid = (lo + hi + 1) / 2;
+      if (at_or_after(mid)) lo = mid;
+      else hi = mid - 1;
+    }
+    if (!at_or_before(lo + 1)) detail::table_across(table, table.times[static_cast<std::size_t>(lo + 1)], to_string(d), where);
+    k = lo;
+  }
+  const auto kk = static_cast<std::size_t>(k);
+  const T v0 = converted ? converted[kk] : from_decimal<T>(table.values[kk]);
+  const T v1 = converted ? converted[kk + 1] : from_decimal<T>(table.values[kk + 1]);
+  const T t0(table.times[kk]), t1(table.times[kk + 1]);
+  const T slope = (v1 - v0) / (t1 - t0);
+  if (rate) return detail::from_base<S>(slope);
+  return detail::from_base<S>(v0) + (x - detail::from_base<S>(t0)) * detail::from_base<S>(slope);
+}
 
 namespace detail {
 template <class T>
@@ -230,6 +313,10 @@ S expression::eval_node(int i, const S* x, const std::vector<base_scalar_t<S>>* 
     case op::number: return detail::from_base<S>(constants ? (*constants)[static_cast<std::size_t>(i)] : from_decimal<T>(n.number));
     case op::pi: return detail::from_base<S>(constants ? (*constants)[static_cast<std::size_t>(i)] : constant_pi<T>());
     case op::variable: return x[n.var];
+    case op::table:
+    case op::table_rate:
+      return table_value<S>(*tables_[static_cast<std::size_t>(n.var)], nullptr, eval_node(n.a, x, constants),
+                            n.kind == op::table_rate, where_);
     case op::div: {  // the denominator first: its check comes before the numerator's
       const S den = eval_node(n.b, x, constants);
       const S num = eval_node(n.a, x, constants);
@@ -316,7 +403,15 @@ class expression_tape {
         mapped[i] = found->second;
         continue;
       }
-      entry t{n.kind, a, b, var, 0, false, static_cast<int>(wheres_.size())};
+      entry t{n.kind, a, b, var, 0, false, static_cast<int>(wheres_.size()), nullptr, -1};
+      if (n.kind == expression::op::table || n.kind == expression::op::table_rate) {
+        t.table = e.tables_[static_cast<std::size_t>(n.var)].get();
+        t.table_values = static_cast<int>(table_values_.size());
+        std::vector<T> v;
+        v.reserve(t.table->values.size());
+        for (const std::string& x : t.table->values) v.push_back(from_decimal<T>(x));
+        table_values_.push_back(std::move(v));
+      }
       long k = 0;
       if (n.kind == expression::op::pow && e.is_integer(n.b, k) && k > -1000000 && k < 1000000) {
         t.integer = k;
@@ -345,6 +440,12 @@ class expression_tape {
         case expression::op::number:
         case expression::op::pi: values[i] = detail::from_base<S>(constants_[i]); break;
         case expression::op::variable: values[i] = x[n.var]; break;
+        case expression::op::table:
+        case expression::op::table_rate:
+          values[i] = table_value<S>(*n.table, table_values_[static_cast<std::size_t>(n.table_values)].data(),
+                                     values[static_cast<std::size_t>(n.a)], n.kind == expression::op::table_rate,
+                                     wheres_[static_cast<std::size_t>(n.where)]);
+          break;
         default: {
           const S& a = values[static_cast<std::size_t>(n.a)];
           const S& b = n.b >= 0 ? values[static_cast<std::size_t>(n.b)] : a;
@@ -362,9 +463,12 @@ class expression_tape {
     long integer;
     bool has_integer;
     int where;  ///< index into wheres_
+    const piecewise_linear* table;  ///< a table node's table (its expression's, which outlives the tape)
+    int table_values;               ///< its values in T: index into table_values_
   };
   std::vector<entry> nodes_;
   std::vector<T> constants_;
+  std::vector<std::vector<T>> table_values_;
   std::vector<std::string> wheres_;
   std::map<std::tuple<int, int, int, int, std::string>, int> index_;
 };

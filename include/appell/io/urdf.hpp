@@ -93,6 +93,9 @@ struct urdf_scene_options {
   /// The scene's "contacts" (SCENES.md, "contacts of links"), as JSON text: written into the
   /// system file as they are (a link is named by its URDF name, which is its body's), read there.
   std::string contacts;
+  /// The scene's "tables" (SCENES.md, "tables"), as JSON text: written into the system file as
+  /// they are, a CSV file's path made absolute (the converted file may be read from elsewhere).
+  std::string tables;
 };
 
 /// The `system` scene file (JSON text) of the robot, its base fixed to the ground (or floating:

@@ -143,6 +143,31 @@ struct system_problem {
     return {model, free_columns, bound_columns, timed, energy, names};
   }
 
+  /// The times where the right-hand side is not smooth (every table's breakpoints, sorted, each
+  /// once): enclose and simulate end a step at each (SCENES.md, "tables").
+  std::vector<double> breakpoints() const {
+    std::vector<double> b;
+    for (const auto& table : model->sys.def->tables) b.insert(b.end(), table->times.begin(), table->times.end());
+    std::sort(b.begin(), b.end());
+    b.erase(std::unique(b.begin(), b.end()), b.end());
+    return b;
+  }
+
+  /// input_error, naming the table, unless every table is given from `from` (the time of the
+  /// motion's start) to `elapsed` after it (a table is not extended past its times: a logged force
+  /// ends with its log).
+  template <class S>
+  void check_tables_cover(const S& from, const S& elapsed) const {
+    const S to = S(from + elapsed);
+    for (const auto& table : model->sys.def->tables)
+      if (lower(from) < table->times.front() || upper(to) > table->times.back())
+        throw input_error("tables." + table->name + ": given for t in [" + ode::number_text(table->times.front()) +
+                          ", " + ode::number_text(table->times.back()) + "]; the motion runs over [" +
+                          ode::number_text(approx_double(from)) + ", " + ode::number_text(approx_double(to)) + "]");
+  }
+  /// The state's component that is t (t' = 1), or -1 when t is not carried.
+  int time_component() const { return timed ? coordinates() + static_cast<int>(free_columns.size()) : -1; }
+
   /// The initial state x0 (padded to Dim).
   vector_t<T> initial_state() const {
     vector_t<T> x = vector_t<T>::Zero(std::max(Dim, size()));

@@ -49,12 +49,15 @@
 #include <chrono>
 #include <stdexcept>
 #include <functional>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/QR>
 #include <Eigen/SVD>
 
+#include "appell/expr/time_segment.hpp"
 #include "appell/linalg/solve.hpp"
 #include "appell/ode/taylor.hpp"
 
@@ -390,8 +393,49 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
   const double horizon = approx_double(t_end);
   double h_next = 0, h_factor = 1;
   const I zero_h = I(0);
+  // Where the right-hand side is not smooth in t (a table's breakpoints: expr/expression.hpp):
+  // a step ends at the next one, and its evaluations take the piece between the last one passed
+  // and the next (time_segment_scope): the step's a priori box reaches past both.
+  // The breakpoints are times of the scene (the state's t, component time_index of x0: a run may
+  // start anywhere along a motion, as --locate's do), this loop's t the time elapsed.
+  std::vector<double> breaks;
+  I start_time = I(0);
+  int time_index = -1;
+  if constexpr (requires { prob.breakpoints(); prob.time_component(); }) {
+    breaks = prob.breakpoints();
+    time_index = prob.time_component();
+    if (!breaks.empty() && time_index < 0) throw std::logic_error("enclose: breakpoints in a motion that does not carry t");
+    if (!breaks.empty()) start_time = x0(time_index);
+  }
+  if constexpr (requires { prob.check_tables_cover(start_time, t_end); })
+    if (!breaks.empty()) prob.check_tables_cover(start_time, t_end);
+  std::size_t next_break = 0;
+  while (next_break < breaks.size() && breaks[next_break] <= upper(start_time)) {
+    if (lower(start_time) < breaks[next_break]) {  // passed only if the whole start is at or after it
+      st.complete = false;
+      st.reason = "the motion cannot be started: its t in " + to_string(start_time) +
+                  " may lie on either side of the breakpoint " + number_text(breaks[next_break]) + " of a table";
+      return st;
+    }
+    ++next_break;
+  }
+  double segment_start = next_break > 0 ? breaks[next_break - 1] : approx_double(I(lower(start_time)));
+  for (std::size_t k = next_break; k < breaks.size(); ++k) {  // a horizon on a breakpoint: exactly, or refused
+    const I b = I(I(breaks[k]) - start_time);
+    const bool same = lower(b) == upper(b) && lower(t_end) == upper(t_end) && lower(b) == lower(t_end);
+    if (!same && !(upper(b) < lower(t_end)) && !(upper(t_end) < lower(b)))
+      throw input_error("the horizon " + to_string(t_end) + " may lie on either side of the breakpoint " +
+                        number_text(breaks[k]) + " of a table, measured from the start (end the motion before it, "
+                        "after it, or exactly on it)");
+  }
   while (true) {
     if (!(upper(t) < lower(t_end))) break;  // t_end reached
+    const bool break_left = next_break < breaks.size();
+    const double break_ahead = break_left ? breaks[next_break] : std::numeric_limits<double>::infinity();
+    const I break_elapsed = break_left ? I(I(break_ahead) - start_time) : t_end;  // in this loop's time
+    std::optional<time_segment_scope> segment;
+    if (!breaks.empty()) segment.emplace(time_segment{segment_start, break_ahead});
+    bool at_break = false;  // the step ends at break_ahead
     // Inside an upward_rounding scope (evaluation_scope<interval>) the interval operations trust
     // the mode: a caller's callback or other library that switched it refuses the run here, before
     // a step computed in the wrong mode (kv's own switches did so: docs/motion.md, "Against kv").
@@ -465,7 +509,13 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
       const double hq = std::floor(hd / q) * q;
       h = I(hq);
       last = !(upper(t + h) < lower(t_end));
-      if (last) h = t_end - t;  // the last step ends at t_end exactly (an interval if t_end is not a double)
+      at_break = break_left && upper(break_elapsed) < lower(t_end) && !(upper(t + h) < lower(break_elapsed));
+      if (at_break) {
+        h = break_elapsed - t;  // ends at the breakpoint (an interval if the difference is not a double)
+        last = false;
+      } else if (last) {
+        h = t_end - t;  // the last step ends at t_end exactly (an interval if t_end is not a double)
+      }
       const I tau = scalar_traits<I>::hull(zero_h, h);
       const vector_t<I> base = horner(cX, tau, 0, p - 1);
       // Iterate B = base + x_p(B) tau^p from x_p := 0, inflated.
@@ -594,6 +644,15 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
       for (int i = 0; i < n; ++i) Xn(i) = appell::detail::intersect(Xn(i), aff(i));
     }
     for (int i = 0; i < n; ++i) Xn(i) = appell::detail::intersect(Xn(i), Y(i));
+    // With breakpoints, t (t' = 1) is the start's time plus the time elapsed, exactly: the frames'
+    // rounding would leave a step that ends on a breakpoint within ulps around it, and a run that
+    // starts from that state (--locate's) could not tell on which side it starts.
+    if (!breaks.empty()) {
+      const I now = start_time + I(t + h);
+      if (upper(now) < lower(Xn(time_index)) || upper(Xn(time_index)) < lower(now))
+        throw std::logic_error("enclose: the time component left the time elapsed");
+      Xn(time_index) = appell::detail::intersect(Xn(time_index), now);
+    }
     // Over the whole step: the state and the scene's quantities by their jets.
     enclosed_step<I> step;
     step.t0 = t;
@@ -636,6 +695,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     emit(step);
     ++st.steps;
     t = step.t1;
+    if (at_break) segment_start = breaks[next_break++];
     X = Xn;
     xh = xhn;
     st.t_reached = approx_double(t);

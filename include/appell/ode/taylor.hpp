@@ -23,10 +23,13 @@
 #include <cstdio>
 #include <string>
 #include <functional>
+#include <limits>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
 #include "appell/errors.hpp"
+#include "appell/expr/time_segment.hpp"
 #include "appell/derivatives/slope.hpp"
 #include "appell/derivatives/jet.hpp"
 #include "appell/linalg/scratch.hpp"
@@ -298,6 +301,21 @@ simulate_stats simulate(const P& prob, const vector_t<T>& x0, const T& t_end, co
   const double horizon = approx_double(t_end);
   // 16 units in the last place of the scalar, relative to max(1, |t|)
   const double h_floor = std::ldexp(16.0, -static_cast<int>(std::min(1000u, scalar_traits<T>::precision_bits())));
+  // A table's breakpoints (times of the scene; t here is the time elapsed): a step ends at each,
+  // and takes the piece it lies in (expr/time_segment.hpp), as enclose's steps do.
+  std::vector<double> breaks;
+  T start_time = T(0);
+  if constexpr (requires { prob.breakpoints(); prob.time_component(); }) {
+    breaks = prob.breakpoints();
+    if (!breaks.empty()) {
+      if (prob.time_component() < 0) throw std::logic_error("simulate: breakpoints in a motion that does not carry t");
+      start_time = x0(prob.time_component());
+    }
+  }
+  if constexpr (requires { prob.check_tables_cover(start_time, t_end); })
+    if (!breaks.empty()) prob.check_tables_cover(start_time, t_end);
+  std::size_t next_break = 0;
+  double segment_start = -std::numeric_limits<double>::infinity();
   while (true) {
     T t_next = T(static_cast<double>(next_index)) * every;  // exact: next_index < 2^53
     bool last = false;
@@ -306,11 +324,23 @@ simulate_stats simulate(const P& prob, const vector_t<T>& x0, const T& t_end, co
       last = true;
     }
     while (t < t_next) {
+      while (next_break < breaks.size() && !(T(T(breaks[next_break]) - start_time) > t))
+        segment_start = breaks[next_break++];
+      T stop = t_next;
+      bool at_break = false;
+      if (next_break < breaks.size()) {
+        const T b = T(breaks[next_break]) - start_time;
+        if (b < t_next) stop = b, at_break = true;
+      }
+      std::optional<time_segment_scope> segment;
+      if (!breaks.empty())
+        segment.emplace(time_segment{segment_start, next_break < breaks.size() ? breaks[next_break]
+                                                                                 : std::numeric_limits<double>::infinity()});
       const series<T> c = taylor_series(prob, x, order);
       T h = T(step_from_coefficients(c, tol));
       bool hits = false;
-      if (!(t + h < t_next)) {
-        h = (t_next - t) + tc;  // lands on t_next: elapsed (t - tc) + h
+      if (!(t + h < stop)) {
+        h = (stop - t) + tc;  // lands on stop: elapsed (t - tc) + h
         hits = true;
       } else if (!(approx_double(h) > h_floor * std::max(1.0, std::fabs(approx_double(t))))) {
         // Steps that no longer advance the time: the motion nears a singularity of its
@@ -327,8 +357,9 @@ simulate_stats simulate(const P& prob, const vector_t<T>& x0, const T& t_end, co
         x(i) = s;
       }
       if (hits) {
-        t = t_next;
+        t = stop;
         tc = T(0);
+        if (at_break) segment_start = breaks[next_break++];
       } else {
         const T y = h - tc;
         const T s = t + y;

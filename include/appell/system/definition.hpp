@@ -207,6 +207,7 @@ struct system_definition {
   std::vector<system_constraint_definition> constraints;
   std::vector<system_wrench_definition> wrenches;
   std::vector<system_contact_definition> contacts;
+  table_list tables;  ///< functions of time an applied force, couple or effort may call (SCENES.md, "tables")
 };
 
 }  // namespace appell
