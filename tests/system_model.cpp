@@ -448,7 +448,7 @@ BOOST_AUTO_TEST_CASE(tables_in_a_system_file_are_checked_and_kept_to_loads) {
   };
   BOOST_TEST(refusal_in(csv) == "");
   BOOST_TEST(refusal_in(replace(csv, R"~("value": "f")~", R"~("value": "g")~")).find("no column 'g'") != std::string::npos);
-  BOOST_TEST(refusal_in(replace(csv, "log.csv", "bad.csv")).find("bad.csv:3: 1 fields where the header has 2") != std::string::npos);
+  BOOST_TEST(refusal_in(replace(csv, "log.csv", "bad.csv")).find("bad.csv line 3: 1 fields, the header has 2") != std::string::npos);
   BOOST_TEST(refusal_in(replace(csv, "log.csv", "none.csv")).find("none.csv: cannot read") != std::string::npos);
   // The same table from the list and from the file: the same results, bit for bit.
   const scene_directory_scope in(dir.string());

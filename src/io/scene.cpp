@@ -124,6 +124,12 @@ std::string& scene_directory() {
   return dir;
 }
 
+std::string scene_relative_path(const std::string& path) {
+  const std::filesystem::path p(path);
+  if (p.is_relative() && !scene_directory().empty()) return (std::filesystem::path(scene_directory()) / p).string();
+  return path;
+}
+
 std::string read_text_file(const std::string& path, std::size_t limit, const std::string& what) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw input_error(path + ": is a directory, not " + what);

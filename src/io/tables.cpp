@@ -4,30 +4,13 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 
+#include "appell/io/csv.hpp"
 #include "appell/io/files.hpp"
 #include "appell/scalar/decimal.hpp"
 
 namespace appell {
 namespace {
-
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return {};
-  return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
-}
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (true) {
-    const auto comma = line.find(',', start);
-    out.push_back(trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
-    if (comma == std::string::npos) return out;
-    start = comma + 1;
-  }
-}
 
 std::vector<std::string> decimals(const json_value& v, const std::string& where) {
   if (v.type != json_value::kind::array) throw input_error(where + ": expected a list of numbers");
@@ -41,46 +24,27 @@ table_points from_csv(const json_value& v, const std::string& where) {
   object_reader r(v, where);
   const std::string file = r.string("csv"), t = r.string("t"), value = r.string("value");
   r.finish();
-  std::filesystem::path path(file);
-  if (path.is_relative() && !scene_directory().empty()) path = std::filesystem::path(scene_directory()) / path;
-  const std::string text = read_text_file(path.string(), table_limits::csv_bytes, "a table's CSV file");
+  const std::string path = scene_relative_path(file);
+  const csv::csv_table table =
+      csv::parse_csv(path, read_text_file(path, table_limits::csv_bytes, "a table's CSV file"), true);
+  auto column = [&](const std::string& name, const char* key) {
+    for (std::size_t i = 0; i < table.header.size(); ++i)
+      if (csv::trim(table.header[i]) == name) return i;
+    throw input_error(where + "." + key + ": no column '" + printable(name) + "' in the header of " + path);
+  };
+  const std::size_t ti = column(t, "t"), vi = column(value, "value");
+  if (table.rows.size() > table_limits::points)
+    throw input_error(path + ": more than " + std::to_string(table_limits::points) + " points in one table");
   table_points p;
-  std::size_t line_number = 0, start = 0;
-  std::vector<std::string> header;
-  std::size_t ti = 0, vi = 0;
-  while (start < text.size()) {
-    auto end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    const std::string line = trim(text.substr(start, end - start));
-    start = end + 1;
-    ++line_number;
-    if (line.empty() || line[0] == '#') continue;
-    const std::vector<std::string> fields = split(line);
-    const std::string at = path.string() + ":" + std::to_string(line_number);
-    if (header.empty()) {
-      header = fields;
-      auto column = [&](const std::string& name, const char* key) {
-        for (std::size_t i = 0; i < header.size(); ++i)
-          if (header[i] == name) return i;
-        throw input_error(where + "." + key + ": no column '" + printable(name) + "' in the header of " + at);
-      };
-      ti = column(t, "t");
-      vi = column(value, "value");
-      continue;
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const int line = table.line_of_row[r];
+    for (const std::size_t c : {ti, vi}) {
+      const std::string x = csv::checked_decimal(table, line, c, table.rows[r][c]);
+      if (!is_decimal_literal(x))
+        throw input_error(csv::where(table, line, c) + ": '" + printable(x) + "' is not a decimal number");
+      (c == ti ? p.t : p.value).push_back(x);
     }
-    if (fields.size() != header.size())
-      throw input_error(at + ": " + std::to_string(fields.size()) + " fields where the header has " +
-                        std::to_string(header.size()));
-    for (const std::size_t i : {ti, vi})
-      if (!is_decimal_literal(fields[i]))
-        throw input_error(at + ": '" + printable(fields[i]) + "' in column '" + printable(header[i]) +
-                          "' is not a decimal number");
-    if (p.t.size() >= table_limits::points)
-      throw input_error(at + ": more than " + std::to_string(table_limits::points) + " points in one table");
-    p.t.push_back(fields[ti]);
-    p.value.push_back(fields[vi]);
   }
-  if (header.empty()) throw input_error(path.string() + ": empty (a table's CSV file needs a header and rows)");
   return p;
 }
 

@@ -425,9 +425,7 @@ namespace {
 /// The scene's robot (its parsed file, kept: parsed_urdf) and options, checked; `file` as written.
 const parsed_urdf_file& read_urdf_scene_options(object_reader& scene, std::string& file, urdf_scene_options& o) {
   file = scene.string("file");
-  std::filesystem::path path(file);
-  if (path.is_relative() && !scene_directory().empty()) path = std::filesystem::path(scene_directory()) / path;
-  const parsed_urdf_file& parsed = parsed_urdf(path.string());
+  const parsed_urdf_file& parsed = parsed_urdf(scene_relative_path(file));
   const urdf_robot& robot = parsed.robot;
   if (scene.has("base")) {
     const std::string base = scene.string("base");
@@ -502,9 +500,7 @@ const parsed_urdf_file& read_urdf_scene_options(object_reader& scene, std::strin
     for (const auto& m : t.members) {
       (void)read_table_points(m.value, scene.path("tables") + "." + printable(m.key));
       if (const json_value* csv = m.value.find("csv")) {
-        std::filesystem::path p(csv->text);
-        if (p.is_relative() && !scene_directory().empty()) p = std::filesystem::path(scene_directory()) / p;
-        tables[m.key]["csv"] = std::filesystem::absolute(p).lexically_normal().string();
+        tables[m.key]["csv"] = std::filesystem::absolute(scene_relative_path(csv->text)).lexically_normal().string();
       }
     }
     o.tables = tables.dump();

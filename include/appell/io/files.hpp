@@ -12,6 +12,10 @@ std::string read_text_file(const std::string& path, std::size_t limit, const std
 /// The directory of the scene file being read ("" when it is not a file), for paths in it.
 std::string& scene_directory();
 
+/// A path a scene names: as written when absolute or when the scene is not a file, otherwise
+/// relative to scene_directory().
+std::string scene_relative_path(const std::string& path);
+
 /// scene_directory() set while it lives.
 class scene_directory_scope {
  public:

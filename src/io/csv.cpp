@@ -1,5 +1,5 @@
-// CSV files of the reference commands (csv.hpp).
-#include "csv.hpp"
+// CSV files (appell/io/csv.hpp).
+#include "appell/io/csv.hpp"
 
 #include <cctype>
 #include <stdexcept>
@@ -8,7 +8,7 @@
 #include "appell/io/json.hpp"
 #include "appell/scalar/decimal.hpp"
 
-namespace appell::cli {
+namespace appell::csv {
 
 
 std::string where(const csv_table& t, int line, std::size_t column) {
@@ -17,7 +17,7 @@ std::string where(const csv_table& t, int line, std::size_t column) {
 }
 
 /// The CSV `text` read from `path` (named in the messages).
-csv_table parse_csv(const std::string& path, const std::string& text) {
+csv_table parse_csv(const std::string& path, const std::string& text, bool comments) {
   csv_table t;
   t.path = path;
   std::vector<std::string> fields;
@@ -41,6 +41,12 @@ csv_table parse_csv(const std::string& path, const std::string& text) {
   };
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
+    if (comments && c == '#' && !quoted && !any && fields.empty() &&
+        field.find_first_not_of(" \t") == std::string::npos) {  // a comment line (blanks before # allowed)
+      field.clear();
+      while (i + 1 < text.size() && text[i + 1] != '\n') ++i;
+      continue;  // its line break ends an empty row, which is skipped as blank
+    }
     if (quoted) {
       if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
         field += '"';
@@ -110,4 +116,4 @@ std::string csv_field(const std::string& s) {
   return out + "\"";
 }
 
-}  // namespace appell::cli
+}  // namespace appell::csv
