@@ -12,28 +12,19 @@
 
 #include "appell/io/json.hpp"
 #include "appell/io/scene.hpp"
+#include "appell/io/scene_fields.hpp"
 #include "csv.hpp"
 #include "reference.hpp"
 
 namespace appell::cli {
 
-/// A field of the scene a column replaces: `omega[1]` (a key of the scene's "state", an entry
-/// of a list there) or a dotted path from the scene's root (`top.A`).
-struct field_path {
-  std::vector<std::pair<std::string, int>> steps;  ///< key, and list index or -1
-};
-
-/// The column's name as a path; input_error when it is not key, key[i] or a.b.c.
-field_path parse_column(const std::string& name);
-
-/// The number (or decimal string) at `p` in `root`, or null when there is none.
-json_value* locate(json_value& root, const field_path& p);
-
-/// Every decimal of the scene (numbers, and strings that are decimals) replaced by its nearest binary64.
-void to_binary64(json_value& v, const std::string& path);
-
-/// The exact decimal value of the double nearest to the decimal s (`field` names it in messages).
-std::string nearest_binary64(const std::string& s, const std::string& field);
+// The scene's field paths and the exact decimals of doubles are the library's (io/scene_fields.hpp).
+using appell::exact_decimal;
+using appell::field_path;
+using appell::locate;
+using appell::nearest_binary64;
+using appell::parse_column;
+using appell::to_binary64;
 
 /// A decimal with at most `digits` decimals as an integer count of 10^-digits; input_error otherwise.
 long long scaled_decimal(const std::string& text, int digits, const std::string& field);

@@ -6,6 +6,7 @@
 // (motion/engine.hpp); this unit only declares them.
 #include "appell/motion/motion.hpp"
 
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -78,9 +79,57 @@ void run(const scene_input& scene, const run_request& q, const char* command) {
 #endif
 }
 
-/// The settings a run needs, or input_error naming the field.
+/// A positive finite decimal, or input_error naming the flag (the command's own message).
+void require_positive(const char* flag, const std::string& text) {
+  double v = 0;
+  try {
+    v = from_decimal<double>(text);
+  } catch (const std::exception&) {
+    v = 0;
+  }
+  if (!(v > 0) || !std::isfinite(v)) throw input_error(std::string(flag) + ": expected a positive decimal, got '" + printable(text) + "'");
+}
+void require_positive(const char* flag, const std::optional<double>& v) {
+  if (v && (!(*v > 0) || !std::isfinite(*v)))
+    throw input_error(std::string(flag) + ": expected a positive decimal, got '" + to_decimal(*v) + "'");
+}
+
+/// The settings a run needs, checked as the commands check their flags (a library caller, C++ or
+/// Python, gets the same one-line refusal), or input_error naming the field.
 void require_horizon(const settings& s) {
   if (s.t_end.empty()) throw input_error("--t-end: required (the horizon, a positive decimal)");
+  require_positive("--t-end", s.t_end);
+  if (!s.every.empty()) require_positive("--every", s.every);
+  if (s.order && (*s.order < 2 || *s.order > 60))
+    throw input_error("--order: expected an integer from 2 to 60, got '" + std::to_string(*s.order) + "'");
+  require_positive("--tol", s.tol);
+  if (s.tol && *s.tol >= 1)
+    throw input_error("--tol: expected a positive decimal below 1 (a relative error per step), got '" + to_decimal(*s.tol) + "'");
+  require_positive("--max-width", std::optional<double>(s.max_width));
+  require_positive("--max-seconds", s.max_seconds);
+  require_positive("--locate", s.locate);
+  require_positive("--resolution", s.resolution);
+  if (s.jobs < 0 || s.jobs > 1024) throw input_error("--jobs: expected an integer from 1 to 1024, got '" + std::to_string(s.jobs) + "'");
+  if (s.mu) {
+    bool nonnegative = false;
+    try {
+      nonnegative = decimal_sign_of_sum({{1, *s.mu}}) >= 0;
+    } catch (const std::exception&) {
+    }
+    if (!nonnegative) throw input_error("--mu: expected a decimal >= 0 (every contact's friction coefficient), got '" + printable(*s.mu) + "'");
+  }
+  if (!s.vary_field.empty()) {
+    const std::string v = s.vary_field + "=" + s.vary_lo + ":" + s.vary_hi;
+    for (const std::string* d : {&s.vary_lo, &s.vary_hi}) {
+      try {
+        (void)decimal_sign_of_sum({{1, *d}});
+      } catch (const std::exception&) {
+        throw input_error("--vary: expected FIELD=lo:hi with decimal bounds, got '" + printable(v) + "'");
+      }
+    }
+    if (decimal_sign_of_sum({{1, s.vary_hi}, {-1, s.vary_lo}}) <= 0)
+      throw input_error("--vary: the range's lower bound must be below its upper bound, got '" + printable(v) + "'");
+  }
 }
 
 }  // namespace
