@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "appell/errors.hpp"
 #include "appell/io/json_text.hpp"
 
 namespace appell::motion {
@@ -165,7 +166,11 @@ pieces_outcome run_pieces(const piece_runner& run, const piece_network& net, con
         } else {
           decided += std::ldexp(1.0, -static_cast<int>(r.path.size()));
           out.done.push_back(std::move(r));
-          progress(decided);
+          try {
+            progress(decided);
+          } catch (const ode::run_stopped& e) {  // stopped on request (Ctrl-C from Python): no piece
+            if (out.stopped.empty()) out.stopped = e.what();  // more is handed out; those running end
+          }
         }
       }
     }

@@ -307,8 +307,19 @@ struct progress_bridge {
   std::optional<py::error_already_set> raised;
   std::chrono::steady_clock::time_point last{};
 
+  std::chrono::steady_clock::time_point last_check{};
+
   void operator()(double fraction) {
-    // every call checks for Ctrl-C; the callback hears at most 20 times a second and at the end
+    // Ctrl-C is looked for every 20 ms, the callback called at most 20 times a second and at the
+    // end: between those the run goes on without taking the GIL (a busy Python thread would make
+    // each step wait for it).  The callback and Python's signal handlers run in round-to-nearest:
+    // the run may call this inside an interval evaluation's upward rounding, which is restored
+    // after.
+    const auto now = std::chrono::steady_clock::now();
+    const bool callback_due = !callback.is_none() && (fraction >= 1 || now - last >= std::chrono::milliseconds(50));
+    if (!callback_due && now - last_check < std::chrono::milliseconds(20)) return;
+    last_check = now;
+    const nearest_rounding nearest;
     py::gil_scoped_acquire hold;
     if (PyErr_CheckSignals() != 0) {
       py::error_already_set e;
@@ -319,9 +330,7 @@ struct progress_bridge {
       }
       throw ode::run_stopped("interrupted (KeyboardInterrupt)");
     }
-    if (callback.is_none()) return;
-    const auto now = std::chrono::steady_clock::now();
-    if (fraction < 1 && now - last < std::chrono::milliseconds(50)) return;
+    if (!callback_due) return;
     last = now;
     try {
       callback(fraction);
@@ -334,12 +343,23 @@ struct progress_bridge {
   std::function<void(double)> function() {
     return [this](double f) { (*this)(f); };
   }
-  /// After the run, with the GIL: the callback's own exception raised again.
-  void rethrow() {
+  /// After the run, with the GIL: the callback's own exception raised again; then the run's own
+  /// failure, where a stop on request that escaped the run (before it had anything to report)
+  /// is appell.Interrupted with no result.
+  void rethrow(std::exception_ptr failure = nullptr) {
     if (raised) {
       py::error_already_set e = std::move(*raised);
       raised.reset();
       throw e;
+    }
+    if (!failure) return;
+    try {
+      std::rethrow_exception(failure);
+    } catch (const ode::run_stopped& e) {
+      if (!interrupted) throw;
+      const py::object type = py::module_::import("appell.errors").attr("Interrupted");
+      PyErr_SetObject(type.ptr(), type(std::string("interrupted before any result: ") + e.what(), py::none()).ptr());
+      throw py::error_already_set();
     }
   }
 };
@@ -468,8 +488,7 @@ py::tuple run_motion(const py_scene& scene, const py::dict& options, const py::o
       failure = std::current_exception();
     }
   }
-  bridge.rethrow();
-  if (failure) std::rethrow_exception(failure);
+  bridge.rethrow(failure);
   py::dict tables;
   for (const std::string& name : rows.order()) tables[py::str(name)] = table_dict(rows.tables().at(name));
   s.progress = nullptr;
@@ -599,9 +618,10 @@ std::shared_ptr<py_reference> reference_run(const py_scene& scene, const std::ve
     }
   }
   out->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  bridge.rethrow();
-  if (failure) std::rethrow_exception(failure);
+  bridge.rethrow(failure);
   out->interrupted = bridge.interrupted;
+  out->state_names.resize(out->states.size());  // an interrupted run: the states it certified
+  out->inputs.resize(out->states.size());
   return out;
 }
 
@@ -656,7 +676,11 @@ PYBIND11_MODULE(_core, m) {
       raise("NotCertified", "cannot certify: " + printable(e.what(), 400));
     } catch (const appell::domain_error& e) {
       raise("NotCertified", "cannot certify: " + printable(e.what(), 400));
-    } catch (const mp::interval_error& e) {
+    } catch (const py::error_already_set&) {
+      throw;  // Python's own, and pybind11's: their translators
+    } catch (const py::builtin_exception&) {
+      throw;
+    } catch (const std::exception& e) {  // anything else of the library's: a bug (exit status 4)
       raise("InternalError", "internal error: " + printable(e.what(), 400));
     }
   });
@@ -705,8 +729,7 @@ PYBIND11_MODULE(_core, m) {
             failure = std::current_exception();
           }
         }
-        bridge.rethrow();
-        if (failure) std::rethrow_exception(failure);
+        bridge.rethrow(failure);
         st.progress = nullptr;
         return py::make_tuple(json_to_python(motion::summary(*report, st, s.name)), pieces_dict(*report), bridge.interrupted);
       });

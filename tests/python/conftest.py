@@ -16,10 +16,15 @@ def scenes():
     return SCENES
 
 
-def build_program(name):
-    """A program of the build tree (the `appell` command, an engine), or None."""
+def build_program(name, required=True):
+    """A program of the build tree (the `appell` command, an engine). Under CTest
+    (APPELL_BUILD_DIR set) a required one must be there; an optional one (an engine whose package
+    CMake did not find) is None, and the test that needs it is skipped, saying so."""
+    under_ctest = "APPELL_BUILD_DIR" in os.environ
     build = pathlib.Path(os.environ.get("APPELL_BUILD_DIR", SOURCE / "build"))
     for p in (build / name, build / "tests" / "engines" / name):
         if p.exists():
             return p
+    if required and under_ctest:
+        raise FileNotFoundError(f"{name}: not in the build tree {build}")
     return None

@@ -20,6 +20,10 @@ def test_examples_run_as_printed(path, tmp_path, monkeypatch):
     assert blocks, f"{path} has no Python example"
     os.symlink(SOURCE / "data", tmp_path / "data")
     monkeypatch.chdir(tmp_path)  # the examples' paths are relative to the source tree; their files land here
+    import mpmath
+
+    saved = mpmath.mp.dps  # the examples set mpmath's precision for themselves: restored after
+    monkeypatch.setattr(mpmath.mp, "dps", saved)
     for code in blocks:
         namespace = {"__name__": "__example__"}
         exec(compile(code, f"{path} example", "exec"), namespace)

@@ -1,6 +1,7 @@
 """Interval: an enclosure as appell prints it, its bounds exact (decimal text) and as floats."""
 
 import math
+import sys
 from fractions import Fraction
 
 from . import _core
@@ -32,11 +33,22 @@ def exact(x):
 
 
 def _float_up(q):
-    """The least double >= the Fraction q."""
-    f = float(q)
+    """The least double >= the Fraction q (inf beyond the doubles' range)."""
+    try:
+        f = float(q)
+    except OverflowError:  # beyond the largest double: inf above, the most negative double below
+        return math.inf if q > 0 else -sys.float_info.max
     if Fraction(f) < q:
         f = math.nextafter(f, math.inf)
     return f
+
+
+def _float_nearest(q):
+    """The double nearest the Fraction q (+-inf beyond the doubles' range)."""
+    try:
+        return float(q)
+    except OverflowError:
+        return math.inf if q > 0 else -math.inf
 
 
 class Interval:
@@ -78,7 +90,7 @@ class Interval:
 
     def mid(self):
         """The midpoint of the exact bounds, rounded to the nearest float."""
-        return float((Fraction(self.lo_text) + Fraction(self.hi_text)) / 2)
+        return _float_nearest((Fraction(self.lo_text) + Fraction(self.hi_text)) / 2)
 
     def mag(self):
         """max |x| over the interval, rounded up to a float."""

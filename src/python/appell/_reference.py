@@ -16,7 +16,8 @@ class Reference:
 
     ``quantities`` names each quantity (a result's component, ``pivot_force[0]``; a derived
     value as ``derived.NAME``); ``states`` names each state; ``certified`` says per state
-    whether it was certified (``reasons`` says why not: refused input, or no certificate).
+    whether it was certified (``reasons`` says why not: refused input, or no certificate);
+    ``inputs`` holds per state the exact decimal each of ``fields`` was given.
     Per state and quantity, (states, quantities) float arrays: ``lower`` (rounded down),
     ``upper`` (rounded up), ``double`` (the double nearest the true value, where ``decided``),
     ``tolerance`` (what a double-precision engine is held to); NaN for a refused state.
@@ -30,6 +31,7 @@ class Reference:
         self.quantities = list(core.quantities)
         self.states = list(core.states)
         self.reasons = list(core.reasons)
+        self.inputs = list(core.inputs)  # per state, the decimal given to each field
         self.certified = core.certified
         self.scalar = core.scalar
         self.bits = core.bits
@@ -101,7 +103,7 @@ def _states_table(states, fields, names):
         columns = [np.asarray(states[f]) for f in fields]
         if len({len(c) for c in columns}) > 1:
             raise InputError("states: the columns have different lengths")
-        if columns and all(c.dtype.kind == "f" for c in columns):
+        if columns and all(_is_double_dtype(c.dtype) for c in columns):
             return fields, np.column_stack(columns).astype(float), names
         rows = [[_text(c[i], f) for c, f in zip(columns, fields)] for i in range(len(columns[0]) if columns else 0)]
         return fields, rows, names
@@ -113,23 +115,37 @@ def _states_table(states, fields, names):
         a = a.reshape(-1, 1) if len(fields) == 1 else a.reshape(1, -1)
     if a.ndim != 2 or a.shape[1] != len(fields):
         raise InputError(f"states: expected a (states, {len(fields)}) array for the fields {fields}, got shape {a.shape}")
-    if a.dtype.kind == "f":
-        return fields, a, names
+    if _is_double_dtype(a.dtype):
+        return fields, a.astype(float), names
     if a.dtype.kind in "iu":
         return fields, [[str(int(x)) for x in row] for row in a], names
     return fields, [[_text(x, f) for x, f in zip(row, fields)] for row in a], names
 
 
+def _is_double_dtype(dtype):
+    """float64, or a narrower float every value of which is a double exactly."""
+    return dtype.kind == "f" and dtype.itemsize <= 8
+
+
 def _text(x, field):
+    """A state's value as the decimal text certified: a str as written, an int exactly, a double
+    exactly; a number that is no double (a long double, a Fraction) refused, never rounded."""
+    import decimal
+
     if isinstance(x, str):
         return x
     if isinstance(x, (bool, np.bool_)):
         raise InputError(f"{field}: a bool is not a number")
     if isinstance(x, (int, np.integer)):
         return str(int(x))
+    if isinstance(x, decimal.Decimal):
+        return str(x)
     if isinstance(x, (float, np.floating)):
-        return _core._exact_decimal(float(x))
-    return str(x)
+        f = float(x)
+        if isinstance(x, np.floating) and x.dtype.itemsize > 8 and np.longdouble(f) != x:
+            raise InputError(f"{field}: {x!r} is not a double; give it as a str (a decimal)")
+        return _core._exact_decimal(f)
+    raise InputError(f"{field}: a {type(x).__name__} is not a value of a state (str, int, float, Decimal)")
 
 
 def reference(scene, states, *, fields=None, names=None, scalar="interval", bits=None, inputs="decimal",
@@ -173,8 +189,8 @@ class Score:
     ``min_digits``, ``median_digits``, ``worst_state``; ``digits[q]`` the correct digits of each
     value (-log10 of its relative error bound; absolute where the enclosure holds 0).
     ``missing`` lists quantities of the reference that were not given.  ``bool(score)`` is
-    ``passed``, so ``assert appell.score(ref, values)`` reads as it should; ``report()`` is the
-    table the command prints."""
+    ``passed``, so ``assert appell.score(ref, values)`` reads as it should; ``report()`` is a
+    table of the same figures as ``appell score`` prints."""
 
     def __init__(self, quantities, digits, missing, passed, min_digits):
         self.quantities = quantities
@@ -229,22 +245,34 @@ def _values_matrix(reference, values, skip):
             if missing:
                 raise InputError(f"values: no row for the state {missing[0]!r} of the reference")
             df = df.iloc[[where[x] for x in reference.states]]
-        values = {c: df[c].to_numpy(dtype=float) for c in df.columns if c != "state"}
+        values = {c: df[c].to_numpy() for c in df.columns if c != "state"}
     if isinstance(values, dict):
         out = {}
         for name, col in values.items():
-            col = np.asarray(col, dtype=float)
+            col = _doubles(col, f"values[{name!r}]")
             if col.shape != (n,):
                 raise InputError(f"values[{name!r}]: expected {n} values, got shape {col.shape}")
             if name not in reference.quantities:
                 raise InputError(f"values: no quantity {name!r} in the reference")
             out[reference.quantities.index(name)] = col
         return out
-    a = np.asarray(values, dtype=float)
+    a = _doubles(values, "values")
     if a.shape != (n, len(reference.quantities)):
         raise InputError(f"values: expected a ({n}, {len(reference.quantities)}) array in the order of "
                          f"reference.quantities, got shape {a.shape}")
     return {j: a[:, j] for j in range(a.shape[1])}
+
+
+def _doubles(values, what):
+    """Another implementation's values as float64, refused (never rounded) where they are not
+    doubles: a long double, a decimal str, an object array."""
+    a = np.asarray(values)
+    if _is_double_dtype(a.dtype):
+        return a.astype(float)
+    if a.dtype.kind in "iu" and (a.size == 0 or np.abs(a).max() <= 2**53):
+        return a.astype(float)
+    raise InputError(f"{what}: expected doubles (an implementation's float64 results), got {a.dtype}; "
+                     "a value that is no double has no certified score")
 
 
 def _matches(pattern, name):
@@ -271,6 +299,8 @@ def score(reference, values, *, min_digits=None, skip=()):
     ok = np.asarray(reference.certified, dtype=bool)
     lo_all, hi_all, tol_all = reference.lower, reference.upper, reference.tolerance
     quantities, digits_of = {}, {}
+    if not [j for j in scored if j in given]:
+        raise InputError("score: no quantity scored (every quantity skipped or not given): a score must not pass on nothing")
     passed = not missing and bool(ok.any())
     for j in scored:
         if j not in given:
@@ -295,10 +325,12 @@ def score(reference, values, *, min_digits=None, skip=()):
             else:
                 dist = min(abs(xe - lo_e), abs(xe - hi_e))
                 within[k] = tol_t == "inf" or dist <= Fraction(tol_t)
-        err = np.maximum(np.abs(x - lo), np.abs(hi - x))
-        scale = np.where(lo > 0, lo, np.where(hi < 0, -hi, 1.0))
-        with np.errstate(divide="ignore"):
-            d = np.where(err == 0, np.inf, -np.log10(err / scale))
+        # |x - exact| <= max(|x - lo|, |hi - x|), relative to min |exact| where the enclosure
+        # excludes 0 (absolute otherwise): each step nudged the way that lowers the digits
+        err = np.nextafter(np.maximum(np.abs(x - lo), np.abs(hi - x)), np.inf)
+        scale = np.nextafter(np.where(lo > 0, lo, np.where(hi < 0, -hi, 1.0)), 0)
+        with np.errstate(divide="ignore", over="ignore"):
+            d = np.where(np.maximum(np.abs(x - lo), np.abs(hi - x)) == 0, np.inf, -np.log10(np.nextafter(err / scale, np.inf)))
         digits_of[name] = d
         worst = int(np.argmin(d)) if len(d) else 0
         quantities[name] = {

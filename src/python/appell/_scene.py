@@ -211,10 +211,11 @@ class Scene:
         d.update(more)
         return Scene(self._s.with_fields(d, True))
 
-    def with_parameter(self, path, value=None, /, **more):
+    def with_parameter(self, path=None, value=None, /, **more):
         """A copy with numbers of the scene replaced by their path from the root:
-        ``with_parameter("top.A", "1.5")`` or ``with_parameter(gravity=...)`` (a plain keyword is
-        a top-level field; use the first form for a dotted path)."""
+        ``with_parameter("top.A", "1.5")``, ``with_parameter({"gravity[2]": "-9.80665",
+        "parameters.m": 2})``, or a top-level number as a keyword (``with_parameter(mu="0.4")``).
+        Each path names one number (``[i]`` for a list's entry)."""
         d = {}
         if isinstance(path, dict):
             d.update(path)
@@ -350,8 +351,8 @@ def simulate(scene, t_end, *, scalar="double", bits=None, every=None, order=None
     ``trajectory`` table holds t, the state, the results and the invariants.
 
     ``progress(fraction)`` is called as the run goes (at most 20 times a second); the run
-    releases the GIL; Ctrl-C stops it cleanly and raises ``appell.Interrupted`` whose
-    ``result`` is the Run up to there.  A run that cannot go on (a step collapse, a state no
+    releases the GIL; Ctrl-C stops it cleanly (within 20 ms) and raises ``appell.Interrupted``
+    whose ``result`` is the Run up to there.  A run that cannot go on (a step collapse, a state no
     longer finite, ``max_seconds``) returns incomplete (``run.complete`` False)."""
     options = dict(scalar=scalar, bits=bits, t_end=t_end, every=every, order=order, tol=tol, max_seconds=max_seconds)
     s = _scene_of(scene)
