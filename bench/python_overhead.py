@@ -3,7 +3,9 @@
 
 1. `eval` of the WAM arm in `interval`, called in a loop from Python, against the same loop in
    C++ (the module's _cpp_eval_loop: the same library call, evaluation and printing, without
-   Python between the iterations); and the same with every result's bounds taken into NumPy.
+   Python between the iterations); the same with every result's bounds taken into NumPy; and,
+   where the benchmarks are built, the same calls in a program (appell_bench_eval_loop: the
+   library's thread-local storage accessed as a program's, not as a shared object's).
 2. `reference` of N states (default 10^4) of the heavy top from a NumPy array, against `appell
    reference --states` on the same states (exact decimals of the same doubles) in the same run.
 
@@ -36,7 +38,7 @@ def median_time(f, reps):
     return statistics.median(times)
 
 
-def eval_overhead(reps, loops):
+def eval_overhead(reps, loops, build):
     scene = appell.Scene.from_file(os.path.join(SOURCE, "data/scenes/urdf_wam.json"))
     scene.eval("interval")  # warm: the first call prepares caches
 
@@ -48,8 +50,13 @@ def eval_overhead(reps, loops):
         for _ in range(loops):
             scene.eval("interval").bounds()
 
-    cpp, py, py_b = [], [], []
-    for _ in range(reps):  # interleaved: the machine's load moves all three alike
+    program = os.path.join(build, "bench", "appell_bench_eval_loop")
+    cpp, py, py_b, prog = [], [], [], []
+    for _ in range(reps):  # interleaved: the machine's load moves them all alike
+        if os.path.exists(program):  # the same calls in a program (seconds per evaluation)
+            prog.append(loops * float(subprocess.run([program, os.path.join(SOURCE, "data/scenes/urdf_wam.json"),
+                                                      "interval", str(loops)], capture_output=True, text=True,
+                                                     check=True).stdout))
         cpp.append(appell._core._cpp_eval_loop(scene._s, "interval", None, True, loops))
         t0 = time.perf_counter()
         python_loop()
@@ -62,6 +69,10 @@ def eval_overhead(reps, loops):
     print(f"  C++ loop      {c * 1e6:9.1f} us per eval")
     print(f"  Python loop   {p * 1e6:9.1f} us per eval   overhead {100 * (p / c - 1):+.1f}%")
     print(f"  + bounds()    {b * 1e6:9.1f} us per eval   overhead {100 * (b / c - 1):+.1f}%  (every result into NumPy)")
+    if prog:
+        g = statistics.median(prog) / loops
+        print(f"  in a program  {g * 1e6:9.1f} us per eval   (the library linked into a program, appell_bench_eval_loop;"
+              f" the module's C++ loop / this = {c / g:.3f})")
     return p / c
 
 
@@ -114,7 +125,7 @@ def main():
     a.add_argument("--loops", type=int, default=2000)
     o = a.parse_args()
     print(f"python {sys.version.split()[0]}, appell module {appell.__file__}")
-    eval_overhead(o.reps, o.loops)
+    eval_overhead(o.reps, o.loops, o.build)
     reference_throughput(o.build, o.n, o.reps)
 
 
