@@ -117,3 +117,6 @@ def test_a_round_trip_against_dart():
     values.loc[5, "j3_ddot"] += 100 * ref.tolerance[5, ref.index("j3_ddot")]
     bad = appell.score(ref, values, skip=["j0_*"])
     assert not bad.passed and bad.failures() == ["j3_ddot"] and bad.quantities["j3_ddot"]["worst_state"] == "s5"
+    assert bad.quantities["j3_ddot"]["worst_tolerance_state"] == "s5"
+    report = bad.report()
+    assert "(outside tolerance: worst s5)" in report and report.endswith("values outside the suggested tolerance")

@@ -189,8 +189,8 @@ class Score:
     ``min_digits``, ``median_digits``, ``worst_state``; ``digits[q]`` the correct digits of each
     value (-log10 of its relative error bound; absolute where the enclosure holds 0).
     ``missing`` lists quantities of the reference that were not given.  ``bool(score)`` is
-    ``passed``, so ``assert appell.score(ref, values)`` reads as it should; ``report()`` is a
-    table of the same figures as ``appell score`` prints."""
+    ``passed``, so ``assert appell.score(ref, values)`` reads as it should; ``report()`` is the
+    table ``appell score`` prints."""
 
     def __init__(self, quantities, digits, missing, passed, min_digits):
         self.quantities = quantities
@@ -210,15 +210,26 @@ class Score:
         return out + self.missing
 
     def report(self):
-        lines = [f"{'quantity':<28}{'n':>7}{'inside':>8}{'within tol.':>13}{'min digits':>12}{'median digits':>15}  worst state"]
+        """The table ``appell score`` prints (without its first line, which names files), and its verdict."""
+        fmt = lambda d: "exact" if math.isinf(d) else f"{d:.1f}"
+        lines = [f"{'quantity':<24}{'values':>8}{'inside':>9}{'within tol.':>13}{'min digits':>12}{'median digits':>15}"
+                 "  worst state"]
         for q, s in self.quantities.items():
-            fmt = lambda d: "exact" if math.isinf(d) else f"{d:.1f}"
-            lines.append(f"{q:<28}{s['n']:>7}{s['inside']:>8}{s['within']:>13}{fmt(s['min_digits']):>12}"
-                         f"{fmt(s['median_digits']):>15}  {s['worst_state']}")
-        for q in self.missing:
-            lines.append(f"{q:<28} missing")
-        lines.append("passed" if self.passed else "FAILED: " + ", ".join(self.failures()))
-        return "\n".join(lines)
+            outside = f" (outside tolerance: worst {s['worst_tolerance_state']})" if s["within"] < s["n"] else ""
+            lines.append(f"{q:<24}{s['n']:>8}{s['inside']:>9}{s['within']:>13}{fmt(s['min_digits']):>12}"
+                         f"{fmt(s['median_digits']):>15}  {s['worst_state']}{outside}")
+        if self.missing:
+            lines += ["", f"FAILED: {len(self.missing)} quantities of the reference are not given: "
+                      f"{', '.join(self.missing)} (skip=[NAME, ...] leaves a quantity out)"]
+        within = not self.missing and all(s["within"] == s["n"] for s in self.quantities.values())
+        verdict = ("not every value of the reference was given" if self.missing
+                   else "every value within the suggested tolerance" if within
+                   else "values outside the suggested tolerance")
+        if self.min_digits is not None:
+            enough = all(s["median_digits"] >= self.min_digits for s in self.quantities.values())
+            verdict += (f"; {'every quantity has' if enough else 'not every quantity has'} a median of at least "
+                        f"{self.min_digits:g} correct digits")
+        return "\n".join(lines + ["", verdict])
 
     def __repr__(self):
         return f"<appell.Score: {'passed' if self.passed else 'failed'}, {len(self.quantities)} quantities>"
@@ -315,6 +326,7 @@ def score(reference, values, *, min_digits=None, skip=()):
             raise InputError(f"values[{name!r}]: not a finite number at state {bad}")
         # inside for certain where x >= the double above lo's float, and <= the one below hi's
         surely_inside = (x >= np.nextafter(lo, np.inf)) & (x <= np.nextafter(hi, -np.inf))
+        worst_excess, worst_tolerance_state = 0.0, ""
         inside = surely_inside.copy()
         within = surely_inside.copy()
         for k in np.flatnonzero(~surely_inside):
@@ -325,6 +337,10 @@ def score(reference, values, *, min_digits=None, skip=()):
             else:
                 dist = min(abs(xe - lo_e), abs(xe - hi_e))
                 within[k] = tol_t == "inf" or dist <= Fraction(tol_t)
+                if not within[k]:
+                    excess = math.inf if Fraction(tol_t) == 0 else float(dist / Fraction(tol_t))
+                    if excess > worst_excess:
+                        worst_excess, worst_tolerance_state = excess, states[k]
         # |x - exact| <= max(|x - lo|, |hi - x|), relative to min |exact| where the enclosure
         # excludes 0 (absolute otherwise): each step nudged the way that lowers the digits
         err = np.nextafter(np.maximum(np.abs(x - lo), np.abs(hi - x)), np.inf)
@@ -340,6 +356,7 @@ def score(reference, values, *, min_digits=None, skip=()):
             "min_digits": float(d.min()) if len(d) else math.inf,
             "median_digits": float(np.median(d)) if len(d) else math.inf,
             "worst_state": states[worst] if len(d) else "",
+            "worst_tolerance_state": worst_tolerance_state,  # the value farthest outside, by tolerances
         }
         if quantities[name]["within"] < quantities[name]["n"]:
             passed = False
