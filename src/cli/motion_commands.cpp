@@ -10,21 +10,13 @@
 #include <thread>
 #include <iostream>
 
+#include "appell/motion/checks.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/format.hpp"
 
 namespace appell::cli {
 
-double positive_decimal(const std::string& flag, const std::string& text) {
-  double v = 0;
-  try {
-    v = from_decimal<double>(text);
-  } catch (const std::exception&) {
-    throw input_error(flag + ": expected a positive decimal, got '" + text + "'");
-  }
-  if (!(v > 0) || !std::isfinite(v)) throw input_error(flag + ": expected a positive decimal, got '" + text + "'");
-  return v;
-}
+double positive_decimal(const std::string& flag, const std::string& text) { return motion::positive_decimal(flag, text); }
 
 std::string parse_taylor_order(const std::string& flag, const std::string& text, std::optional<int>& into) {
   unsigned n = 0;
@@ -83,22 +75,17 @@ std::string parse_motion_arguments(int argc, char** argv, int first, motion_opti
       o.vary_field = v.substr(0, eq);
       o.vary_lo = v.substr(eq + 1, colon - eq - 1);
       o.vary_hi = v.substr(colon + 1);
-      for (const std::string* d : {&o.vary_lo, &o.vary_hi}) {
-        try {
-          (void)decimal_sign_of_sum({{1, *d}});
-        } catch (const std::exception&) {
-          return "--vary: expected FIELD=lo:hi with decimal bounds, got '" + v + "'";
-        }
-      }
-      if (decimal_sign_of_sum({{1, o.vary_hi}, {-1, o.vary_lo}}) <= 0)
-        return "--vary: the range's lower bound must be below its upper bound, got '" + v + "'";
-    } else if (a == "--mu") {
-      bool nonnegative = false;
       try {
-        nonnegative = decimal_sign_of_sum({{1, v}}) >= 0;
-      } catch (const std::exception&) {
+        motion::check_range(o.vary_field, o.vary_lo, o.vary_hi);
+      } catch (const input_error& e) {
+        return e.what();
       }
-      if (!nonnegative) return "--mu: expected a decimal >= 0 (every contact's friction coefficient), got '" + printable(v) + "'";
+    } else if (a == "--mu") {
+      try {
+        motion::check_friction(v);
+      } catch (const input_error& e) {
+        return e.what();
+      }
       o.mu = v;
     } else if (a == "--resolution") {
       if (std::string why = positive(o.resolution); !why.empty()) return why;

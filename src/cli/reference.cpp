@@ -215,23 +215,11 @@ reference_state_output reference_run::compute(std::size_t i) const {
     v->text = r.values[i][c];
     s.inputs.emplace_back(r.states.header[c + r.first], r.values[i][c]);
   }
-  try {
-    if (r.urdf && r.o.binary64_inputs) {  // the robot's own numbers as an engine reads them
-      scene_json = parse_json(urdf_scene_system_text(scene_json));
-      to_binary64(scene_json, "");
-    }
-    const scene_input scene = read_scene(scene_json);
-    const certified_state c = certify(scene, r.o.scalar, r.o.bits);
-    s.amplification = c.amplification;
-    s.quantities = c.quantities;
-    s.certified = true;
-  } catch (const input_error& e) {
-    s.reason = std::string("refused: ") + e.what();
-  } catch (const certification_error& e) {
-    s.reason = std::string("cannot certify: ") + e.what();
-  } catch (const domain_error& e) {
-    s.reason = std::string("cannot certify: ") + e.what();
-  }
+  state_certificate c = certify_state(std::move(scene_json), r.o.scalar, r.o.bits, r.o.binary64_inputs);
+  s.certified = c.certified;
+  s.reason = std::move(c.reason);
+  s.amplification = c.state.amplification;
+  s.quantities = std::move(c.state.quantities);
   // The dataset's lines for this state: the same text whichever process computes them. The JSON
   // line is written as it is built (json_line_writer: the bytes of the tree's `line` text), every
   // object's keys distinct but, in a model that names a quantity twice, the quantities' (that

@@ -5,6 +5,7 @@
 // The runs themselves are instantiated per model and scalar in generated units
 // (motion/engine.hpp); this unit only declares them.
 #include "appell/motion/motion.hpp"
+#include "appell/motion/checks.hpp"
 
 #include <cmath>
 #include <functional>
@@ -79,16 +80,6 @@ void run(const scene_input& scene, const run_request& q, const char* command) {
 #endif
 }
 
-/// A positive finite decimal, or input_error naming the flag (the command's own message).
-void require_positive(const char* flag, const std::string& text) {
-  double v = 0;
-  try {
-    v = from_decimal<double>(text);
-  } catch (const std::exception&) {
-    v = 0;
-  }
-  if (!(v > 0) || !std::isfinite(v)) throw input_error(std::string(flag) + ": expected a positive decimal, got '" + printable(text) + "'");
-}
 void require_positive(const char* flag, const std::optional<double>& v) {
   if (v && (!(*v > 0) || !std::isfinite(*v)))
     throw input_error(std::string(flag) + ": expected a positive decimal, got '" + to_decimal(*v) + "'");
@@ -98,8 +89,8 @@ void require_positive(const char* flag, const std::optional<double>& v) {
 /// Python, gets the same one-line refusal), or input_error naming the field.
 void require_horizon(const settings& s) {
   if (s.t_end.empty()) throw input_error("--t-end: required (the horizon, a positive decimal)");
-  require_positive("--t-end", s.t_end);
-  if (!s.every.empty()) require_positive("--every", s.every);
+  (void)positive_decimal("--t-end", s.t_end);
+  if (!s.every.empty()) (void)positive_decimal("--every", s.every);
   if (s.order && (*s.order < 2 || *s.order > 60))
     throw input_error("--order: expected an integer from 2 to 60, got '" + std::to_string(*s.order) + "'");
   require_positive("--tol", s.tol);
@@ -110,29 +101,44 @@ void require_horizon(const settings& s) {
   require_positive("--locate", s.locate);
   require_positive("--resolution", s.resolution);
   if (s.jobs < 0 || s.jobs > 1024) throw input_error("--jobs: expected an integer from 1 to 1024, got '" + std::to_string(s.jobs) + "'");
-  if (s.mu) {
-    bool nonnegative = false;
-    try {
-      nonnegative = decimal_sign_of_sum({{1, *s.mu}}) >= 0;
-    } catch (const std::exception&) {
-    }
-    if (!nonnegative) throw input_error("--mu: expected a decimal >= 0 (every contact's friction coefficient), got '" + printable(*s.mu) + "'");
-  }
-  if (!s.vary_field.empty()) {
-    const std::string v = s.vary_field + "=" + s.vary_lo + ":" + s.vary_hi;
-    for (const std::string* d : {&s.vary_lo, &s.vary_hi}) {
-      try {
-        (void)decimal_sign_of_sum({{1, *d}});
-      } catch (const std::exception&) {
-        throw input_error("--vary: expected FIELD=lo:hi with decimal bounds, got '" + printable(v) + "'");
-      }
-    }
-    if (decimal_sign_of_sum({{1, s.vary_hi}, {-1, s.vary_lo}}) <= 0)
-      throw input_error("--vary: the range's lower bound must be below its upper bound, got '" + printable(v) + "'");
-  }
+  if (s.mu) check_friction(*s.mu);
+  if (!s.vary_field.empty()) check_range(s.vary_field, s.vary_lo, s.vary_hi);
 }
 
 }  // namespace
+
+double positive_decimal(const std::string& flag, const std::string& text) {
+  double v = 0;
+  try {
+    v = from_decimal<double>(text);
+  } catch (const std::exception&) {
+    throw input_error(flag + ": expected a positive decimal, got '" + text + "'");
+  }
+  if (!(v > 0) || !std::isfinite(v)) throw input_error(flag + ": expected a positive decimal, got '" + text + "'");
+  return v;
+}
+
+void check_friction(const std::string& mu) {
+  bool nonnegative = false;
+  try {
+    nonnegative = decimal_sign_of_sum({{1, mu}}) >= 0;
+  } catch (const std::exception&) {
+  }
+  if (!nonnegative) throw input_error("--mu: expected a decimal >= 0 (every contact's friction coefficient), got '" + printable(mu) + "'");
+}
+
+void check_range(const std::string& field, const std::string& lo, const std::string& hi) {
+  const std::string given = field + "=" + lo + ":" + hi;
+  for (const std::string* d : {&lo, &hi}) {
+    try {
+      (void)decimal_sign_of_sum({{1, *d}});
+    } catch (const std::exception&) {
+      throw input_error("--vary: expected FIELD=lo:hi with decimal bounds, got '" + given + "'");
+    }
+  }
+  if (decimal_sign_of_sum({{1, hi}, {-1, lo}}) <= 0)
+    throw input_error("--vary: the range's lower bound must be below its upper bound, got '" + given + "'");
+}
 
 std::string run_identity::bits_text() const {
   return std::to_string(bits) + " bits" + (bits_requested ? " (" + std::to_string(bits_requested) + " requested)" : "");

@@ -31,7 +31,6 @@
 #include <vector>
 
 #include "appell/errors.hpp"
-#include "appell/io/evaluation_text.hpp"
 #include "appell/io/files.hpp"
 #include "appell/io/json.hpp"
 #include "appell/io/scene.hpp"
@@ -469,15 +468,23 @@ py::object json_to_python(const nlohmann::json& j) {
   return py::module_::import("json").attr("loads")(j.dump());
 }
 
-/// Runs `body` (a motion call) without the GIL, with progress and Ctrl-C; returns
-/// (summary, tables, interrupted).
-template <class Report, class Body>
-py::tuple run_motion(const py_scene& scene, const py::dict& options, const py::object& progress, Body&& body) {
+/// The rows of simulate and enclose as Python takes them: {table: table_dict}.
+py::dict tables_dict(const table_rows& rows) {
+  py::dict tables;
+  for (const std::string& name : rows.order()) tables[py::str(name)] = table_dict(rows.tables().at(name));
+  return tables;
+}
+
+/// Runs `body` (a motion call: simulate, enclose, validity) without the GIL, with progress and
+/// Ctrl-C; returns (summary, what `rows_of` makes of the report and the rows, interrupted).
+template <class Body, class RowsOf>
+py::tuple run_motion(const py_scene& scene, const py::dict& options, const py::object& progress, Body&& body,
+                     RowsOf&& rows_of) {
   motion::settings s = settings_of(options);
   progress_bridge bridge{progress};
   s.progress = bridge.function();
   table_rows rows;
-  std::optional<Report> report;
+  std::optional<std::invoke_result_t<Body, const scene_input&, const motion::settings&, table_rows&>> report;
   std::exception_ptr failure;
   {
     py::gil_scoped_release free;
@@ -489,10 +496,8 @@ py::tuple run_motion(const py_scene& scene, const py::dict& options, const py::o
     }
   }
   bridge.rethrow(failure);
-  py::dict tables;
-  for (const std::string& name : rows.order()) tables[py::str(name)] = table_dict(rows.tables().at(name));
   s.progress = nullptr;
-  return py::make_tuple(json_to_python(motion::summary(*report, s, scene.name)), tables, bridge.interrupted);
+  return py::make_tuple(json_to_python(motion::summary(*report, s, scene.name)), rows_of(*report, rows), bridge.interrupted);
 }
 
 py::dict pieces_dict(const motion::validity_report& r) {
@@ -586,28 +591,17 @@ std::shared_ptr<py_reference> reference_run(const py_scene& scene, const std::ve
           v->type = json_value::kind::string;
           v->text = used[i][c];
         }
-        certified_state cs;
-        std::string reason;
-        try {
-          cs = certify(read_scene(state_root), scalar, bits);
-        } catch (const input_error& e) {
-          reason = std::string("refused: ") + e.what();
-        } catch (const certification_error& e) {
-          reason = std::string("cannot certify: ") + e.what();
-        } catch (const domain_error& e) {
-          reason = std::string("cannot certify: ") + e.what();
-        }
-        const bool ok = reason.empty();
-        if (ok) {
+        state_certificate c = certify_state(std::move(state_root), scalar, bits, binary64_inputs);
+        if (c.certified) {
           std::vector<std::string> q;
-          for (const certified_quantity& x : cs.quantities) q.push_back(x.derived ? "derived." + x.name : x.name);
+          for (const certified_quantity& x : c.state.quantities) q.push_back(x.derived ? "derived." + x.name : x.name);
           if (out->quantity_names.empty()) out->quantity_names = q;
           else if (q != out->quantity_names)
             throw std::logic_error("state " + std::to_string(i) + " has other quantities than the states before it");
         }
-        out->states.push_back(std::move(cs));
-        out->certified.push_back(ok);
-        out->reasons.push_back(reason);
+        out->states.push_back(std::move(c.state));
+        out->certified.push_back(c.certified);
+        out->reasons.push_back(std::move(c.reason));
         if (fn && (i + 1) % 16 == 0) fn(static_cast<double>(i + 1) / static_cast<double>(used.size()));
       }
       if (fn) fn(1.0);
@@ -704,34 +698,22 @@ PYBIND11_MODULE(_core, m) {
       .def("state_fields", [](const py_scene& s) { return motion::state_fields(s.input); })
       .def("simulate",
            [](const py_scene& s, const py::dict& o, const py::object& progress) {
-             return run_motion<motion::simulate_report>(s, o, progress, [](const scene_input& in, const motion::settings& st, motion::row_sink& rows) {
-               return motion::simulate(in, st, rows);
-             });
+             return run_motion(
+                 s, o, progress,
+                 [](const scene_input& in, const motion::settings& st, table_rows& rows) { return motion::simulate(in, st, rows); },
+                 [](const motion::simulate_report&, const table_rows& rows) { return tables_dict(rows); });
            })
       .def("enclose",
            [](const py_scene& s, const py::dict& o, const py::object& progress) {
-             return run_motion<motion::enclose_report>(s, o, progress, [](const scene_input& in, const motion::settings& st, motion::row_sink& rows) {
-               return motion::enclose(in, st, rows);
-             });
+             return run_motion(
+                 s, o, progress,
+                 [](const scene_input& in, const motion::settings& st, table_rows& rows) { return motion::enclose(in, st, rows); },
+                 [](const motion::enclose_report&, const table_rows& rows) { return tables_dict(rows); });
            })
       .def("validity", [](const py_scene& s, const py::dict& o, const py::object& progress) {
-        motion::settings st = settings_of(o);
-        progress_bridge bridge{progress};
-        st.progress = bridge.function();
-        std::optional<motion::validity_report> report;
-        std::exception_ptr failure;
-        {
-          py::gil_scoped_release free;
-          try {
-            const scene_directory_scope scope(s.directory);
-            report.emplace(motion::validity(s.input, st));
-          } catch (...) {
-            failure = std::current_exception();
-          }
-        }
-        bridge.rethrow(failure);
-        st.progress = nullptr;
-        return py::make_tuple(json_to_python(motion::summary(*report, st, s.name)), pieces_dict(*report), bridge.interrupted);
+        return run_motion(
+            s, o, progress, [](const scene_input& in, const motion::settings& st, table_rows&) { return motion::validity(in, st); },
+            [](const motion::validity_report& r, const table_rows&) { return pieces_dict(r); });
       });
 
   py::class_<py_evaluation, std::shared_ptr<py_evaluation>>(m, "_Evaluation")

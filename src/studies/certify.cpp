@@ -11,6 +11,8 @@
 #include "appell/errors.hpp"
 #include "appell/scalar/standard_scalars.hpp"
 #include "appell/io/amplification.hpp"
+#include "appell/io/scene_fields.hpp"
+#include "appell/io/urdf.hpp"
 #include "appell/scalar/x87_bounds.hpp"
 
 namespace appell {
@@ -175,6 +177,27 @@ certified_state certify(const scene_input& scene, const std::string& scalar, std
     throw input_error("--scalar: reference values are certified: interval, mpfi or arb, got '" + scalar + "'");
   }
   return r;
+}
+
+state_certificate certify_state(json_value scene, const std::string& scalar, std::optional<unsigned> bits,
+                                bool binary64_inputs) {
+  state_certificate out;
+  try {
+    const json_value* model = scene.type == json_value::kind::object ? scene.find("model") : nullptr;
+    if (binary64_inputs && model && model->text == "urdf") {
+      scene = parse_json(urdf_scene_system_text(scene));
+      to_binary64(scene, "");
+    }
+    out.state = certify(read_scene(scene), scalar, bits);
+    out.certified = true;
+  } catch (const input_error& e) {
+    out.reason = std::string("refused: ") + e.what();
+  } catch (const certification_error& e) {
+    out.reason = std::string("cannot certify: ") + e.what();
+  } catch (const domain_error& e) {
+    out.reason = std::string("cannot certify: ") + e.what();
+  }
+  return out;
 }
 
 }  // namespace appell

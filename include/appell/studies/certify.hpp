@@ -33,4 +33,19 @@ struct certified_state {
 /// where the enclosure cannot be formed.
 certified_state certify(const scene_input& scene, const std::string& scalar, std::optional<unsigned> bits = std::nullopt);
 
+/// One state as `appell reference` (and the Python module's reference) records it: certified, or
+/// why not ("refused: ..." where the scene is refused, "cannot certify: ..." where no enclosure
+/// can be formed).
+struct state_certificate {
+  bool certified = false;
+  certified_state state;
+  std::string reason;
+};
+
+/// The state's scene (parsed, its values set) read and certified.  With binary64_inputs a `urdf`
+/// scene is first taken as the system file it reads as, every decimal of it replaced by its
+/// nearest double: the robot's own numbers as an engine reads them.
+state_certificate certify_state(json_value scene, const std::string& scalar, std::optional<unsigned> bits,
+                                bool binary64_inputs);
+
 }  // namespace appell
