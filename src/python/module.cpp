@@ -605,8 +605,7 @@ std::shared_ptr<py_reference> reference_run(const py_scene& scene, const std::ve
         if (fn && (i + 1) % 16 == 0) fn(static_cast<double>(i + 1) / static_cast<double>(used.size()));
       }
       if (fn) fn(1.0);
-    } catch (const ode::run_stopped&) {
-      out->interrupted = bridge.interrupted;
+    } catch (const ode::run_stopped&) {  // stopped on request: the states certified so far are kept
     } catch (...) {
       failure = std::current_exception();
     }

@@ -63,10 +63,9 @@ class Evaluation:
     ``names()`` and ``bounds()`` give every result component at once (NumPy).
     """
 
-    def __init__(self, core, scalar):
+    def __init__(self, core):
         self._e = core
         self._d = None
-        self._scalar = scalar
 
     def _data(self):
         if self._d is None:
@@ -229,7 +228,7 @@ class Scene:
         """The results and checks in ``scalar`` (``appell eval --scalar``): one of
         ``appell.SCALARS``; ``bits`` for mpfr, mpfi and arb (default 256).  ``checks=False``
         leaves out the identities only the checks need (faster; the results are the same)."""
-        return Evaluation(self._s.eval(scalar, bits, checks), scalar)
+        return Evaluation(self._s.eval(scalar, bits, checks))
 
     def simulate(self, t_end, **options):
         """``appell.simulate(self, t_end, ...)``."""
