@@ -1,6 +1,7 @@
 // The library's evaluation in a program (its thread-local storage accessed as a program's, by the
 // linker's single load), timed as bench/python_overhead.py times the Python module's (a shared
-// object: each access a __tls_get_addr call; docs/architecture.md, "Python"):
+// object opened at run time: its scratch pools reached through TLS descriptors, the rounding flag
+// through libappell_rounding.so's static TLS; docs/architecture.md, "Python"):
 //   appell_bench_eval_loop SCENE SCALAR N   prints the seconds per evaluation, evaluate<T> then
 //                                           printed<T>, as appell.Scene.eval does them
 #include <chrono>

@@ -8,4 +8,7 @@ rm -rf "$prefix" "$cbuild"
 cmake --install "$build" --prefix "$prefix" >/dev/null
 cmake -S "$src" -B "$cbuild" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$cbuild" >/dev/null
+# The installed command runs where it was installed (it finds libappell_rounding.so by its RPATH);
+# a failure stops the script before the consumer prints the line the test passes on.
+env -u LD_LIBRARY_PATH "$prefix/bin/appell" eval "$scene" >/dev/null
 "$cbuild/consumer" "$scene"

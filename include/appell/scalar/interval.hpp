@@ -38,6 +38,7 @@
 #include <string>
 
 #include "appell/errors.hpp"
+#include "appell/scalar/rounding_state.hpp"
 
 namespace appell {
 
@@ -66,20 +67,10 @@ inline unsigned read_mxcsr() {
 }
 inline void write_mxcsr(unsigned csr) { asm volatile("ldmxcsr %0" : : "m"(csr)); }
 constexpr unsigned mxcsr_rounding = 0x6000, mxcsr_upward = 0x4000;
-/// True while this thread is inside an upward_rounding scope (and not inside a
-/// nearest_rounding one within it): the SSE unit is then known to round upward
-/// and interval operations skip reading MXCSR (measured: the read cost 40% of an
-/// interval addition).  Initial-exec TLS in programs' own units: one load, no __tls_get_addr call.
-/// The library's units are position-independent (-fPIC, not -fPIE) and take the default model:
-/// linked into a program the linker relaxes it to the same single load, and the Python module
-/// (a shared object Python opens at run time) can be loaded at all: glibc refuses to dlopen an
-/// object that asks for initial-exec TLS once its thread-local storage (the scratch pools, some
-/// 100 KB) exceeds the few hundred bytes of static TLS it keeps for such objects.
-#if defined(__PIC__) && !defined(__PIE__)
-inline thread_local bool upward_known = false;
-#else
-inline thread_local bool upward_known __attribute__((tls_model("initial-exec"))) = false;
-#endif
+/// upward_known (scalar/rounding_state.hpp): true while this thread is inside an upward_rounding
+/// scope (and not inside a nearest_rounding one within it): the SSE unit is then known to round
+/// upward and interval operations skip reading MXCSR (measured: the read cost 40% of an interval
+/// addition).  Declared there, defined in libappell_rounding.so, read initial-exec everywhere.
 inline bool mxcsr_is_upward() { return (read_mxcsr() & mxcsr_rounding) == mxcsr_upward; }
 }  // namespace detail
 
