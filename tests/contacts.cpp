@@ -35,6 +35,7 @@
 #include <nlohmann/json.hpp>
 #include <map>
 #include <random>
+#include <unistd.h>
 #include <sstream>
 #include <thread>
 #include <tuple>
@@ -1130,4 +1131,118 @@ BOOST_AUTO_TEST_CASE(a_sole_is_judged_with_the_mu_of_the_run) {
   // every holding piece lies above the ratio the motion certainly reaches
   BOOST_TEST(least_holding >= mu_req, "a piece from " << least_holding << " holds below " << mu_req);
   BOOST_TEST(least_holding <= truth_t("0.2"), "nothing above 0.2 holds: " << v.out);
+}
+
+namespace {
+/// The block and arm (data/scenes/urdf_block_arm_push.json) with its URDF named by its absolute
+/// path, the hinge's torque `torque` and, where given, its hinge's state.
+std::string block_arm_text(const std::string& torque, const std::string& hinge_q = "0", const std::string& hinge_q_dot = "0") {
+  std::string s = replaced(scene_text("urdf_block_arm_push.json"), "\"../urdf/block_arm.urdf\"",
+                           "\"" + APPELL_SOURCE_DIR + "/data/urdf/block_arm.urdf\"");
+  s = replaced(s, "\"hinge\": \"30 * t\"", "\"hinge\": \"" + torque + "\"");
+  return replaced(s, "\"hinge\": {\"q\": \"0\", \"q_dot\": \"0\"}", "\"hinge\": {\"q\": \"" + hinge_q + "\", \"q_dot\": \"" + hinge_q_dot + "\"}");
+}
+const std::string block_arm_sole = "\"half_lengths\": [\"0.1\", \"0.08\"]";
+/// The block and arm written with the varied field's value.
+std::string block_arm_written(const std::string& base, const std::string& field, const std::string& value) {
+  if (field == "torques.hinge") return replaced(base, "\"hinge\": \"12.5\"", "\"hinge\": \"" + value + "\"");
+  return replaced(base, block_arm_sole, "\"half_lengths\": [\"" + value + "\", \"0.08\"]");
+}
+std::string scene_file_of(const std::string& text, const std::string& tag) {
+  const std::string path = std::filesystem::temp_directory_path().string() + "/appell_contacts_" + tag + "_" +
+                           std::to_string(::getpid()) + ".json";
+  std::ofstream(path) << text;
+  return path;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(a_torque_and_a_sole_s_size_set_by_validity_are_the_scene_written_with_them) {
+  // What a validity piece runs over a joint's torque given as a number (torques.JOINT) and over a
+  // sole's half-length (contacts.NAME.sole.half_lengths[K]): the problem's with_parameter, here at
+  // one value, against the scene written with that value, prepared by the reader at 256 bits.
+  // x' and every result (the hinge's rate, the sole's force, couple and 16 margins) of the
+  // interval problem must hold the written scene's: the block and arm with its arm swinging.
+  std::mt19937 rng(58);
+  const std::string base = block_arm_text("12.5", "0.4", "-1.3");
+  for (int k = 0; k < 16; ++k) {
+    const bool torque = k % 2 == 0;
+    const int n = torque ? std::uniform_int_distribution<int>(-600, 600)(rng) : std::uniform_int_distribution<int>(20, 300)(rng);
+    const std::string field = torque ? "torques.hinge" : "contacts.sole.sole.half_lengths[0]";
+    const std::string value = torque ? std::to_string(n / 10) + "." + std::to_string(std::abs(n % 10))
+                                     : "0." + std::to_string(1000 + n).substr(1);  // 0.020 .. 0.300
+    const std::string v = torque && n < 0 && n > -10 ? "-" + value : value;
+    const scene_input given = scene_of(base), with = scene_of(block_arm_written(base, field, v));
+    const evaluation_scope<interval> scope;
+    const auto m = system_model::prepare<interval>(given.as<system_input>());
+    auto [prob, x] = model_motion<system_model>::start(m);
+    BOOST_TEST_REQUIRE(prob.can_vary(field));
+    const auto varied = prob.with_parameter(field, from_decimal<interval>(v), x);
+    const mp_precision_scope p(256);
+    const auto mt = system_model::prepare<mpfr>(with.as<system_input>());
+    const auto [truth, xt] = model_motion<system_model>::start(mt);
+    holds_the_motion(varied, x, truth, xt, field + " = " + v);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(validity_over_a_torque_and_a_sole_s_size_holds_where_the_start_does) {
+  // The block and arm at rest, its hinge driven by a constant torque: validity over a range of the
+  // torque, then of the sole's half-length X. A piece that holds over [0, T] holds at t = 0 for
+  // every value in it; at rest the wrench is affine in the torque (theta'' is) and does not
+  // depend on X, so each of the sole's 16 margins is affine in either: the piece's two ends must
+  // hold at t = 0, checked on the scene written with each end, evaluated in MPFI at 256 bits.
+  // The torque tips the block (its centre of pressure leaves the sole, near |tau| = 12 N m):
+  // pieces must hold and pieces fail; an undecided piece names the sole's margin (or N) that its
+  // enclosure leaves undecided, by its place in sole_margins.
+  struct sweep {
+    std::string field, range, resolution, torque;
+  };
+  for (const sweep& s : {sweep{"torques.hinge", "-30:30", "1", "12.5"}, sweep{"contacts.sole.sole.half_lengths[0]", "0.02:0.3", "0.01", "8"}}) {
+    const std::string base = block_arm_text(s.torque);
+    const std::string path = scene_file_of(base, "vary");
+    const validity_result v = validity_run(path, "--vary " + s.field + "=" + s.range + " --t-end 0.01 --resolution " + s.resolution);
+    std::filesystem::remove(path);
+    BOOST_TEST_REQUIRE(v.status == 0, v.out);
+    int holds = 0, fails = 0, undecided = 0;
+    const std::string written_base = s.field == "torques.hinge" ? base : block_arm_text("12.5");
+    for (const motion::piece_report& p : v.report.run.done) {
+      if (p.verdict == "holds") {
+        ++holds;
+        for (const std::string& end : {p.lo, p.hi}) {
+          std::string text = block_arm_written(written_base, s.field, end);
+          if (s.field != "torques.hinge") text = replaced(text, "\"hinge\": \"12.5\"", "\"hinge\": \"" + s.torque + "\"");
+          const mp_precision_scope scope(256);
+          const evaluation<mpfi> e = evaluate<mpfi>(scene_of(text));
+          BOOST_TEST(verdict(e, "sole") == "holds", s.field << " = " << end << " (a piece [" << p.lo << ", " << p.hi << "] holds)");
+        }
+      } else if (p.verdict == "fails") {
+        ++fails;
+      } else {
+        ++undecided;
+        const bool named = p.why.find("(sole_margins[") != std::string::npos || p.why.find("the normal force N") != std::string::npos;
+        BOOST_TEST(named, p.why);
+        BOOST_TEST(p.why.find("mu N - |F_t|") == std::string::npos, "a sole judged by the circular cone: " << p.why);
+      }
+    }
+    BOOST_TEST(holds > 0, v.out);
+    BOOST_TEST(fails > 0, v.out);
+    BOOST_TEST_MESSAGE(s.field << " over " << s.range << ": " << holds << " pieces hold, " << fails << " fail, " << undecided
+                               << " undecided");
+  }
+  // Refused, naming why: a torque that is an expression of time, a half-length range not positive,
+  // fields the scene does not have.
+  const std::string pushed = scene_file_of(replaced(scene_text("urdf_block_arm_push.json"), "\"../urdf/block_arm.urdf\"",
+                                                    "\"" + APPELL_SOURCE_DIR + "/data/urdf/block_arm.urdf\""), "refused");
+  const std::string still = scene_file_of(block_arm_text("12.5"), "refused_still");
+  const std::vector<std::tuple<std::string, std::string, std::string>> refused = {
+      {pushed, "torques.hinge=0:1", "its effort is an expression of t"},
+      {still, "contacts.sole.sole.half_lengths[0]=-0.1:0.1", "must be positive over the whole range"},
+      {still, "contacts.sole.sole.half_lengths[2]=0.1:0.2", "nor a parameter of the model"},
+      {still, "torques.elbow=0:1", "nor a parameter of the model"}};
+  for (const auto& [scene, vary, why] : refused) {
+    const validity_result r = validity_run(scene, "--vary " + vary + " --t-end 0.01");
+    BOOST_TEST(r.status == 2, vary);
+    BOOST_TEST(r.out.find(why) != std::string::npos, r.out);
+  }
+  std::filesystem::remove(pushed);
+  std::filesystem::remove(still);
 }

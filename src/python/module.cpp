@@ -17,6 +17,9 @@
 #include <pybind11/stl.h>
 
 #include <array>
+#include <cerrno>
+#include <climits>
+#include <cstdlib>
 #include <chrono>
 #include <functional>
 #include <cmath>
@@ -301,6 +304,7 @@ double cpp_eval_loop(const py_scene& s, const std::string& scalar, std::optional
 /// KeyboardInterrupt stops the run with ode::run_stopped, remembered), and calls the user's
 /// callback (an exception it raises stops the run too, and is raised again afterwards).
 struct progress_bridge {
+  explicit progress_bridge(py::object f) : callback(std::move(f)) {}
   py::object callback;
   bool interrupted = false;
   std::optional<py::error_already_set> raised;
@@ -432,6 +436,26 @@ py::dict table_dict(const table_rows::table& t) {
   return d;
 }
 
+/// A setting that is a number (a tolerance, a width, seconds): an int, a float or a decimal str,
+/// as the command's flag takes it (the motion library then checks its range).
+double number_option(const py::handle& v, const std::string& key) {
+  const std::string t = value_text(v, key);
+  char* end = nullptr;
+  const double x = std::strtod(t.c_str(), &end);
+  if (t.empty() || end != t.c_str() + t.size()) throw input_error(key + ": '" + t + "' is not a number");
+  return x;
+}
+/// A setting that is a whole number (an order, a count of bits or threads): an int or its str.
+long integer_option(const py::handle& v, const std::string& key) {
+  const std::string t = value_text(v, key);
+  char* end = nullptr;
+  errno = 0;
+  const long x = std::strtol(t.c_str(), &end, 10);
+  if (t.empty() || end != t.c_str() + t.size() || errno == ERANGE || x < INT_MIN || x > INT_MAX)
+    throw input_error(key + ": '" + t + "' is not a whole number (of an int's range)");
+  return x;
+}
+
 motion::settings settings_of(const py::dict& o) {
   motion::settings s;
   auto text = [&](const char* key, std::string& out) {
@@ -439,28 +463,29 @@ motion::settings settings_of(const py::dict& o) {
   };
   if (o.contains("scalar") && !o["scalar"].is_none()) s.scalar = o["scalar"].cast<std::string>();
   if (o.contains("bits") && !o["bits"].is_none()) {
-    const long b = o["bits"].cast<long>();
+    const long b = integer_option(o["bits"], "bits");
     if (b < 2 || b > 1 << 20) throw input_error("bits: " + std::to_string(b) + " is not a precision (2 to 2^20)");
     s.bits = static_cast<unsigned>(b);
   }
   text("t_end", s.t_end);
   text("every", s.every);
-  if (o.contains("order") && !o["order"].is_none()) s.order = o["order"].cast<int>();
-  if (o.contains("tol") && !o["tol"].is_none()) s.tol = o["tol"].cast<double>();
-  if (o.contains("max_width") && !o["max_width"].is_none()) s.max_width = o["max_width"].cast<double>();
-  if (o.contains("max_seconds") && !o["max_seconds"].is_none()) s.max_seconds = o["max_seconds"].cast<double>();
-  if (o.contains("locate") && !o["locate"].is_none()) s.locate = o["locate"].cast<double>();
+  if (o.contains("order") && !o["order"].is_none()) s.order = static_cast<int>(integer_option(o["order"], "order"));
+  if (o.contains("tol") && !o["tol"].is_none()) s.tol = number_option(o["tol"], "tol");
+  if (o.contains("max_width") && !o["max_width"].is_none()) s.max_width = number_option(o["max_width"], "max_width");
+  if (o.contains("max_seconds") && !o["max_seconds"].is_none()) s.max_seconds = number_option(o["max_seconds"], "max_seconds");
+  if (o.contains("locate") && !o["locate"].is_none()) s.locate = number_option(o["locate"], "locate");
   if (o.contains("until_contact_fails")) s.until_contact_fails = o["until_contact_fails"].cast<bool>();
   if (o.contains("vary") && !o["vary"].is_none()) {
     const py::tuple v = o["vary"].cast<py::tuple>();
     if (v.size() != 3) throw input_error("vary: expected (field, lo, hi)");
+    if (!py::isinstance<py::str>(v[0])) throw input_error("vary: the field is a str (its name, as the command's --vary takes it)");
     s.vary_field = v[0].cast<std::string>();
     s.vary_lo = value_text(v[1], "vary");
     s.vary_hi = value_text(v[2], "vary");
   }
-  if (o.contains("resolution") && !o["resolution"].is_none()) s.resolution = o["resolution"].cast<double>();
+  if (o.contains("resolution") && !o["resolution"].is_none()) s.resolution = number_option(o["resolution"], "resolution");
   if (o.contains("mu") && !o["mu"].is_none()) s.mu = value_text(o["mu"], "mu");
-  if (o.contains("jobs") && !o["jobs"].is_none()) s.jobs = o["jobs"].cast<int>();
+  if (o.contains("jobs") && !o["jobs"].is_none()) s.jobs = static_cast<int>(integer_option(o["jobs"], "jobs"));
   return s;
 }
 

@@ -65,3 +65,21 @@ def test_an_uncertifiable_result_is_not_certified(tmp_path):
     assert status == 3 and str(e.value) == line
     assert isinstance(e.value, ArithmeticError) and e.value.exit_status == 3
     assert s.eval("mpfi", 128).results["omega_dot"][0].contains(-(10**400) // 2)
+
+
+def test_a_run_s_settings_take_numbers_or_decimals_and_refuse_the_rest():
+    # A setting that is a number takes an int, a float or a decimal str, as the command's flag; anything
+    # else is an InputError naming the setting (not pybind11's "Unable to cast").
+    scene = SCENES / "rolling_sphere_bowl_contact.json"
+    a = appell.validity(scene, ("mu", "0", "0.4"), "0.05", resolution=0.1)
+    b = appell.validity(scene, ("mu", "0", "0.4"), "0.05", resolution="0.1")
+    assert a.pieces["lo_text"] == b.pieces["lo_text"] and a.pieces["verdict"] == b.pieces["verdict"]
+    for options, name in (({"resolution": [1]}, "resolution"), ({"resolution": "fine"}, "resolution"),
+                          ({"tol": {}}, "tol"), ({"max_seconds": "soon"}, "max_seconds"), ({"order": "12.5"}, "order"),
+                          ({"jobs": 1.5}, "jobs"), ({"bits": "many"}, "bits")):
+        with pytest.raises(appell.InputError, match=name):
+            appell.validity(scene, ("mu", "0", "0.4"), "0.05", **options)
+    with pytest.raises(appell.InputError, match="field"):
+        appell.validity(scene, (1, "0", "0.4"), "0.05")
+    with pytest.raises(appell.InputError, match="resolution"):
+        appell.validity(scene, ("mu", "0", "0.4"), "0.05", resolution=-1)  # the library's own check

@@ -318,20 +318,49 @@ struct system_problem {
     return on_holonomic_constraint(i);
   }
 
-  /// The parameters `appell validity --vary` can take over a range: every one of the file's
-  /// (named as written, or as parameters.NAME); parameter_refusal says which cannot.
-  std::vector<std::string> parameter_names() const {
+  /// What `appell validity --vary NAME` can take over a range in this motion, besides the state's
+  /// components and mu: a parameter of the file (NAME or parameters.NAME), a joint's effort given
+  /// as a number (torques.JOINT, as a `urdf` scene writes it, or bodies.BODY.joint.effort), a
+  /// sole's half-length (contacts.NAME.sole.half_lengths[0] or [1]).
+  struct varied_field {
+    enum class kind { none, parameter, effort, half_length } what = kind::none;
+    int index = -1;  ///< the parameter's variable, the link's place in sys.links, the contact's in sys.contacts
+    int axis = 0;    ///< half_length: 0 for X, 1 for Y
+  };
+  varied_field find_varied(std::string name) const {
     const system_definition& d = *model->in->def;
-    return {d.names.begin(), d.names.begin() + d.vars.parameters};
-  }
-  /// The variable of the parameter `name` (NAME or parameters.NAME), -1 if none.
-  int parameter_variable(std::string name) const {
-    const system_definition& d = *model->in->def;
+    using K = typename varied_field::kind;
     if (name.rfind("parameters.", 0) == 0) name = name.substr(11);
     for (int p = 0; p < d.vars.parameters; ++p)
-      if (d.names[static_cast<std::size_t>(p)] == name) return p;
-    return -1;
+      if (d.names[static_cast<std::size_t>(p)] == name) return {K::parameter, p, 0};
+    const compiled_system<T>& c = model->sys;
+    for (std::size_t k = 0; k < c.links.size(); ++k) {
+      const system_body_definition& b = d.bodies[static_cast<std::size_t>(c.links[k].body)];
+      if (b.joint.type == system_joint_definition::kind::fixed || b.joint.coordinate < 0) continue;
+      if (name == "torques." + b.joint.name || name == "bodies." + b.name + ".joint.effort")
+        return {K::effort, static_cast<int>(k), 0};
+    }
+    for (std::size_t k = 0; k < d.contacts.size(); ++k)
+      for (int a = 0; a < 2; ++a)
+        if (d.contacts[k].surface && name == "contacts." + d.contacts[k].name + ".sole.half_lengths[" + std::to_string(a) + "]")
+          return {K::half_length, static_cast<int>(k), a};
+    return {};
   }
+  /// Every name find_varied knows (for a message that lists them).
+  std::vector<std::string> parameter_names() const {
+    const system_definition& d = *model->in->def;
+    std::vector<std::string> out(d.names.begin(), d.names.begin() + d.vars.parameters);
+    for (const auto& L : model->sys.links) {
+      const system_body_definition& b = d.bodies[static_cast<std::size_t>(L.body)];
+      if (b.joint.type != system_joint_definition::kind::fixed && b.joint.coordinate >= 0) out.push_back("torques." + b.joint.name);
+    }
+    for (const auto& k : d.contacts)
+      if (k.surface)
+        for (int a = 0; a < 2; ++a) out.push_back("contacts." + k.name + ".sole.half_lengths[" + std::to_string(a) + "]");
+    return out;
+  }
+  /// Whether `name` is a field find_varied knows.
+  bool can_vary(const std::string& name) const { return find_varied(name).what != varied_field::kind::none; }
   /// The parameters whose value follows p's (p and those defined from it, at any depth).
   std::vector<bool> following(int p) const {
     const system_definition& d = *model->in->def;
@@ -343,13 +372,28 @@ struct system_problem {
           f[static_cast<std::size_t>(r)] = true;
     return f;
   }
-  /// Why the parameter cannot take a range ("" when it can): one written as an expression of
-  /// others (vary one it uses), or one a holonomic constraint involves (the state's coordinates
-  /// would have to move with it to stay on the constraint; a velocity constraint is solved at
-  /// every value, so its parameters can vary).
-  std::string parameter_refusal(const std::string& name, const T&) const {
+  /// Why the field cannot take the range `value` ("" when it can). A parameter written as an
+  /// expression of others (vary one it uses), or one a holonomic constraint involves (the state's
+  /// coordinates would have to move with it to stay on the constraint; a velocity constraint is
+  /// solved at every value, so its parameters can vary). An effort that is not a number (an
+  /// expression of the state, of time, of a table or a parameter: vary what it is made of). A
+  /// half-length whose range is not proved positive.
+  std::string parameter_refusal(const std::string& name, const T& value) const {
     const system_definition& d = *model->in->def;
-    const int p = parameter_variable(name);
+    const varied_field v = find_varied(name);
+    using K = typename varied_field::kind;
+    if (v.what == K::effort) {
+      const system_joint_definition& j = d.bodies[static_cast<std::size_t>(model->sys.links[static_cast<std::size_t>(v.index)].body)].joint;
+      if (!j.effort) return "the joint " + j.name + " has no effort in the scene (give it one, a number, to vary it)";
+      for (int s = 0; s < d.vars.size(); ++s)
+        if (j.effort->depends_on(s))
+          return "its effort is an expression of " + d.names[static_cast<std::size_t>(s)] +
+                 ", not a number (vary the number or the parameter it is made of)";
+      return "";
+    }
+    if (v.what == K::half_length)
+      return certainly_positive(value) ? "" : "a sole's half-length must be positive over the whole range";
+    const int p = v.index;
     for (int s = 0; s < d.vars.parameters; ++s)
       if (d.parameters[static_cast<std::size_t>(p)]->depends_on(s))
         return "it is defined from the parameter " + d.names[static_cast<std::size_t>(s)] + "; vary that one";
@@ -363,25 +407,36 @@ struct system_problem {
     }
     return "";
   }
-  /// The same motion with the parameter `name` at `value` (an interval in validity), those defined
-  /// from it evaluated again; the state is kept (no holonomic constraint involves it:
-  /// parameter_refusal; the solved speeds follow from the constraints at every evaluation).
+  /// The same motion with the field `name` at `value` (an interval in validity): a parameter with
+  /// those defined from it evaluated again, a joint's effort, or a sole's half-length (the sole's
+  /// margins formed with it). The state is kept (no holonomic constraint involves a varied
+  /// parameter: parameter_refusal; the solved speeds follow from the constraints at every
+  /// evaluation; efforts and soles enter no constraint).
   system_problem with_parameter(const std::string& name, const T& value, vector_t<T>&) const {
     const system_definition& d = *model->in->def;
-    const int p = parameter_variable(name);
+    const varied_field v = find_varied(name);
+    using K = typename varied_field::kind;
     auto m = std::make_shared<system_model::prepared<T>>(*model);
-    std::vector<T> x(static_cast<std::size_t>(d.vars.size()), T(0));
-    for (int s = 0; s < d.vars.parameters; ++s) x[static_cast<std::size_t>(s)] = m->sys.parameters[static_cast<std::size_t>(s)];
-    x[static_cast<std::size_t>(p)] = value;
-    m->sys.parameters[static_cast<std::size_t>(p)] = value;
-    const std::vector<bool> f = following(p);
-    for (int r : d.parameter_order) {
-      const auto i = static_cast<std::size_t>(r);
-      if (r == p || !f[i]) continue;
-      m->sys.parameters[i] = compiled_expression<T>(*d.parameters[i]).eval_at(x.data());
-      x[i] = m->sys.parameters[i];
+    if (v.what == K::effort) {
+      m->sys.links[static_cast<std::size_t>(v.index)].effort_fixed = value;
+    } else if (v.what == K::half_length) {
+      auto& k = m->sys.contacts[static_cast<std::size_t>(v.index)];
+      (v.axis == 0 ? k.half_x : k.half_y) = value;
+    } else {
+      const int p = v.index;
+      std::vector<T> x(static_cast<std::size_t>(d.vars.size()), T(0));
+      for (int s = 0; s < d.vars.parameters; ++s) x[static_cast<std::size_t>(s)] = m->sys.parameters[static_cast<std::size_t>(s)];
+      x[static_cast<std::size_t>(p)] = value;
+      m->sys.parameters[static_cast<std::size_t>(p)] = value;
+      const std::vector<bool> f = following(p);
+      for (int r : d.parameter_order) {
+        const auto i = static_cast<std::size_t>(r);
+        if (r == p || !f[i]) continue;
+        m->sys.parameters[i] = compiled_expression<T>(*d.parameters[i]).eval_at(x.data());
+        x[i] = m->sys.parameters[i];
+      }
+      m->sys.refresh_links();  // the joints' constants from the parameters' new values
     }
-    m->sys.refresh_links();  // the joints' constants from the parameters' new values
     system_problem out = *this;
     out.model = std::move(m);
     return out;

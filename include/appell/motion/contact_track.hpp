@@ -26,6 +26,7 @@
 #include "appell/ode/taylor.hpp"
 #include "appell/reactions/contact.hpp"
 #include "appell/reactions/wrench_cone.hpp"
+#include "appell/io/scene.hpp"  // sole_margin_values
 #include "appell/scalar/format.hpp"
 
 namespace appell::motion::detail {
@@ -71,6 +72,17 @@ double span(const I& a, const I& b) {
   return approx_double(d) + approx_double(I(scalar_traits<I>::width(d)));
 }
 
+/// The name of a sole's margin k among `count` (SCENES.md, "contacts of links": 16 with a mu, the
+/// centre of pressure's 4 without; reactions/wrench_cone.hpp forms them in this order).
+inline std::string sole_margin_name(std::size_t k, std::size_t count) {
+  static const char* const friction[4] = {"mu fz - fx", "mu fz + fx", "mu fz - fy", "mu fz + fy"};
+  static const char* const pressure[4] = {"Y fz - tau_x", "Y fz + tau_x", "X fz - tau_y", "X fz + tau_y"};
+  if (count == 4) return "centre-of-pressure margin " + std::string(pressure[k]);
+  if (k < 4) return "friction margin " + std::string(friction[k]);
+  if (k < 8) return "centre-of-pressure margin " + std::string(pressure[k - 4]);
+  return "yaw margin " + std::to_string(k - 7) + " of 8";
+}
+
 template <Scalar I>
 struct contact_track {
   std::string name, mu_text;
@@ -101,23 +113,20 @@ struct contact_track {
   std::string run_failure;          ///< why the last enclosure that run() began stopped short, or ""
   long refined = 0;                 ///< undecided steps enclosed again in pieces
 
+  /// A sole's margins as judged here: those of the results (the scene's mu), or, where mu is not
+  /// the scene's, the cone of this judgement's mu formed from the sole's force and couple (the 16
+  /// margins with a mu, the centre of pressure's 4 without).
+  std::vector<I> sole_margins(const contact_values<I>& v) const {
+    if (!sole_with_own_mu) return v.margins;
+    const auto& [X, Y] = *sole_with_own_mu;
+    return sole_margin_values(v.force, v.moment, X, Y, mu);
+  }
+
   contact_verdict verdict_of(const contact_values<I>& v) const {
     if (!v.known) return contact_verdict::undecided;
     if (!v.margins.empty()) {  // a sole: its normal force and every margin of its wrench cone
-      std::vector<I> own;
-      if (sole_with_own_mu) {  // the cone of this judgement's mu (reactions/wrench_cone.hpp)
-        const auto& [X, Y] = *sole_with_own_mu;
-        const wrench_cone_margins<I> w = sole_wrench_margins(v.force, v.moment, X, Y, mu ? *mu : I(0));
-        if (mu) {
-          const std::array<I, 16> all = all_margins(w);
-          own.assign(all.begin(), all.end());
-        } else {
-          own.assign(w.pressure.begin(), w.pressure.end());
-        }
-      }
       bool all = certainly_positive(v.normal), fails = certainly_negative(v.normal);
-      for (const I& x : sole_with_own_mu ? own : v.margins)
-        all = all && certainly_positive(x), fails = fails || certainly_negative(x);
+      for (const I& x : sole_margins(v)) all = all && certainly_positive(x), fails = fails || certainly_negative(x);
       return fails ? contact_verdict::fails : all ? contact_verdict::holds : contact_verdict::undecided;
     }
     return judge_contact(v.normal, v.tangential, mu ? &*mu : nullptr);
@@ -225,7 +234,9 @@ struct contact_track {
   }
 
   /// Why the verdict is undecided: the first step that neither holds nor fails, and the margin
-  /// there whose enclosure holds 0 (the normal force N, or mu N - |F_t|), its midpoint and width.
+  /// there whose enclosure holds 0 (the normal force N, or mu N - |F_t|; for a sole N or the
+  /// first of its wrench cone's margins that is not proved positive, by name and place in
+  /// `<name>_margins`), its midpoint and width.
   struct undecided_margin {
     std::string text;
     double mid = 0, width = 0;  ///< 0 and 0 when the forces could not be evaluated
@@ -236,13 +247,27 @@ struct contact_track {
       if (r.over == contact_verdict::holds) continue;
       const std::string when = "contact " + name + " over [" + lower_string(r.t0) + ", " + upper_string(r.t1) + "]: ";
       if (!r.values.known) return undecided_margin{when + "its forces could not be evaluated over the step", 0, 0};
-      const bool normal = !certainly_positive(r.values.normal) || !mu;
-      const I m = normal ? r.values.normal : I(*mu * r.values.normal - r.values.tangential);
+      std::string what = "the normal force N";
+      I m = r.values.normal;
+      if (certainly_positive(r.values.normal)) {
+        if (!r.values.margins.empty()) {  // a sole: the first margin of its cone not proved positive
+          const std::vector<I> all = sole_margins(r.values);
+          for (std::size_t k = 0; k < all.size(); ++k)
+            if (!certainly_positive(all[k])) {
+              what = "the " + sole_margin_name(k, all.size()) + " (" + name + "_margins[" + std::to_string(k) + "])";
+              m = all[k];
+              break;
+            }
+        } else if (mu) {
+          what = "the friction margin mu N - |F_t|";
+          m = I(*mu * r.values.normal - r.values.tangential);
+        }
+      }
       const std::string lo_text = lower_string(m), hi_text = upper_string(m);
       const double lo = std::strtod(lo_text.c_str(), nullptr), hi = std::strtod(hi_text.c_str(), nullptr);
       std::ostringstream t;
-      t << when << (normal ? "the normal force N" : "the friction margin mu N - |F_t|") << " in [" << lo_text << ", "
-        << hi_text << "] holds 0 (midpoint " << (lo + hi) / 2 << ", width " << hi - lo << ")";
+      t << when << what << " in [" << lo_text << ", " << hi_text << "] holds 0 (midpoint " << (lo + hi) / 2 << ", width "
+        << hi - lo << ")";
       return undecided_margin{t.str(), (lo + hi) / 2, hi - lo};
     }
     return std::nullopt;

@@ -424,8 +424,8 @@ validity_report validity_problem(const P& prob, const vector_t<I>& x0, const sce
       if constexpr (requires { prob.with_parameter(o.vary_field, lo0, std::declval<vector_t<I>&>()); }) {
         // a model's parameter as it names them; a system file's also as parameters.NAME (its own lookup)
         bool known = false;
-        if constexpr (requires { prob.parameter_variable(o.vary_field); }) {
-          known = prob.parameter_variable(o.vary_field) >= 0;
+        if constexpr (requires { prob.can_vary(o.vary_field); }) {
+          known = prob.can_vary(o.vary_field);  // a system's parameters, efforts and soles (system_motion.hpp)
         } else {
           const std::vector<std::string> params = prob.parameter_names();
           known = std::find(params.begin(), params.end(), o.vary_field) != params.end();
@@ -435,7 +435,7 @@ validity_report validity_problem(const P& prob, const vector_t<I>& x0, const sce
           std::optional<upward_rounding> mode;
           if constexpr (scalar_traits<I>::needs_upward_rounding) mode.emplace();
           const std::string why = prob.parameter_refusal(o.vary_field, scalar_traits<I>::hull(lo0, hi0));
-          if (!why.empty()) throw input_error("--vary: the parameter " + o.vary_field + " cannot vary: " + why);
+          if (!why.empty()) throw input_error("--vary: " + o.vary_field + " cannot vary: " + why);
         }
       }
       if (index < 0 && !vary_parameter) {

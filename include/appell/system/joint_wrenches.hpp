@@ -56,8 +56,8 @@ void joint_wrenches_from_sums(const compiled_system<T>& c, const std::vector<vec
     if (L.type == K::fixed) continue;
     if (efforts) {
       w.effort = (*efforts)(L.coordinate);
-    } else if (L.effort) {
-      w.effort = L.effort.at(values.data());
+    } else if (L.actuated()) {
+      w.effort = L.effort_at(values.data());
       const vec3<T> e = compiled_system<T>::scaled(L.axis, w.effort);
       if (L.type == K::revolute) {
         w.moment += e;

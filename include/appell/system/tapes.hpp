@@ -2,6 +2,8 @@
 // and the parameters' values in T (compiled_system<T>; the description: definition.hpp).
 #pragma once
 
+#include <optional>
+
 #include "appell/linalg/scratch.hpp"
 #include "appell/dynamics/speeds.hpp"
 #include "appell/dynamics/virtual_work.hpp"
@@ -155,6 +157,16 @@ struct compiled_system {
     mat3<T> R0 = mat3<T>::Identity(), Rin = mat3<T>::Identity();  ///< the joint's fixed rotation (L's axes to P's), the inertia axes' (to L's)
     bool R0_identity = true, Rin_identity = true;
     detail::compiled_term<T> effort;
+    /// The effort over a range in place of the number the file gives (`appell validity --vary`
+    /// of a joint's torque: system_problem::with_parameter), none otherwise.
+    std::optional<T> effort_fixed;
+    /// Whether an actuator acts at the joint.
+    bool actuated() const { return effort || effort_fixed; }
+    /// The actuator's effort, from the body tape's node values v.
+    template <class S>
+    S effort_at(const S* v) const {
+      return effort_fixed ? detail::from_base<S>(*effort_fixed) : effort.at(v);
+    }
   };
   std::vector<link> links;   ///< in the definition's link order (each after its parent)
   std::vector<int> link_of;  ///< each body's place in links; -1: not a link
@@ -298,8 +310,8 @@ struct compiled_system {
     // effort * q' and nothing else).
     for (std::size_t k = 0; k < links.size(); ++k) {
       const link& L = links[k];
-      if (!L.effort) continue;
-      const S tau = L.effort.at(v);
+      if (!L.actuated()) continue;
+      const S tau = L.effort_at(v);
       link_state<S>& st = out[k];
       link_state<S>* p = L.parent >= 0 ? &out[static_cast<std::size_t>(link_of[static_cast<std::size_t>(L.parent)])] : nullptr;
       const vec3<S> along = scaled(L.axis, tau);

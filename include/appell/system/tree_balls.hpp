@@ -398,10 +398,10 @@ void forward(const compiled_system<I>& c, const vector_t<I>& q, const vector_t<I
   }
   for (std::size_t k = 0; k < n; ++k) {  // the actuators, as link_states_into
     const auto& L = c.links[k];
-    if (!L.effort) continue;
+    if (!L.actuated()) continue;
     ball_link<I>& o = out[k];
     ball_link<I>* p = parent(L);
-    const vball<I> along = of<I>(compiled_system<I>::scaled(L.axis, L.effort.at(v)));
+    const vball<I> along = of<I>(compiled_system<I>::scaled(L.axis, L.effort_at(v)));
     const vball<I> back = p ? rotate(o.X, along, false) : zero<I>();
     if (L.type == K::revolute) {
       o.couple += along;
