@@ -1145,7 +1145,10 @@ std::string block_arm_text(const std::string& torque, const std::string& hinge_q
 const std::string block_arm_sole = "\"half_lengths\": [\"0.1\", \"0.08\"]";
 /// The block and arm written with the varied field's value.
 std::string block_arm_written(const std::string& base, const std::string& field, const std::string& value) {
-  if (field == "torques.hinge") return replaced(base, "\"hinge\": \"12.5\"", "\"hinge\": \"" + value + "\"");
+  if (field == "torques.hinge" || field == "bodies.arm.joint.effort")
+    return replaced(base, "\"hinge\": \"12.5\"", "\"hinge\": \"" + value + "\"");
+  if (field.back() == ']' && field[field.size() - 2] == '1')
+    return replaced(base, block_arm_sole, "\"half_lengths\": [\"0.1\", \"" + value + "\"]");
   return replaced(base, block_arm_sole, "\"half_lengths\": [\"" + value + "\", \"0.08\"]");
 }
 std::string scene_file_of(const std::string& text, const std::string& tag) {
@@ -1164,10 +1167,13 @@ BOOST_AUTO_TEST_CASE(a_torque_and_a_sole_s_size_set_by_validity_are_the_scene_wr
   // interval problem must hold the written scene's: the block and arm with its arm swinging.
   std::mt19937 rng(58);
   const std::string base = block_arm_text("12.5", "0.4", "-1.3");
+  // the four spellings in turn: the torque by its joint and by its body, the sole's X and Y
+  const std::string fields[4] = {"torques.hinge", "bodies.arm.joint.effort", "contacts.sole.sole.half_lengths[0]",
+                                 "contacts.sole.sole.half_lengths[1]"};
   for (int k = 0; k < 16; ++k) {
-    const bool torque = k % 2 == 0;
+    const bool torque = k % 4 < 2;
     const int n = torque ? std::uniform_int_distribution<int>(-600, 600)(rng) : std::uniform_int_distribution<int>(20, 300)(rng);
-    const std::string field = torque ? "torques.hinge" : "contacts.sole.sole.half_lengths[0]";
+    const std::string field = fields[k % 4];
     const std::string value = torque ? std::to_string(n / 10) + "." + std::to_string(std::abs(n % 10))
                                      : "0." + std::to_string(1000 + n).substr(1);  // 0.020 .. 0.300
     const std::string v = torque && n < 0 && n > -10 ? "-" + value : value;
@@ -1190,8 +1196,8 @@ BOOST_AUTO_TEST_CASE(validity_over_a_torque_and_a_sole_s_size_holds_where_the_st
   // every value in it; at rest the wrench is affine in the torque (theta'' is) and does not
   // depend on X, so each of the sole's 16 margins is affine in either: the piece's two ends must
   // hold at t = 0, checked on the scene written with each end, evaluated in MPFI at 256 bits.
-  // The torque tips the block (its centre of pressure leaves the sole, near |tau| = 12 N m):
-  // pieces must hold and pieces fail; an undecided piece names the sole's margin (or N) that its
+  // The torque tips the block (its centre of pressure leaves the sole, between 4.7 and 8.4 N m, either way):
+  // pieces must hold and pieces fail; the pieces at the boundary stay undecided, each naming the sole margin its
   // enclosure leaves undecided, by its place in sole_margins.
   struct sweep {
     std::string field, range, resolution, torque;
@@ -1218,13 +1224,15 @@ BOOST_AUTO_TEST_CASE(validity_over_a_torque_and_a_sole_s_size_holds_where_the_st
         ++fails;
       } else {
         ++undecided;
-        const bool named = p.why.find("(sole_margins[") != std::string::npos || p.why.find("the normal force N") != std::string::npos;
-        BOOST_TEST(named, p.why);
+        // N is some 130 N here: what is undecided is a margin of the sole's cone, named
+        BOOST_TEST(p.why.find("margin") != std::string::npos, p.why);
+        BOOST_TEST(p.why.find("(sole_margins[") != std::string::npos, p.why);
         BOOST_TEST(p.why.find("mu N - |F_t|") == std::string::npos, "a sole judged by the circular cone: " << p.why);
       }
     }
     BOOST_TEST(holds > 0, v.out);
     BOOST_TEST(fails > 0, v.out);
+    BOOST_TEST(undecided > 0, v.out);  // at this resolution the boundary's pieces stay undecided, and say why
     BOOST_TEST_MESSAGE(s.field << " over " << s.range << ": " << holds << " pieces hold, " << fails << " fail, " << undecided
                                << " undecided");
   }

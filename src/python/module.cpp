@@ -17,6 +17,7 @@
 #include <pybind11/stl.h>
 
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
@@ -440,14 +441,17 @@ py::dict table_dict(const table_rows::table& t) {
 /// as the command's flag takes it (the motion library then checks its range).
 double number_option(const py::handle& v, const std::string& key) {
   const std::string t = value_text(v, key);
-  char* end = nullptr;
-  const double x = std::strtod(t.c_str(), &end);
-  if (t.empty() || end != t.c_str() + t.size()) throw input_error(key + ": '" + t + "' is not a number");
-  return x;
+  try {
+    return from_decimal<double>(t);  // the command's flags' grammar, rounded to nearest, whatever the locale
+  } catch (const std::exception&) {
+    throw input_error(key + ": '" + t + "' is not a number");
+  }
 }
 /// A setting that is a whole number (an order, a count of bits or threads): an int or its str.
 long integer_option(const py::handle& v, const std::string& key) {
   const std::string t = value_text(v, key);
+  if (t.empty() || !(std::isdigit(static_cast<unsigned char>(t[0])) || t[0] == '-'))
+    throw input_error(key + ": '" + t + "' is not a whole number");
   char* end = nullptr;
   errno = 0;
   const long x = std::strtol(t.c_str(), &end, 10);

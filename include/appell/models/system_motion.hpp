@@ -320,8 +320,10 @@ struct system_problem {
 
   /// What `appell validity --vary NAME` can take over a range in this motion, besides the state's
   /// components and mu: a parameter of the file (NAME or parameters.NAME), a joint's effort given
-  /// as a number (torques.JOINT, as a `urdf` scene writes it, or bodies.BODY.joint.effort), a
-  /// sole's half-length (contacts.NAME.sole.half_lengths[0] or [1]).
+  /// as a number (torques.JOINT, JOINT the joint's name in the system: in a `urdf` scene the name
+  /// its coordinate has in the state, which is the URDF's own unless that had characters other
+  /// than letters, digits and _ or clashed; or bodies.BODY.joint.effort), a sole's half-length
+  /// (contacts.NAME.sole.half_lengths[0] or [1]).
   struct varied_field {
     enum class kind { none, parameter, effort, half_length } what = kind::none;
     int index = -1;  ///< the parameter's variable, the link's place in sys.links, the contact's in sys.contacts
@@ -352,7 +354,8 @@ struct system_problem {
     std::vector<std::string> out(d.names.begin(), d.names.begin() + d.vars.parameters);
     for (const auto& L : model->sys.links) {
       const system_body_definition& b = d.bodies[static_cast<std::size_t>(L.body)];
-      if (b.joint.type != system_joint_definition::kind::fixed && b.joint.coordinate >= 0) out.push_back("torques." + b.joint.name);
+      if (b.joint.type != system_joint_definition::kind::fixed && b.joint.coordinate >= 0 && b.joint.effort)
+        out.push_back("torques." + b.joint.name);
     }
     for (const auto& k : d.contacts)
       if (k.surface)

@@ -254,7 +254,11 @@ struct contact_track {
           const std::vector<I> all = sole_margins(r.values);
           for (std::size_t k = 0; k < all.size(); ++k)
             if (!certainly_positive(all[k])) {
-              what = "the " + sole_margin_name(k, all.size()) + " (" + name + "_margins[" + std::to_string(k) + "])";
+              // its place in the results' <name>_margins, or, judged with a mu of the run's own
+              // (--mu, validity --vary mu), in the cone formed here with that mu
+              what = "the " + sole_margin_name(k, all.size()) +
+                     (sole_with_own_mu ? " (margin " + std::to_string(k) + " of the sole's cone at the run's mu)"
+                                       : " (" + name + "_margins[" + std::to_string(k) + "])");
               m = all[k];
               break;
             }
