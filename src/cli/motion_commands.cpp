@@ -16,8 +16,6 @@
 
 namespace appell::cli {
 
-double positive_decimal(const std::string& flag, const std::string& text) { return motion::positive_decimal(flag, text); }
-
 std::string parse_taylor_order(const std::string& flag, const std::string& text, std::optional<int>& into) {
   unsigned n = 0;
   if (std::string why = parse_integer(flag, text, 2, 60, n); !why.empty()) return why;

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "appell/io/scene.hpp"
+#include "appell/motion/checks.hpp"
 #include "appell/motion/motion.hpp"
 
 namespace appell::cli {
@@ -46,8 +47,8 @@ struct motion_outcome {
   std::string summary;  ///< the lines printed on stdout
 };
 
-/// A positive finite decimal, or input_error naming the flag.
-double positive_decimal(const std::string& flag, const std::string& text);
+/// A positive finite decimal, or input_error naming the flag (the motion library's check).
+using motion::positive_decimal;
 
 /// A Taylor order (`--order`, `--reference-order`): an integer from 2 to 60.  Returns "" or the
 /// usage error naming the flag.

@@ -112,9 +112,9 @@ double positive_decimal(const std::string& flag, const std::string& text) {
   try {
     v = from_decimal<double>(text);
   } catch (const std::exception&) {
-    throw input_error(flag + ": expected a positive decimal, got '" + text + "'");
+    v = 0;
   }
-  if (!(v > 0) || !std::isfinite(v)) throw input_error(flag + ": expected a positive decimal, got '" + text + "'");
+  if (!(v > 0) || !std::isfinite(v)) throw input_error(flag + ": expected a positive decimal, got '" + printable(text) + "'");
   return v;
 }
 

@@ -455,7 +455,7 @@ long integer_option(const py::handle& v, const std::string& key) {
   char* end = nullptr;
   errno = 0;
   const long x = std::strtol(t.c_str(), &end, 10);
-  if (t.empty() || end != t.c_str() + t.size() || errno == ERANGE || x < INT_MIN || x > INT_MAX)
+  if (end != t.c_str() + t.size() || errno == ERANGE || x < INT_MIN || x > INT_MAX)
     throw input_error(key + ": '" + t + "' is not a whole number (of an int's range)");
   return x;
 }

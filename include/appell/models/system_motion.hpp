@@ -329,37 +329,43 @@ struct system_problem {
     int index = -1;  ///< the parameter's variable, the link's place in sys.links, the contact's in sys.contacts
     int axis = 0;    ///< half_length: 0 for X, 1 for Y
   };
-  varied_field find_varied(std::string name) const {
+  /// Each field this motion can vary, once: f(name, another spelling of it or "", the field,
+  /// whether a message that lists the fields names it: a joint's effort only where the scene
+  /// gives one). find_varied and parameter_names both read this one list.
+  template <class F>
+  void for_each_varied(F&& f) const {
     const system_definition& d = *model->in->def;
     using K = typename varied_field::kind;
-    if (name.rfind("parameters.", 0) == 0) name = name.substr(11);
-    for (int p = 0; p < d.vars.parameters; ++p)
-      if (d.names[static_cast<std::size_t>(p)] == name) return {K::parameter, p, 0};
+    for (int p = 0; p < d.vars.parameters; ++p) {
+      const std::string& n = d.names[static_cast<std::size_t>(p)];
+      f(n, "parameters." + n, varied_field{K::parameter, p, 0}, true);
+    }
     const compiled_system<T>& c = model->sys;
     for (std::size_t k = 0; k < c.links.size(); ++k) {
       const system_body_definition& b = d.bodies[static_cast<std::size_t>(c.links[k].body)];
       if (b.joint.type == system_joint_definition::kind::fixed || b.joint.coordinate < 0) continue;
-      if (name == "torques." + b.joint.name || name == "bodies." + b.name + ".joint.effort")
-        return {K::effort, static_cast<int>(k), 0};
+      f("torques." + b.joint.name, "bodies." + b.name + ".joint.effort", varied_field{K::effort, static_cast<int>(k), 0},
+        bool(b.joint.effort));
     }
     for (std::size_t k = 0; k < d.contacts.size(); ++k)
       for (int a = 0; a < 2; ++a)
-        if (d.contacts[k].surface && name == "contacts." + d.contacts[k].name + ".sole.half_lengths[" + std::to_string(a) + "]")
-          return {K::half_length, static_cast<int>(k), a};
-    return {};
+        if (d.contacts[k].surface)
+          f("contacts." + d.contacts[k].name + ".sole.half_lengths[" + std::to_string(a) + "]", "",
+            varied_field{K::half_length, static_cast<int>(k), a}, true);
+  }
+  varied_field find_varied(const std::string& name) const {
+    varied_field found;
+    for_each_varied([&](const std::string& n, const std::string& other, const varied_field& v, bool) {
+      if (found.what == varied_field::kind::none && (name == n || (!other.empty() && name == other))) found = v;
+    });
+    return found;
   }
   /// Every name find_varied knows (for a message that lists them).
   std::vector<std::string> parameter_names() const {
-    const system_definition& d = *model->in->def;
-    std::vector<std::string> out(d.names.begin(), d.names.begin() + d.vars.parameters);
-    for (const auto& L : model->sys.links) {
-      const system_body_definition& b = d.bodies[static_cast<std::size_t>(L.body)];
-      if (b.joint.type != system_joint_definition::kind::fixed && b.joint.coordinate >= 0 && b.joint.effort)
-        out.push_back("torques." + b.joint.name);
-    }
-    for (const auto& k : d.contacts)
-      if (k.surface)
-        for (int a = 0; a < 2; ++a) out.push_back("contacts." + k.name + ".sole.half_lengths[" + std::to_string(a) + "]");
+    std::vector<std::string> out;
+    for_each_varied([&](const std::string& n, const std::string&, const varied_field&, bool listed) {
+      if (listed) out.push_back(n);
+    });
     return out;
   }
   /// Whether `name` is a field find_varied knows.
