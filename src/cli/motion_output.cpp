@@ -271,7 +271,10 @@ motion_outcome write_validity(const motion::validity_report& r, const motion_opt
     if (v == "undecided" && !(p.suggested > 0)) some_undecidable = true;
     const int k = v == "holds" ? 0 : v == "fails" ? 1 : 2;
     const double x = (p.x_lo + p.x_hi) / 2, dx = (p.x_hi - p.x_lo) / 2;
-    dat[k] << x << " " << (p.y0 + p.y1) / 2 << " " << x - dx << " " << x + dx << " " << p.y0 << " " << p.y1 << "\n";
+    // A failure proved at a piece's start (y0 = y1 = 0) would be a box of no height: drawn at least
+    // 1% of the horizon tall, upward, it still holds the instant the key says it holds.
+    const double y1 = k == 1 ? std::max(p.y1, p.y0 + 0.01 * r.t_end) : p.y1;
+    dat[k] << x << " " << (p.y0 + y1) / 2 << " " << x - dx << " " << x + dx << " " << p.y0 << " " << y1 << "\n";
   }
   const std::filesystem::path dir(o.out);
   std::filesystem::create_directories(dir);
@@ -285,7 +288,7 @@ motion_outcome write_validity(const motion::validity_report& r, const motion_opt
     const std::string data = datablock("pieces", dat[0].str() + "\n\n" + dat[1].str() + "\n\n" + dat[2].str());
     const plot_outcome p = render_png(dir / "validity.png", data + "set title " +
          gnuplot_quoted(o.scene + ": can the contacts hold on [0, " + o.t_end + "]? (" + r.id.scalar + ")") +
-         "\nset xlabel " + gnuplot_quoted(o.vary_field) + "\nset ylabel 't'\nset yrange [0:" + std::to_string(r.t_end * 1.1) +
+         "\nset xlabel " + gnuplot_quoted(o.vary_field) + "\nset autoscale xfix\nset ylabel 't'\nset yrange [0:" + std::to_string(r.t_end * 1.1) +
          "]\nset grid\nset key below\nset style fill solid 0.5\nplot " + f +
          " index 0 using 1:2:3:4:5:6 with boxxyerror lc rgb 'forest-green' title 'holds over [0, T] (proved)', " + f +
          " index 1 using 1:2:3:4:5:6 with boxxyerror lc rgb 'red' title 'fails (proved): the first failure lies within the box', " + f +
