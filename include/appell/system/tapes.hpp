@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <type_traits>
 
 #include "appell/linalg/scratch.hpp"
 #include "appell/dynamics/speeds.hpp"
@@ -153,6 +154,8 @@ struct compiled_system {
     int body = -1, parent = -1, coordinate = -1;  ///< parent: a body number, -1 the ground
     system_joint_definition::kind type = system_joint_definition::kind::fixed;
     int along = -1;
+    int turn_i = 1, turn_j = 2;  ///< along >= 0: the plane it turns, (along + 1, along + 2) mod 3
+    bool axis_negative = false;  ///< along >= 0: the axis is -e_along
     vec3<T> origin = zero_matrix<vec3<T>>(), axis = zero_matrix<vec3<T>>(), com = zero_matrix<vec3<T>>();
     mat3<T> R0 = mat3<T>::Identity(), Rin = mat3<T>::Identity();  ///< the joint's fixed rotation (L's axes to P's), the inertia axes' (to L's)
     bool R0_identity = true, Rin_identity = true;
@@ -202,6 +205,9 @@ struct compiled_system {
       if (j.type == system_joint_definition::kind::fixed) continue;
       if (j.along >= 0) {
         L.axis(j.along) = T(j.sign);
+        L.turn_i = (j.along + 1) % 3;
+        L.turn_j = (j.along + 2) % 3;
+        L.axis_negative = j.sign < 0;
         continue;
       }
       using std::sqrt;
@@ -213,24 +219,85 @@ struct compiled_system {
   }
 
   /// One link's motion (on its own axes) and what its actuators do to it, in S.
+  ///
+  /// In the plain scalar (S = T: an evaluation, not a series), a revolute joint whose fixed
+  /// rotation is not the identity, or whose axis is oblique, keeps X = R0 Rot(axis, q) as one
+  /// matrix (`folded`, set by link_states_into): a vector turned by it costs one 3 x 3 product
+  /// instead of two rotations, and in the interval scalars it is wrapped once instead of twice
+  /// (each component of X w is the exact hull of its linear form over the box w).  On jets and
+  /// slopes X stays factored: its entries would be series, each product a convolution.
   template <class S>
   struct link_state {
+    static constexpr bool can_fold = std::is_same_v<S, T>;
+    struct no_matrix {};
     vec3<S> omega, velocity, gravity;  ///< angular velocity, its origin's velocity, g: on L's axes
     vec3<S> offset;                    ///< L's origin from P's, on P's axes
     S c = S(1), s = S(0);              ///< cos q, sin q (revolute)
     vec3<S> force = vec3<S>::Zero(), couple = vec3<S>::Zero();  ///< by actuators: force at G, couple; L's axes
+    bool folded = false;               ///< X below holds R0 Rot(axis, q)
+    [[no_unique_address]] std::conditional_t<can_fold, mat3<S>, no_matrix> X{};
   };
+  /// Whether link_states_into folds L's rotations into one matrix (link_state's note): where
+  /// the fixed rotation is not the identity or the axis is oblique; in the native floating types
+  /// every revolute joint (a 3 x 3 product costs them less than the elementary rotation's
+  /// shuffles: measured, docs/benchmarks.md "Against the engines, in one run").
+  bool folds(const link& L) const {
+    return L.type == system_joint_definition::kind::revolute &&
+           (std::is_floating_point_v<T> || !L.R0_identity || L.along < 0);
+  }
+  /// st.X = R0 Rot(axis, q) from st.c and st.s: the columns of Rot turned by R0.
+  template <class S>
+  void fold(const link& L, link_state<S>& st) const {
+    if constexpr (link_state<S>::can_fold) {
+      mat3<S>& X = st.X;
+      if (L.along >= 0) {
+        // Rot e_along = e_along; Rot e_i = c e_i + sn e_j, Rot e_j = -sn e_i + c e_j (rotate's)
+        const int i = L.turn_i, j = L.turn_j;
+        const S sn = L.axis_negative ? S(-st.s) : st.s;
+        for (int r = 0; r < 3; ++r) {
+          const S a = L.R0(r, i), b = L.R0(r, j);
+          X(r, L.along) = L.R0(r, L.along);
+          X(r, i) = st.c * a + sn * b;
+          X(r, j) = st.c * b - sn * a;
+        }
+      } else {
+        for (int k = 0; k < 3; ++k) {
+          vec3<S> e = vec3<S>(S(0), S(0), S(0));
+          e(k) = S(1);
+          const vec3<S> col = rotate(L, st, e, false);
+          X.col(k) = L.R0_identity ? col : times(L.R0, col);
+        }
+      }
+      st.folded = true;
+    }
+  }
   /// w on the parent's axes to the link's (X^T w), and back (X w); X = R0 Rot(axis, q).
   template <class S>
   vec3<S> to_link(const link& L, const link_state<S>& st, const vec3<S>& w) const {
+    if constexpr (link_state<S>::can_fold)
+      if (st.folded) return transpose_times_plain(st.X, w);
     vec3<S> r = L.R0_identity ? w : transpose_times(L.R0, w);
     if (L.type == system_joint_definition::kind::revolute) r = rotate(L, st, r, true);
     return r;
   }
   template <class S>
   vec3<S> to_parent(const link& L, const link_state<S>& st, const vec3<S>& w) const {
+    if constexpr (link_state<S>::can_fold)
+      if (st.folded) return times_plain(st.X, w);
     vec3<S> r = L.type == system_joint_definition::kind::revolute ? rotate(L, st, w, false) : w;
     return L.R0_identity ? r : times(L.R0, r);
+  }
+  template <class S>
+  static vec3<S> times_plain(const mat3<S>& R, const vec3<S>& w) {
+    vec3<S> r;
+    for (int i = 0; i < 3; ++i) r(i) = R(i, 0) * w(0) + R(i, 1) * w(1) + R(i, 2) * w(2);
+    return r;
+  }
+  template <class S>
+  static vec3<S> transpose_times_plain(const mat3<S>& R, const vec3<S>& w) {
+    vec3<S> r;
+    for (int i = 0; i < 3; ++i) r(i) = R(0, i) * w(0) + R(1, i) * w(1) + R(2, i) * w(2);
+    return r;
   }
   template <class S>
   static vec3<S> times(const mat3<T>& R, const vec3<S>& w) {
@@ -255,8 +322,8 @@ struct compiled_system {
   template <class S>
   vec3<S> rotate(const link& L, const link_state<S>& st, const vec3<S>& w, bool transpose) const {
     if (L.along >= 0) {
-      const int i = (L.along + 1) % 3, j = (L.along + 2) % 3;
-      const bool negative = (L.axis(L.along) < T(0)) != transpose;
+      const int i = L.turn_i, j = L.turn_j;
+      const bool negative = L.axis_negative != transpose;
       const S sn = negative ? S(-st.s) : st.s;
       vec3<S> r = w;
       r(i) = st.c * w(i) - sn * w(j);
@@ -285,16 +352,24 @@ struct compiled_system {
   void link_states_into(const vector_t<S>& q, const vector_t<S>& qd, const vec3<S>& g, const S* v,
                         std::vector<link_state<S>>& out) const {
     using K = system_joint_definition::kind;
-    out.assign(links.size(), link_state<S>{});
+    // Every field below is assigned, the storage of an earlier call reused (for MPFR and MPFI
+    // numbers an assignment, not a new number).
+    out.resize(links.size());
     for (std::size_t k = 0; k < links.size(); ++k) {
       const link& L = links[k];
       link_state<S>& st = out[k];
       const link_state<S>* p = L.parent >= 0 ? &out[static_cast<std::size_t>(link_of[static_cast<std::size_t>(L.parent)])] : nullptr;
       const S qk = L.coordinate >= 0 ? q(L.coordinate) : S(0), qdk = L.coordinate >= 0 ? qd(L.coordinate) : S(0);
+      st.folded = false;
+      for (int i = 0; i < 3; ++i) st.force(i) = S(0), st.couple(i) = S(0);
       if (L.type == K::revolute) {
         using std::sin, std::cos;
         st.c = cos(qk);
         st.s = sin(qk);
+        if (folds(L)) fold(L, st);
+      } else {
+        st.c = S(1);
+        st.s = S(0);
       }
       for (int i = 0; i < 3; ++i) st.offset(i) = detail::from_base<S>(L.origin(i));
       if (L.type == K::prismatic) st.offset += times(L.R0, scaled(L.axis, qk));

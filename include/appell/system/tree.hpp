@@ -87,11 +87,24 @@ vec3<S> times(const S& x, const vec3<S>& w) {
   return vec3<S>(x * w(0), x * w(1), x * w(2));
 }
 
-/// X W X^T for a matrix W on the link's axes, on the parent's: columns, then rows, turned.
+/// X W X^T for a symmetric matrix W on the link's axes, on the parent's: columns, then rows,
+/// turned (by the folded X, link_state's note: its upper triangle, mirrored).
 template <Scalar T, class S>
 mat3<S> to_parent_matrix(const compiled_system<T>& c, const typename compiled_system<T>::link& L,
                          const typename compiled_system<T>::template link_state<S>& st, const mat3<S>& W) {
   mat3<S> A, B;
+  if constexpr (compiled_system<T>::template link_state<S>::can_fold)
+    if (st.folded) {
+      const mat3<S>& X = st.X;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) A(i, j) = X(i, 0) * W(0, j) + X(i, 1) * W(1, j) + X(i, 2) * W(2, j);
+      for (int i = 0; i < 3; ++i)
+        for (int j = i; j < 3; ++j) {
+          B(i, j) = A(i, 0) * X(j, 0) + A(i, 1) * X(j, 1) + A(i, 2) * X(j, 2);
+          if (j != i) B(j, i) = B(i, j);
+        }
+      return B;
+    }
   for (int j = 0; j < 3; ++j) A.col(j) = c.to_parent(L, st, vec3<S>(W.col(j)));
   for (int i = 0; i < 3; ++i) B.row(i) = c.to_parent(L, st, vec3<S>(A.row(i).transpose())).transpose();
   return B;
