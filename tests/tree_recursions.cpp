@@ -159,9 +159,11 @@ struct both {
   std::vector<joint_wrench_result<T>> wrenches;
 };
 /// The paths: the recursion as the library dispatches it (`tree`: componentwise, or in balls on a
-/// deep tree for the interval scalars), the recursion in balls whatever the depth (`balls`, the
-/// interval scalars), and the generic path (the Jacobians' M, b, Q and joint wrenches).
-enum class path { tree, balls, generic };
+/// deep tree for the interval scalars), the same with the joints' wrenches from the equations'
+/// kept pass (`pass`: tree_pass, as system_model's evaluation takes them), the recursion in balls
+/// whatever the depth (`balls`, the interval scalars), and the generic path (the Jacobians' M, b,
+/// Q and joint wrenches).
+enum class path { tree, pass, balls, generic };
 /// One path's numbers at the state of `in` (or at q, u).
 template <class T>
 both<T> by_path(const system_input& in, const vector_t<double>* q, const vector_t<double>* u, path how) {
@@ -170,13 +172,21 @@ both<T> by_path(const system_input& in, const vector_t<double>* q, const vector_
   if (q) m.q = q->cast<T>(), m.u = u->cast<T>();
   both<T> r;
   const vector_t<T>* none = nullptr;
+  tree_pass<T> kept;
   if (how == path::tree) tree_equations_into<T, T>(m.sys, m.q, m.u, m.t, r.eq);
+  else if (how == path::pass) tree_equations_into<T, T>(m.sys, m.q, m.u, m.t, r.eq, &kept);
   else if (how == path::generic) gibbs_appell_into(expression_system<T>{&m.sys}, m.q, m.u, m.t, r.eq);
   if constexpr (scalar_traits<T>::is_interval)
     if (how == path::balls) tree_equations_in_balls(m.sys, m.q, m.u, m.t, r.eq);
   r.udot = r.eq.accelerations();
   if (how == path::tree) joint_wrenches_into(m.sys, m.q, m.u, m.t, r.udot, none, r.wrenches);
-  else if (how == path::generic) joint_wrenches_by_jacobians_into(m.sys, m.q, m.u, m.t, r.udot, none, r.wrenches);
+  else if (how == path::pass) {
+    // kept wherever the recursion is componentwise (the interval scalars' deep trees: balls)
+    bool componentwise = true;
+    if constexpr (scalar_traits<T>::is_interval) componentwise = !prefer_balls(m.sys);
+    BOOST_TEST((kept.system == &m.sys) == componentwise);
+    joint_wrenches_into(m.sys, m.q, m.u, m.t, r.udot, none, r.wrenches, none, &kept);
+  } else if (how == path::generic) joint_wrenches_by_jacobians_into(m.sys, m.q, m.u, m.t, r.udot, none, r.wrenches);
   if constexpr (scalar_traits<T>::is_interval)
     if (how == path::balls) {
       std::vector<vec3<T>> F, M;
@@ -219,12 +229,17 @@ std::vector<std::pair<std::string, T>> numbers(const both<T>& x) {
 double check_state(const system_input& in, const std::string& what, const vector_t<double>* q = nullptr,
                    const vector_t<double>* u = nullptr) {
   const auto td = numbers(by_tree<double>(in, q, u)), gd = numbers(by_generic<double>(in, q, u));
+  const auto pd = numbers(by_path<double>(in, q, u, path::pass));
   BOOST_REQUIRE(td.size() == gd.size());
+  BOOST_REQUIRE(pd.size() == gd.size());
   double scale = 1;
   for (const auto& [name, x] : gd) scale = std::max(scale, std::abs(x));
-  for (std::size_t i = 0; i < td.size(); ++i)
+  for (std::size_t i = 0; i < td.size(); ++i) {
     BOOST_TEST(std::abs(td[i].second - gd[i].second) <= 1e-11 * scale,
                what << ": " << td[i].first << " tree " << td[i].second << ", generic " << gd[i].second);
+    BOOST_TEST(std::abs(pd[i].second - gd[i].second) <= 1e-11 * scale,
+               what << ": " << pd[i].first << " tree from the kept pass " << pd[i].second << ", generic " << gd[i].second);
+  }
   // the truth at 512 bits (its own rounding far below the 256-bit enclosures' widths)
   const auto truth = [&] {
     const mp_precision_scope high(512);
@@ -234,6 +249,8 @@ double check_state(const system_input& in, const std::string& what, const vector
   const auto ti = numbers(by_tree<interval>(in, q, u));
   const auto gi = numbers(by_generic<interval>(in, q, u));
   const auto tm = numbers(by_tree<mpfi>(in, q, u));
+  const auto kept_i = numbers(by_path<interval>(in, q, u, path::pass));
+  const auto kept_m = numbers(by_path<mpfi>(in, q, u, path::pass));
   const auto bi = numbers(by_path<interval>(in, q, u, path::balls));
   const auto bm = numbers(by_path<mpfi>(in, q, u, path::balls));
   const auto ta = numbers(by_tree<arb>(in, q, u));
@@ -251,6 +268,15 @@ double check_state(const system_input& in, const std::string& what, const vector
       BOOST_TEST_MESSAGE(what << " " << ti[i].first << " width: recursion " << double(hi - lo) << ", balls "
                               << double(bhi - blo) << ", Jacobians " << double(ghi - glo));
     }
+    const auto kept_contains = [&](const auto& p, const char* scalar) {  // the wrenches from the kept pass
+      const auto [plo, phi] = bounds_of(p[i].second);
+      BOOST_TEST((plo <= x && x <= phi), what << ": " << p[i].first << " (kept pass, " << scalar << ") = " << x
+                                              << " outside [" << plo << ", " << phi << "]");
+    };
+    kept_contains(kept_i, "interval");
+    kept_contains(kept_m, "mpfi");
+    const auto [pmlo, pmhi] = bounds_of(kept_m[i].second);
+    BOOST_TEST(double(pmhi - pmlo) <= 1e-60 * std::max(1.0, std::abs(double(x))), what << ": " << kept_m[i].first << " (mpfi, kept pass) wide");
     const auto [bmlo, bmhi] = bounds_of(bm[i].second);
     BOOST_TEST((bmlo <= x && x <= bmhi), what << ": " << bm[i].first << " (mpfi balls) outside");
     BOOST_TEST(double(bmhi - bmlo) <= 1e-60 * std::max(1.0, std::abs(double(x))), what << ": " << bm[i].first << " (mpfi balls) wide");

@@ -92,22 +92,28 @@ vector_t<T> product(const matrix_t<T>& A, const vector_t<T>& x) {
 /// rad = RU(|R| Ar) >= |R| Ar, every operation in the caller's rounding mode,
 /// which must be upward.  Out of line (and the asm barrier at the end) so that
 /// no operation of it can be moved across the caller's mode switch.
+/// Column j of each result is summed down the columns of R (contiguous, column-major), k after
+/// k, so that the inner loop runs over independent rows and vectorizes; every partial sum is
+/// rounded up, so it bounds the exact one from above in any order of summation.
 template <class DM>
 [[gnu::noinline]] void rump_products(const DM& R, const DM& Am, const DM& Ar, DM& up, DM& neg_down, DM& rad) {
+  static_assert(!DM::IsRowMajor, "rump_products walks columns");
   const Eigen::Index n = R.rows(), m = Am.cols(), K = R.cols();
-  for (Eigen::Index j = 0; j < m; ++j)
-    for (Eigen::Index i = 0; i < n; ++i) {
-      double u = 0, d = 0, r = 0;  // partial sums, each rounded up: upper bounds of the exact ones
-      for (Eigen::Index k = 0; k < K; ++k) {
-        const double a = R(i, k);
-        u += a * Am(k, j);
-        d += (-a) * Am(k, j);
-        r += std::abs(a) * Ar(k, j);
+  for (Eigen::Index j = 0; j < m; ++j) {
+    double* __restrict u = up.data() + j * up.outerStride();
+    double* __restrict d = neg_down.data() + j * neg_down.outerStride();
+    double* __restrict r = rad.data() + j * rad.outerStride();
+    for (Eigen::Index i = 0; i < n; ++i) u[i] = 0, d[i] = 0, r[i] = 0;
+    for (Eigen::Index k = 0; k < K; ++k) {
+      const double b = Am(k, j), br = Ar(k, j);
+      const double* __restrict a = R.data() + k * R.outerStride();
+      for (Eigen::Index i = 0; i < n; ++i) {
+        u[i] += a[i] * b;
+        d[i] += (-a[i]) * b;
+        r[i] += std::abs(a[i]) * br;
       }
-      up(i, j) = u;
-      neg_down(i, j) = d;
-      rad(i, j) = r;
     }
+  }
   asm volatile("" : : "r"(up.data()), "r"(neg_down.data()), "r"(rad.data()) : "memory");
 }
 

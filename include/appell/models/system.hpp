@@ -103,12 +103,13 @@ struct system_model {
   /// and where `checks`, the checks (each joint's virtual work).
   template <Scalar T>
   static void add_joints(const prepared<T>& m, const vector_t<T>& udot, const vector_t<T>* efforts,
-                         evaluation_writer<T>& out, with_checks checks, const vector_t<T>* reactions = nullptr) {
+                         evaluation_writer<T>& out, with_checks checks, const vector_t<T>* reactions = nullptr,
+                         const tree_pass<T>* pass = nullptr) {
     using W = evaluation_writer<T>;
     struct site;
     const scratch<std::vector<joint_wrench_result<T>>, site> w_held;  // borrowed (linalg/scratch.hpp)
     // the links' contacts with the ground act on their links (joint_wrenches.hpp)
-    joint_wrenches_into(m.sys, m.q, m.u, m.t, udot, efforts, *w_held, reactions);
+    joint_wrenches_into(m.sys, m.q, m.u, m.t, udot, efforts, *w_held, reactions, pass);
     const std::vector<joint_wrench_result<T>>& w = *w_held;
     const system_definition& d = *m.in->def;
     for (std::size_t k = 0; k < w.size(); ++k) {
@@ -208,7 +209,8 @@ struct system_model {
         e.contacts.push_back(judged_contact(name, f[k].normal, tangential, contacts[k].mu));
       }
     }
-    if (!m.sys.links.empty()) add_joints(m, r.accelerations, static_cast<const vector_t<T>*>(nullptr), out, checks, &r.reactions);
+    if (!m.sys.links.empty())  // the tree's pass of system_motion_into reused where it kept one
+      add_joints(m, r.accelerations, static_cast<const vector_t<T>*>(nullptr), out, checks, &r.reactions, &r.pass);
     if (checks == with_checks::yes) {
       out.scalar(W::checks, "virtual_work_invariant", "", r.virtual_work_residual);
       for (std::size_t c = 0; c < constraints.size(); ++c) {

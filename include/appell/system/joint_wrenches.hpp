@@ -213,10 +213,12 @@ void joint_wrenches_by_jacobians_into(const compiled_system<T>& c, const vector_
 
 /// Every link's joint wrench, as joint_wrenches_by_jacobians_into, the links' accelerations by
 /// the recursion along the tree (system/tree.hpp) where the speeds are the coordinates' rates.
+/// `pass`: the tree's pass at (q, u, t), where the caller kept one (tree_pass).
 template <Scalar T>
 void joint_wrenches_into(const compiled_system<T>& c, const vector_t<T>& q, const vector_t<T>& u, const T& t,
                          const vector_t<T>& udot, const vector_t<T>* efforts,
-                         std::vector<joint_wrench_result<T>>& out, const vector_t<T>* reactions = nullptr) {
+                         std::vector<joint_wrench_result<T>>& out, const vector_t<T>* reactions = nullptr,
+                         const tree_pass<T>* pass = nullptr) {
   if (!tree_accelerations_apply(c)) {
     joint_wrenches_by_jacobians_into(c, q, u, t, udot, efforts, out, reactions);
     return;
@@ -224,7 +226,7 @@ void joint_wrenches_into(const compiled_system<T>& c, const vector_t<T>& q, cons
   struct site;
   const scratch<std::vector<T>, site> values_held;
   const scratch<std::vector<vec3<T>>, site> F_held, M_held;
-  tree_subtree_wrenches_into<T, T>(c, q, u, t, udot, *F_held, *M_held, *values_held);
+  tree_subtree_wrenches_into<T, T>(c, q, u, t, udot, *F_held, *M_held, *values_held, pass);
   if (reactions) detail::subtract_contact_wrenches(c, q, *reactions, *F_held, *M_held);
   detail::joint_wrenches_from_sums(c, *F_held, *M_held, *values_held, efforts, out);
 }

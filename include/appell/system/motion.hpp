@@ -11,10 +11,12 @@ namespace appell {
 
 /// Appell's equations M u' + b = Q of the system without its constraints at (q, u, t): by the
 /// tree's recursions where they apply (system/tree.hpp), else by the generic path.
+/// `keep`: the tree's pass for the joints' wrenches at the same state (tree_pass), where kept.
 template <Scalar T, class S>
 void system_equations_into(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u, const S& t,
-                           appell_equations<S>& e) {
-  if (tree_recursions_apply(c)) tree_equations_into<T, S>(c, q, u, t, e);
+                           appell_equations<S>& e, tree_pass<T>* keep = nullptr) {
+  if (keep) keep->system = nullptr;
+  if (tree_recursions_apply(c)) tree_equations_into<T, S>(c, q, u, t, e, keep);
   else gibbs_appell_into(expression_system<T>{&c}, q, u, t, e);
 }
 template <Scalar T, class S>
@@ -31,6 +33,9 @@ struct system_motion_result {
   vector_t<T> reactions;      ///< Cotton's Q'_c, one per constraint
   vector_t<T> multipliers;    ///< Lagrange's, for comparison
   T virtual_work_residual;    ///< eq. (4), in the speeds adapted to the constraints
+  /// The tree's pass at the same state, for the joints' wrenches (system_model's evaluation):
+  /// kept where the system has no constraints and its recursion is componentwise.
+  tree_pass<T> pass;
 };
 
 /// The system's motion at (q, u, t): u' by Gibbs-Appell (Cotton's method when
@@ -44,13 +49,14 @@ void system_motion_into(const compiled_system<T>& c, const vector_t<T>& q, const
   const expression_system<T> sys{&c};
   const int n = sys.speeds();
   r.virtual_work_residual = T(0);
+  r.pass.system = nullptr;
   // working storage borrowed (linalg/scratch.hpp); r's own reused
   struct site;  // this function's pools (linalg/scratch.hpp: an Eigen object keeps one size)
   const scratch<vector_t<T>, site> ones;
   ones->setOnes(n);
   if (c.constraints.empty()) {
     const scratch<appell_equations<T>, site> eq;
-    system_equations_into<T, T>(c, q, u, t, *eq);
+    system_equations_into<T, T>(c, q, u, t, *eq, &r.pass);
     eq->accelerations_into(r.accelerations);
     r.reactions.resize(0);  // empty already after the first evaluation of the scene: no allocation
     r.multipliers.resize(0);

@@ -87,6 +87,50 @@ vec3<S> times(const S& x, const vec3<S>& w) {
   return vec3<S>(x * w(0), x * w(1), x * w(2));
 }
 
+/// The joint's axis times x.  Where the axis is a coordinate axis (along >= 0) the product is
+/// one component, the others exact zeros: the same numbers as the general form gives, for a
+/// third of the products (and so for the helpers below).
+template <Scalar T, class S>
+vec3<S> axis_times(const typename compiled_system<T>::link& L, const S& x) {
+  if (L.along >= 0) {
+    vec3<S> r(S(0), S(0), S(0));
+    r(L.along) = L.axis_negative ? S(-x) : x;
+    return r;
+  }
+  return times(x, base_vector<T, S>(L.axis));
+}
+/// w x (axis x): with e the coordinate axis, (w x e)_i = w_j, (w x e)_j = -w_i, 0 along e.
+template <Scalar T, class S>
+vec3<S> cross_axis(const vec3<S>& w, const typename compiled_system<T>::link& L, const S& x) {
+  if (L.along >= 0) {
+    const S y = L.axis_negative ? S(-x) : x;
+    vec3<S> r;
+    r(L.along) = S(0);
+    r(L.turn_i) = w(L.turn_j) * y;
+    r(L.turn_j) = S(-(w(L.turn_i) * y));
+    return r;
+  }
+  return cross(w, times(x, base_vector<T, S>(L.axis)));
+}
+/// axis x h: (e x h)_i = -h_j, (e x h)_j = h_i, 0 along e.
+template <Scalar T, class S>
+vec3<S> axis_cross(const typename compiled_system<T>::link& L, const vec3<S>& h) {
+  if (L.along >= 0) {
+    vec3<S> r;
+    r(L.along) = S(0);
+    r(L.turn_i) = L.axis_negative ? h(L.turn_j) : S(-h(L.turn_j));
+    r(L.turn_j) = L.axis_negative ? S(-h(L.turn_i)) : h(L.turn_i);
+    return r;
+  }
+  return cross(base_vector<T, S>(L.axis), h);
+}
+/// axis . v
+template <Scalar T, class S>
+S axis_dot(const typename compiled_system<T>::link& L, const vec3<S>& v) {
+  if (L.along >= 0) return L.axis_negative ? S(-v(L.along)) : v(L.along);
+  return dot(base_vector<T, S>(L.axis), v);
+}
+
 /// X W X^T for a symmetric matrix W on the link's axes, on the parent's: columns, then rows,
 /// turned (by the folded X, link_state's note: its upper triangle, mirrored).
 template <Scalar T, class S>
@@ -141,7 +185,6 @@ void tree_forward(const compiled_system<T>& c, const vector_t<S>& q, const vecto
     }
     if (L.type != K::fixed) {
       const S qd = u(L.coordinate);
-      const vec3<S> axis = base_vector<T, S>(L.axis);
       // omega_p (on L's axes) x axis q'.  The link's own omega serves where the axis is along a
       // coordinate axis (its axis q' term adds axis x axis, exactly 0 there); an oblique axis
       // takes the parent's, turned, where intervals would carry (axis q') x (axis q') as a width.
@@ -149,11 +192,11 @@ void tree_forward(const compiled_system<T>& c, const vector_t<S>& q, const vecto
       if (L.type == K::revolute && L.along < 0)
         wp = L.parent >= 0 ? c.to_link(L, st, states[static_cast<std::size_t>(c.link_of[static_cast<std::size_t>(L.parent)])].omega)
                            : vec3<S>(S(0), S(0), S(0));
-      const vec3<S> turn = cross(wp, detail::times(qd, axis));
+      const vec3<S> turn = cross_axis<T, S>(wp, L, qd);
       if (L.type == K::revolute) o.alpha += turn;
       else o.accel += vec3<S>(turn + turn);
       if (udot) {
-        const vec3<S> along = detail::times((*udot)(L.coordinate), axis);
+        const vec3<S> along = axis_times<T, S>(L, (*udot)(L.coordinate));
         if (L.type == K::revolute) o.alpha += along;
         else o.accel += along;
       }
@@ -204,31 +247,54 @@ void tree_backward(const compiled_system<T>& c,
 /// A joint's row of a generalized force given as a force and moment about its origin.
 template <Scalar T, class S>
 S joint_row(const typename compiled_system<T>::link& L, const vec3<S>& f, const vec3<S>& n) {
-  const vec3<S> axis = base_vector<T, S>(L.axis);
-  return L.type == system_joint_definition::kind::revolute ? dot(axis, n) : dot(axis, f);
+  return L.type == system_joint_definition::kind::revolute ? axis_dot<T, S>(L, n) : axis_dot<T, S>(L, f);
 }
 }  // namespace detail
 
-/// tree_equations_into's recursion in S's own arithmetic (componentwise for the interval scalars).
+/// What the equations' pass leaves for the joints' wrenches at the same (q, u, t): the body
+/// tape's values, the links' motion, and each link's subtree sums of the inertia forces at
+/// q'' = 0 and of the applied forces (tree_link's f, n, fa, na after the backward pass).  The
+/// wrenches at the accelerations u' are those sums plus the subtree sums of the inertia forces
+/// that u' alone gives (no velocity terms): linear in each link's forces, the same numbers in
+/// exact arithmetic as a second pass with u' (tree_subtree_wrenches_into).  system_motion_into
+/// keeps one for system_model's evaluation, which asks for both at one state.
+template <Scalar T>
+struct tree_pass {
+  const compiled_system<T>* system = nullptr;  ///< the system it was computed for; null: none kept
+  std::vector<T> values;
+  std::vector<typename compiled_system<T>::template link_state<T>> states;
+  std::vector<detail::tree_link<T>> links;
+};
+
+/// tree_equations_into's recursion in S's own arithmetic (componentwise for the interval scalars);
+/// in the plain scalar (S = T), `keep` non-null keeps the pass (tree_pass).
 template <Scalar T, class S>
 void tree_equations_componentwise_into(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u,
-                                       const S& t, appell_equations<S>& e) {
+                                       const S& t, appell_equations<S>& e, tree_pass<T>* keep = nullptr) {
   using K = system_joint_definition::kind;
   using link_state = typename compiled_system<T>::template link_state<S>;
   struct site;
   const scratch<std::vector<S>, site> values_held;
   const scratch<std::vector<link_state>, site> states_held;
   const scratch<std::vector<detail::tree_link<S>>, site> links_held;
-  std::vector<detail::tree_link<S>>& links = *links_held;
-  const std::vector<link_state>& states = *states_held;
-  detail::tree_forward<T, S>(c, q, u, t, nullptr, *values_held, *states_held, links);
+  std::vector<S>* values_in = &*values_held;
+  std::vector<link_state>* states_in = &*states_held;
+  std::vector<detail::tree_link<S>>* links_in = &*links_held;
+  if constexpr (std::is_same_v<S, T>)
+    if (keep) {
+      keep->system = nullptr;
+      values_in = &keep->values, states_in = &keep->states, links_in = &keep->links;
+    }
+  std::vector<detail::tree_link<S>>& links = *links_in;
+  const std::vector<link_state>& states = *states_in;
+  detail::tree_forward<T, S>(c, q, u, t, nullptr, *values_in, *states_in, links);
   detail::tree_backward<T, S>(c, states, links, true);
   const int n = c.def->vars.speeds;
   e.M.setZero(n, n);
   e.b.setZero(n);
   e.Q.setZero(n);
   const std::size_t N = c.links.size();
-  const S* v = values_held->data();
+  const S* v = values_in->data();
   for (std::size_t k = 0; k < N; ++k) {
     const auto& L = c.links[k];
     if (L.type == K::fixed) continue;
@@ -293,14 +359,17 @@ void tree_equations_componentwise_into(const compiled_system<T>& c, const vector
     const auto& L = c.links[k];
     if (L.type == K::fixed) continue;
     const detail::tree_link<S>& o = links[k];
-    const vec3<S> axis = detail::base_vector<T, S>(L.axis);
     vec3<S> f, nm;
     if (L.type == K::revolute) {
-      f = cross(axis, o.h);
-      nm = mat_vec(o.I, axis);
+      f = detail::axis_cross<T, S>(L, o.h);
+      if (L.along >= 0) {  // I e: a column
+        for (int i = 0; i < 3; ++i) nm(i) = L.axis_negative ? S(-o.I(i, L.along)) : o.I(i, L.along);
+      } else {
+        nm = mat_vec(o.I, detail::base_vector<T, S>(L.axis));
+      }
     } else {
-      f = detail::times(o.m, axis);
-      nm = cross(o.h, axis);
+      f = detail::axis_times<T, S>(L, o.m);
+      nm = detail::cross_axis<T, S>(o.h, L, S(1));
     }
     const int i = L.coordinate;
     e.M(i, i) = detail::joint_row<T, S>(L, f, nm);
@@ -318,17 +387,21 @@ void tree_equations_componentwise_into(const compiled_system<T>& c, const vector
       e.M(i, Lp.coordinate) = mij;
     }
   }
+  if constexpr (std::is_same_v<S, T>)
+    if (keep) keep->system = &c;
 }
 
 /// Appell's equations M u' + b = Q of a tree (tree_recursions_apply) at (q, u, t), by the
 /// recursions at the top of this file.  S: T, or numbers built on T (jets, slopes, duals); the
 /// interval scalars on a deep tree in balls (tree_balls.hpp).
+/// `keep`: tree_pass (where the recursion is componentwise; its `system` stays null otherwise).
 template <Scalar T, class S>
 void tree_equations_into(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u, const S& t,
-                         appell_equations<S>& e) {
+                         appell_equations<S>& e, tree_pass<T>* keep = nullptr) {
+  if (keep) keep->system = nullptr;
   if constexpr (std::is_same_v<S, T> && scalar_traits<T>::is_interval)
     if (prefer_balls(c)) return tree_equations_in_balls(c, q, u, t, e);
-  tree_equations_componentwise_into<T, S>(c, q, u, t, e);
+  tree_equations_componentwise_into<T, S>(c, q, u, t, e, keep);
 }
 
 /// Every link's motion from the recursion with the accelerations udot: for each link, its
@@ -355,12 +428,73 @@ void tree_subtree_wrenches_componentwise_into(const compiled_system<T>& c, const
   for (std::size_t k = 0; k < links.size(); ++k) F[k] = links[k].f, M[k] = links[k].n;
 }
 
+/// tree_subtree_wrenches_componentwise_into from a kept pass (tree_pass, at the same q, u, t):
+/// the forward pass of u' alone (alpha = X^T alpha_p + axis q'', a_O = X^T (a_p + alpha_p x r)
+/// (+ axis q'' for a prismatic joint), the inertia forces m (a_O + alpha x c) and I alpha about
+/// G), its backward sums, and the kept sums of the inertia forces at q'' = 0 minus the applied.
+template <Scalar T>
+void tree_subtree_wrenches_from_pass(const compiled_system<T>& c, const tree_pass<T>& pass, const vector_t<T>& udot,
+                                     std::vector<vec3<T>>& F, std::vector<vec3<T>>& M, std::vector<T>& values) {
+  using K = system_joint_definition::kind;
+  struct site;
+  const scratch<std::vector<detail::tree_link<T>>, site> links_held;
+  std::vector<detail::tree_link<T>>& links = *links_held;
+  const auto& states = pass.states;
+  const std::size_t n = c.links.size();
+  values = pass.values;
+  const T* v = values.data();
+  links.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& L = c.links[k];
+    const auto& st = states[k];
+    detail::tree_link<T>& o = links[k];
+    if (L.parent >= 0) {
+      const detail::tree_link<T>& op = links[static_cast<std::size_t>(c.link_of[static_cast<std::size_t>(L.parent)])];
+      o.alpha = c.to_link(L, st, op.alpha);
+      o.accel = c.to_link(L, st, vec3<T>(op.accel + cross(op.alpha, st.offset)));
+    } else {
+      o.alpha = vec3<T>(T(0), T(0), T(0));
+      o.accel = vec3<T>(T(0), T(0), T(0));
+    }
+    if (L.type != K::fixed) {
+      const vec3<T> along = detail::axis_times<T, T>(L, udot(L.coordinate));
+      if (L.type == K::revolute) o.alpha += along;
+      else o.accel += along;
+    }
+    const auto& b = c.bodies[static_cast<std::size_t>(L.body)];
+    const T m = b.mass.at(v);
+    const vec3<T> com = detail::base_vector<T, T>(L.com);
+    o.f = detail::times(m, vec3<T>(o.accel + cross(o.alpha, com)));
+    vec3<T> nG = vec3<T>(T(0), T(0), T(0));
+    if (b.has_inertia) {
+      const mat3<T> I = b.inertia_on_body_axes(v);
+      if (L.Rin_identity) {
+        nG = mat_vec(I, o.alpha);
+      } else {
+        const vec3<T> al = compiled_system<T>::transpose_times(L.Rin, o.alpha);
+        nG = compiled_system<T>::times(L.Rin, vec3<T>(mat_vec(I, al)));
+      }
+    }
+    o.n = nG + cross(com, o.f);
+  }
+  detail::tree_backward<T, T>(c, states, links, false);
+  F.resize(n);
+  M.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const detail::tree_link<T>& p = pass.links[k];
+    F[k] = vec3<T>(p.f - p.fa + links[k].f);
+    M[k] = vec3<T>(p.n - p.na + links[k].n);
+  }
+}
+
 /// tree_subtree_wrenches_componentwise_into, the interval scalars on a deep tree in balls
-/// (tree_balls.hpp).
+/// (tree_balls.hpp); from `pass` where one was kept for this system at (q, u, t).
 template <Scalar T, class S>
 void tree_subtree_wrenches_into(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u, const S& t,
                                 const vector_t<S>& udot, std::vector<vec3<S>>& F, std::vector<vec3<S>>& M,
-                                std::vector<S>& values) {
+                                std::vector<S>& values, const tree_pass<T>* pass = nullptr) {
+  if constexpr (std::is_same_v<S, T>)
+    if (pass && pass->system == &c) return tree_subtree_wrenches_from_pass(c, *pass, udot, F, M, values);
   if constexpr (std::is_same_v<S, T> && scalar_traits<T>::is_interval)
     if (prefer_balls(c)) return tree_subtree_wrenches_in_balls(c, q, u, t, udot, F, M, values);
   tree_subtree_wrenches_componentwise_into<T, S>(c, q, u, t, udot, F, M, values);
