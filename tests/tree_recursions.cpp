@@ -185,6 +185,12 @@ both<T> by_path(const system_input& in, const vector_t<double>* q, const vector_
     bool componentwise = true;
     if constexpr (scalar_traits<T>::is_interval) componentwise = !prefer_balls(m.sys);
     BOOST_TEST((kept.system == &m.sys) == componentwise);
+    if (componentwise) {  // taken at its own state only
+      BOOST_TEST(pass_fits(kept, m.sys, m.q, m.u, m.t));
+      vector_t<T> other = m.u;
+      other(0) += T(1);
+      BOOST_TEST(!pass_fits(kept, m.sys, m.q, other, m.t));
+    }
     joint_wrenches_into(m.sys, m.q, m.u, m.t, r.udot, none, r.wrenches, none, &kept);
   } else if (how == path::generic) joint_wrenches_by_jacobians_into(m.sys, m.q, m.u, m.t, r.udot, none, r.wrenches);
   if constexpr (scalar_traits<T>::is_interval)

@@ -261,10 +261,41 @@ S joint_row(const typename compiled_system<T>::link& L, const vec3<S>& f, const 
 template <Scalar T>
 struct tree_pass {
   const compiled_system<T>* system = nullptr;  ///< the system it was computed for; null: none kept
+  vector_t<T> q, u;                            ///< the state it was computed at, and
+  T t = T(0);
+  std::vector<T> parameters;                   ///< the system's parameters then (pass_fits)
   std::vector<T> values;
   std::vector<typename compiled_system<T>::template link_state<T>> states;
   std::vector<detail::tree_link<T>> links;
 };
+
+namespace detail {
+/// a and b the same number (an interval's or a ball's two bounds); NaN never the same.
+template <class T>
+bool same_number(const T& a, const T& b) {
+  if constexpr (scalar_traits<T>::is_interval)
+    return scalar_traits<T>::lower(a) == scalar_traits<T>::lower(b) && scalar_traits<T>::upper(a) == scalar_traits<T>::upper(b);
+  else
+    return a == b;
+}
+template <class V>
+bool same_numbers(const V& a, const V& b) {
+  if (a.size() != b.size()) return false;
+  for (decltype(a.size()) i = 0; i < a.size(); ++i)
+    if (!same_number(a[i], b[i])) return false;
+  return true;
+}
+}  // namespace detail
+
+/// Whether `pass` was kept for c at (q, u, t), c's parameters as they are now: the joints'
+/// wrenches take a pass only then (any other, from another state or before a parameter changed,
+/// is ignored and the second pass runs whole).
+template <Scalar T>
+bool pass_fits(const tree_pass<T>& p, const compiled_system<T>& c, const vector_t<T>& q, const vector_t<T>& u,
+               const T& t) {
+  return p.system == &c && detail::same_number(p.t, t) && detail::same_numbers(p.q, q) &&
+         detail::same_numbers(p.u, u) && detail::same_numbers(p.parameters, c.parameters);
+}
 
 /// tree_equations_into's recursion in S's own arithmetic (componentwise for the interval scalars);
 /// in the plain scalar (S = T), `keep` non-null keeps the pass (tree_pass).
@@ -388,7 +419,11 @@ void tree_equations_componentwise_into(const compiled_system<T>& c, const vector
     }
   }
   if constexpr (std::is_same_v<S, T>)
-    if (keep) keep->system = &c;
+    if (keep) {
+      keep->q = q, keep->u = u, keep->t = t;
+      keep->parameters = c.parameters;
+      keep->system = &c;
+    }
 }
 
 /// Appell's equations M u' + b = Q of a tree (tree_recursions_apply) at (q, u, t), by the
@@ -428,7 +463,8 @@ void tree_subtree_wrenches_componentwise_into(const compiled_system<T>& c, const
   for (std::size_t k = 0; k < links.size(); ++k) F[k] = links[k].f, M[k] = links[k].n;
 }
 
-/// tree_subtree_wrenches_componentwise_into from a kept pass (tree_pass, at the same q, u, t):
+/// tree_subtree_wrenches_componentwise_into from a kept pass (tree_pass, at the same q, u, t:
+/// pass_fits):
 /// the forward pass of u' alone (alpha = X^T alpha_p + axis q'', a_O = X^T (a_p + alpha_p x r)
 /// (+ axis q'' for a prismatic joint), the inertia forces m (a_O + alpha x c) and I alpha about
 /// G), its backward sums, and the kept sums of the inertia forces at q'' = 0 minus the applied.
@@ -488,13 +524,13 @@ void tree_subtree_wrenches_from_pass(const compiled_system<T>& c, const tree_pas
 }
 
 /// tree_subtree_wrenches_componentwise_into, the interval scalars on a deep tree in balls
-/// (tree_balls.hpp); from `pass` where one was kept for this system at (q, u, t).
+/// (tree_balls.hpp); from `pass` where it was kept for this system at (q, u, t) (pass_fits).
 template <Scalar T, class S>
 void tree_subtree_wrenches_into(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u, const S& t,
                                 const vector_t<S>& udot, std::vector<vec3<S>>& F, std::vector<vec3<S>>& M,
                                 std::vector<S>& values, const tree_pass<T>* pass = nullptr) {
   if constexpr (std::is_same_v<S, T>)
-    if (pass && pass->system == &c) return tree_subtree_wrenches_from_pass(c, *pass, udot, F, M, values);
+    if (pass && pass_fits(*pass, c, q, u, t)) return tree_subtree_wrenches_from_pass(c, *pass, udot, F, M, values);
   if constexpr (std::is_same_v<S, T> && scalar_traits<T>::is_interval)
     if (prefer_balls(c)) return tree_subtree_wrenches_in_balls(c, q, u, t, udot, F, M, values);
   tree_subtree_wrenches_componentwise_into<T, S>(c, q, u, t, udot, F, M, values);
