@@ -3,7 +3,8 @@
 # each robot's scene state, appell (appell_bench_urdf's fd-SCALAR/ROBOT: no checks, the engines'
 # work) and DART, MuJoCo and Bullet (tests/engines/*_reference time SCENE REPS), their processes
 # interleaved round by round so that a slow spell of the machine touches all of them; the median
-# of the rounds, microseconds, and appell's ratio to the fastest engine.
+# of the rounds, microseconds, and appell's ratio to the fastest engine: double, interval, and at
+# 113 bits the rigorous mpfi and arb and the point mpfr (arb's cost against it: issue 57, point 4).
 #
 # Usage: bench/robots_vs_engines.sh [BUILD_DIR] [ROUNDS]   (default build, 3)
 # The build needs -DAPPELL_BUILD_BENCH=ON (appell_bench_urdf) and -DAPPELL_BUILD_TESTS=ON (the
@@ -42,14 +43,16 @@ for f in glob.glob(out + "/appell_*.json"):
         t[(scalar, robot.replace(".json", ""))].append(b["real_time"] * unit)
 med = {k: statistics.median(v) for k, v in t.items()}
 engines = [e for e in ("dart", "mujoco", "bullet") if any((e, r) in med for r in robots)]
-scalars = [s for s in ("double", "interval", "mpfi") if any((s, r) in med for r in robots)]
+scalars = [s for s in ("double", "interval", "mpfi", "arb", "mpfr") if any((s, r) in med for r in robots)]
 print(f"forward dynamics and every joint's wrench, microseconds (median of {rounds} interleaved rounds)")
 print(f"{'robot':18}" + "".join(f"{e:>10}" for e in engines) + "".join(f"{s:>12}" for s in scalars) +
-      "".join(f"{s + '/best':>15}" for s in scalars))
+      "".join(f"{s + '/best':>15}" for s in scalars) + (f"{'arb/mpfr':>10}" if "arb" in scalars and "mpfr" in scalars else ""))
 for r in robots:
     best = min((med[(e, r)] for e in engines if (e, r) in med), default=float("nan"))
     row = f"{r[5:]:18}" + "".join(f"{med.get((e, r), float('nan')):10.2f}" for e in engines)
     row += "".join(f"{med.get((s, r), float('nan')):12.1f}" for s in scalars)
     row += "".join(f"{med.get((s, r), float('nan')) / best:15.1f}" for s in scalars)
+    if ("arb", r) in med and ("mpfr", r) in med:
+        row += f"{med[('arb', r)] / med[('mpfr', r)]:10.2f}"
     print(row)
 EOF

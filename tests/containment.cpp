@@ -10,6 +10,10 @@
 #include <gmp.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <optional>
 #include <functional>
 #include <random>
 #include <string>
@@ -18,6 +22,7 @@
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/format.hpp"
 #include "appell/scalar/functions.hpp"
+#include "appell/scalar/products.hpp"
 
 using namespace appell;
 
@@ -229,7 +234,131 @@ void run_all(const std::string& label, mpfr_prec_t prec) {
   BOOST_TEST(t.cases >= 40000);
 }
 
+// sum_of_products (3 terms) and difference_of_products (2), the kernels of the trees' 3 x 3 and
+// cross products (products.hpp: interval in SSE pairs, arb in one arb_dot): the exact range over
+// the operands' box is [min, max] of the values at its vertices (the function is affine in each
+// operand), each computed exactly (products of two numbers of at most 200 bits, each below 2^42 in
+// magnitude, and sums of three of them fit in 1200 bits); the result must contain every one. One
+// case in 16 has an exact zero among the operands (arb: a subtracted zero midpoint is skipped).
+template <class I>
+void run_products(tally& t, rng_t& rng, mpfr_prec_t prec, int n) {
+  const domain dom{-30, 30, false};
+  for (int c = 0; c < n; ++c) {
+    const bool diff = c % 4 >= 2;
+    const int m = diff ? 2 : 3;
+    I a[3], b[3];
+    for (int k = 0; k < m; ++k) {
+      a[k] = random_argument<I>(rng, dom, c % 2 == 1 && rng.integer(0, 1) == 1, prec);
+      b[k] = random_argument<I>(rng, dom, c % 2 == 1 && rng.integer(0, 1) == 1, prec);
+      if (rng.integer(0, 15) == 0) a[k] = I(0);
+    }
+    const I r = diff ? difference_of_products(a[0], b[0], a[1], b[1]) : sum_of_products(a[0], b[0], a[1], b[1], a[2], b[2]);
+    ++t.cases;
+    mpfr_value lo[2][3], hi[2][3];
+    for (int k = 0; k < m; ++k) {
+      scalar_traits<I>::to_mpfr(a[k], lo[0][k], hi[0][k]);
+      scalar_traits<I>::to_mpfr(b[k], lo[1][k], hi[1][k]);
+    }
+    for (int v = 0; v < 1 << (2 * m); ++v) {
+      mpfr_value sum(1200), p(1200);
+      mpfr_set_zero(sum, 1);
+      for (int k = 0; k < m; ++k) {
+        mpfr_mul(p, (v >> (2 * k) & 1) ? hi[0][k] : lo[0][k], (v >> (2 * k + 1) & 1) ? hi[1][k] : lo[1][k], MPFR_RNDN);
+        if (diff && k == 1) mpfr_sub(sum, sum, p, MPFR_RNDN);
+        else mpfr_add(sum, sum, p, MPFR_RNDN);
+      }
+      check(t, r, sum, std::string(diff ? "a0 b0 - a1 b1 " : "a0 b0 + a1 b1 + a2 b2 ") + to_string(a[0]) + " " + to_string(b[0]));
+    }
+  }
+}
+
 }  // namespace
+
+BOOST_AUTO_TEST_CASE(sums_of_products_contain_their_exact_range) {
+  for (const mpfr_prec_t bits : {53, 64, 200}) {
+    rng_t rng;
+    tally t;
+    if (bits == 53) {
+      run_products<interval>(t, rng, 53, 4000);
+    } else {
+      const mp_precision_scope scope(static_cast<unsigned>(bits));
+      run_products<arb>(t, rng, bits, 4000);
+    }
+    BOOST_TEST_MESSAGE((bits == 53 ? "interval" : "arb " + std::to_string(bits)) << ": " << t.cases << " sums of products, "
+                                                                                  << t.samples << " vertices checked, " << t.misses << " misses");
+    for (const auto& miss : t.first_misses) BOOST_TEST_MESSAGE("  MISS " << miss);
+    BOOST_TEST(t.misses == 0);
+    BOOST_TEST(t.samples >= 100000);
+  }
+  // x x + y y + z z with each square one value twice (arb takes Arb's square there, as the
+  // expression does): the values at each operand's ends and at 0 where it holds 0.
+  rng_t rng;
+  tally t;
+  const mp_precision_scope scope(113);
+  for (int c = 0; c < 2000; ++c) {
+    arb x[3];
+    mpfr_value lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+      x[k] = random_argument<arb>(rng, domain{-30, 30, false}, c % 2 == 1, 113);
+      scalar_traits<arb>::to_mpfr(x[k], lo[k], hi[k]);
+    }
+    const arb r = sum_of_products(x[0], x[0], x[1], x[1], x[2], x[2]);
+    ++t.cases;
+    for (int v = 0; v < 27; ++v) {
+      mpfr_value sum(1200), p(1200), at(1200);
+      mpfr_set_zero(sum, 1);
+      bool point = true;  // 0 taken only where the operand holds it
+      for (int k = 0, w = v; k < 3; ++k, w /= 3)
+        if (w % 3 == 2 && !(mpfr_cmp_si(lo[k], 0) <= 0 && mpfr_cmp_si(hi[k], 0) >= 0)) point = false;
+      if (!point) continue;
+      for (int k = 0, w = v; k < 3; ++k, w /= 3) {
+        if (w % 3 == 2) mpfr_set_zero(at, 1);
+        else mpfr_set(at, w % 3 == 1 ? hi[k] : lo[k], MPFR_RNDN);
+        mpfr_sqr(p, at, MPFR_RNDN);
+        mpfr_add(sum, sum, p, MPFR_RNDN);
+      }
+      check(t, r, sum, "x x + y y + z z " + to_string(x[0]));
+    }
+  }
+  BOOST_TEST_MESSAGE("arb 113, squares: " << t.cases << " sums, " << t.samples << " points, " << t.misses << " misses");
+  BOOST_TEST(t.misses == 0);
+}
+
+BOOST_AUTO_TEST_CASE(interval_sums_of_products_are_the_operations_one_by_one) {
+  // The fused kernels claim the bounds of the operations done one by one (interval.hpp): the
+  // same bits on random operands, and on operands with infinite bounds, empty ones and exact
+  // zeros (which take the operations one by one).
+  rng_t rng;
+  const domain dom{-30, 30, false};
+  const double inf = std::numeric_limits<double>::infinity();
+  // huge finite bounds: products and sums that round up to +inf in one lane
+  const interval specials[] = {interval(-inf, 1.5), interval(0.0, inf), interval(-inf, inf), interval::empty(), interval(0.0),
+                               interval(-0.0, 0.0), interval(-2.0, 0.0), interval(1e200, 1e300), interval(-1e300, -1e250)};
+  std::optional<upward_rounding> up;  // the first half inside a scope, the second switching per operation
+  up.emplace();
+  long same = 0, cases = 0;
+  for (int c = 0; c < 20000; ++c) {
+    if (c == 10000) up.reset();
+    interval a[3], b[3];
+    for (int k = 0; k < 3; ++k) {
+      a[k] = random_argument<interval>(rng, dom, rng.integer(0, 1) == 1, 53);
+      b[k] = random_argument<interval>(rng, dom, rng.integer(0, 1) == 1, 53);
+      if (rng.integer(0, 15) == 0) a[k] = specials[rng.integer(0, 8)];
+      if (rng.integer(0, 15) == 0) b[k] = specials[rng.integer(0, 8)];
+    }
+    const interval s = sum_of_products(a[0], b[0], a[1], b[1], a[2], b[2]), s1 = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    const interval d = difference_of_products(a[0], b[0], a[1], b[1]), d1 = a[0] * b[0] - a[1] * b[1];
+    auto bits = [](const interval& x, const interval& y) {
+      return (std::isnan(x.lower()) && std::isnan(y.lower())) ||
+             (std::memcmp(&x, &y, sizeof x) == 0);
+    };
+    cases += 2;
+    same += bits(s, s1) + bits(d, d1);
+    if (!bits(s, s1)) BOOST_TEST_MESSAGE("sum " << to_string(s) << " != " << to_string(s1));
+    if (!bits(d, d1)) BOOST_TEST_MESSAGE("difference " << to_string(d) << " != " << to_string(d1));
+  }
+  BOOST_TEST(same == cases);
+}
 
 BOOST_AUTO_TEST_CASE(interval_results_contain_the_320_bit_values) { run_all<interval>("interval", 53); }
 

@@ -170,6 +170,38 @@ void arb_add_product(arb_backend& s, const arb_backend& x, const arb_backend& y)
 void arb_subtract_product(arb_backend& s, const arb_backend& x, const arb_backend& y) {
   arb_submul(A(s), A(x), A(y), s.prec());
 }
+void arb_sum_of_products(arb_backend& r, const arb_backend* const* x, const arb_backend* const* y, int n, unsigned subtract) {
+  // arb_dot reads its operands as arrays of arb_struct with a stride; appell's values are not
+  // laid out so (each carries its precision beside the struct). Copies of the structs (their
+  // words: the limbs they may point to are shared, read only, and never cleared from here) make
+  // the arrays; a subtracted term's copy has its midpoint's sign flipped, in the copy alone.
+  arb_struct xs[3], ys[3];
+  long prec = 0;
+  for (int k = 0; k < n; ++k) prec = std::max({prec, x[k]->prec(), y[k]->prec()});
+  for (int k = 0; k < n; ++k) {
+    xs[k] = *A(*x[k]);
+    ys[k] = *A(*y[k]);
+    if (!(subtract >> k & 1u) || arf_is_zero(arb_midref(xs + k))) continue;
+    if (arf_is_special(arb_midref(xs + k))) {  // an infinite or NaN midpoint: Arb's own operations
+      arb_t s, t;
+      arb_init(s);
+      arb_init(t);
+      for (int j = 0; j < n; ++j) {
+        arb_mul(t, A(*x[j]), A(*y[j]), prec);
+        if (subtract >> j & 1u) arb_sub(s, s, t, prec);
+        else arb_add(s, s, t, prec);
+      }
+      r.set_prec_keep(prec);
+      arb_swap(A(r), s);
+      arb_clear(s);
+      arb_clear(t);
+      return;
+    }
+    ARF_NEG(arb_midref(xs + k));  // the sign bit of the copy's size word
+  }
+  r.set_prec_keep(prec);
+  arb_dot(A(r), nullptr, 0, xs, 1, ys, 1, n, prec);
+}
 
 void assign_components(arb_backend& r, const mpfr_backend& a, const mpfr_backend& b) {
   if (mpfr_nan_p(a.data()) || mpfr_nan_p(b.data()) || mpfr_cmp(a.data(), b.data()) > 0)

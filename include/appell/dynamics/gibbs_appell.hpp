@@ -36,6 +36,7 @@
 #include "appell/derivatives/dual_solve.hpp"
 #include "appell/linalg/solve.hpp"
 #include "appell/linalg/scratch.hpp"
+#include "appell/scalar/products.hpp"
 
 namespace appell {
 
@@ -63,7 +64,8 @@ concept mechanical_system = requires(const Sys& s, const vector_t<T>& q, const T
 
 template <class T>
 vec3<T> cross(const vec3<T>& a, const vec3<T>& b) {
-  return vec3<T>(a(1) * b(2) - a(2) * b(1), a(2) * b(0) - a(0) * b(2), a(0) * b(1) - a(1) * b(0));
+  return vec3<T>(difference_of_products(a(1), b(2), a(2), b(1)), difference_of_products(a(2), b(0), a(0), b(2)),
+                 difference_of_products(a(0), b(1), a(1), b(0)));
 }
 /// frame_rate x omega of a body (exactly 0 when the frame is the body's own).
 template <class T>
@@ -73,12 +75,12 @@ vec3<T> frame_cross_omega(const body_state<T>& s) {
 }
 template <class T>
 T dot(const vec3<T>& a, const vec3<T>& b) {
-  return a(0) * b(0) + a(1) * b(1) + a(2) * b(2);
+  return sum_of_products(a(0), b(0), a(1), b(1), a(2), b(2));
 }
 template <class T>
 vec3<T> mat_vec(const mat3<T>& A, const vec3<T>& x) {  // coefficient-based (no Eigen kernels on intervals)
   vec3<T> y;
-  for (int i = 0; i < 3; ++i) y(i) = A(i, 0) * x(0) + A(i, 1) * x(1) + A(i, 2) * x(2);
+  for (int i = 0; i < 3; ++i) y(i) = sum_of_products(A(i, 0), x(0), A(i, 1), x(1), A(i, 2), x(2));
   return y;
 }
 

@@ -430,6 +430,19 @@ class expression_tape {
   }
   std::size_t size() const { return nodes_.size(); }
 
+  /// Value k of the table named `name`, in every node that reads the table, set to v in place of
+  /// the decimal the table gives (`appell validity --vary tables.NAME.value[K]`: v a range).
+  /// Returns how many nodes read the table (0: v reaches nothing on this tape).
+  int set_table_value(const std::string& name, std::size_t k, const T& v) {
+    int n = 0;
+    for (const entry& e : nodes_)
+      if (e.table && e.table->name == name) {
+        table_values_[static_cast<std::size_t>(e.table_values)].at(k) = v;
+        ++n;
+      }
+    return n;
+  }
+
   /// Every node's value at the variables x (S: T or a dual of T), into `values`.
   template <class S>
   void eval(const S* x, std::vector<S>& values) const {

@@ -323,15 +323,17 @@ struct system_problem {
   /// as a number (torques.JOINT, JOINT the joint's name in the system: in a `urdf` scene the name
   /// its coordinate has in the state, which is the URDF's own unless that had characters other
   /// than letters, digits and _ or clashed; or bodies.BODY.joint.effort), a sole's half-length
-  /// (contacts.NAME.sole.half_lengths[0] or [1]).
+  /// (contacts.NAME.sole.half_lengths[0] or [1]), a value of a table (tables.NAME.value[K], the
+  /// K-th of its points counted from 0: a torque or force a controller logged, its peak or a step's
+  /// height over a range).
   struct varied_field {
-    enum class kind { none, parameter, effort, half_length } what = kind::none;
-    int index = -1;  ///< the parameter's variable, the link's place in sys.links, the contact's in sys.contacts
-    int axis = 0;    ///< half_length: 0 for X, 1 for Y
+    enum class kind { none, parameter, effort, half_length, table_value } what = kind::none;
+    int index = -1;  ///< the parameter's variable, the link's place in sys.links, the contact's in sys.contacts, the table's in def->tables
+    long axis = 0;   ///< half_length: 0 for X, 1 for Y; table_value: K (-1: not a count of points)
   };
   /// Each field this motion can vary, once: f(name, another spelling of it or "", the field,
   /// whether a message that lists the fields names it: a joint's effort only where the scene
-  /// gives one). find_varied and parameter_names both read this one list.
+  /// gives one). find_varied and parameter_names both read this one list (and the tables, find_table_value).
   template <class F>
   void for_each_varied(F&& f) const {
     const system_definition& d = *model->in->def;
@@ -358,14 +360,34 @@ struct system_problem {
     for_each_varied([&](const std::string& n, const std::string& other, const varied_field& v, bool) {
       if (found.what == varied_field::kind::none && (name == n || (!other.empty() && name == other))) found = v;
     });
+    if (found.what == varied_field::kind::none) found = find_table_value(name);
     return found;
   }
-  /// Every name find_varied knows (for a message that lists them).
+  /// tables.NAME.value[K] of a table of the scene: K its digits (-1 when they are not a count of
+  /// the table's points; parameter_refusal says how many it has); none for another name.
+  varied_field find_table_value(const std::string& name) const {
+    const table_list& tables = model->in->def->tables;
+    for (std::size_t i = 0; i < tables.size(); ++i) {
+      const std::string head = "tables." + tables[i]->name + ".value[";
+      if (name.size() <= head.size() + 1 || name.compare(0, head.size(), head) != 0 || name.back() != ']') continue;
+      const std::string digits = name.substr(head.size(), name.size() - head.size() - 1);
+      long k = -1;
+      if (digits.size() <= 7 && std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }) &&
+          (digits.size() == 1 || digits[0] != '0'))
+        k = std::stol(digits);
+      if (k >= static_cast<long>(tables[i]->values.size())) k = -1;
+      return {varied_field::kind::table_value, static_cast<int>(i), k};
+    }
+    return {};
+  }
+  /// Every name find_varied knows (for a message that lists them); a table's values as one entry.
   std::vector<std::string> parameter_names() const {
     std::vector<std::string> out;
     for_each_varied([&](const std::string& n, const std::string&, const varied_field&, bool listed) {
       if (listed) out.push_back(n);
     });
+    for (const auto& table : model->in->def->tables)
+      out.push_back("tables." + table->name + ".value[K] (K from 0 to " + std::to_string(table->values.size() - 1) + ")");
     return out;
   }
   /// Whether `name` is a field find_varied knows.
@@ -402,6 +424,16 @@ struct system_problem {
     }
     if (v.what == K::half_length)
       return certainly_positive(value) ? "" : "a sole's half-length must be positive over the whole range";
+    if (v.what == K::table_value) {
+      const piecewise_linear& table = *d.tables[static_cast<std::size_t>(v.index)];
+      if (v.axis < 0)
+        return "the table " + table.name + " has " + std::to_string(table.values.size()) + " values: value[0] to value[" +
+               std::to_string(table.values.size() - 1) + "] (K counted from 0, without leading zeros)";
+      compiled_system<T> probe = model->sys;
+      if (probe.set_table_value(table.name, static_cast<std::size_t>(v.axis), value) == 0)
+        return "no force, couple or effort of the scene calls the table " + table.name + "(t)";
+      return "";
+    }
     const int p = v.index;
     for (int s = 0; s < d.vars.parameters; ++s)
       if (d.parameters[static_cast<std::size_t>(p)]->depends_on(s))
@@ -418,9 +450,11 @@ struct system_problem {
   }
   /// The same motion with the field `name` at `value` (an interval in validity): a parameter with
   /// those defined from it evaluated again, a joint's effort, or a sole's half-length (the sole's
-  /// margins formed with it). The state is kept (no holonomic constraint involves a varied
-  /// parameter: parameter_refusal; the solved speeds follow from the constraints at every
-  /// evaluation; efforts and soles enter no constraint).
+  /// margins formed with it), or a table's value (on every tape that reads the table: an applied
+  /// force, couple or effort; its pieces on either side of the point follow). The state is kept
+  /// (no holonomic constraint involves a varied parameter: parameter_refusal; the solved speeds
+  /// follow from the constraints at every evaluation; efforts, soles and tables enter no
+  /// constraint: a table in a position, a rate or a constraint is refused when the file is read).
   system_problem with_parameter(const std::string& name, const T& value, vector_t<T>&) const {
     const system_definition& d = *model->in->def;
     const varied_field v = find_varied(name);
@@ -428,6 +462,9 @@ struct system_problem {
     auto m = std::make_shared<system_model::prepared<T>>(*model);
     if (v.what == K::effort) {
       m->sys.links[static_cast<std::size_t>(v.index)].effort_fixed = value;
+    } else if (v.what == K::table_value) {
+      if (v.axis < 0) throw input_error("--vary " + name + ": " + parameter_refusal(name, value));
+      m->sys.set_table_value(d.tables[static_cast<std::size_t>(v.index)]->name, static_cast<std::size_t>(v.axis), value);
     } else if (v.what == K::half_length) {
       auto& k = m->sys.contacts[static_cast<std::size_t>(v.index)];
       (v.axis == 0 ? k.half_x : k.half_y) = value;

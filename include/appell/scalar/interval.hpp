@@ -258,6 +258,49 @@ inline double bound_product_up(double a, double b) {  // a*b rounded up, 0 x inf
   interval_rounding rnd;
   return interval(rnd.sub_down(x.lower(), y.upper()), rnd.sub_up(x.upper(), y.lower()), true);
 }
+
+// Sums of two and three products in one pass (the 3 x 3 products and cross products of the
+// trees' recursions: a third of an interval evaluation). Each product is kept as the pair
+// (-lower, upper), both rounded up, as `multiply` forms it; a sum of such pairs, lane by lane
+// in upward mode, is (-lower, upper) of the sum with every bound rounded outward, and the
+// negation of a product swaps its lanes (exactly). The bounds are those of the same
+// operations done one by one (a + b computes its lower bound as -((-a) - b), the same
+// rounding of the same numbers), without forming and checking the intermediate intervals.
+// Operands with an infinite, NaN (empty) or reversed bound take the operations one by one.
+[[gnu::always_inline]] inline bool ordinary(const interval& x) {
+  constexpr double big = std::numeric_limits<double>::max();
+  return std::fabs(x.lower()) <= big && std::fabs(x.upper()) <= big && x.lower() <= x.upper();
+}
+/// (-lower, upper) of x y, rounded up (upward mode; bounds finite).
+[[gnu::always_inline]] inline __m128d product_pair(const interval& x, const interval& y) {
+  const __m128d xs = opaque_pd(_mm_set_pd(x.upper(), x.lower()));  // (xl, xu)
+  const __m128d ys_l = opaque_pd(_mm_set1_pd(y.lower())), ys_u = opaque_pd(_mm_set1_pd(y.upper()));
+  const __m128d nxs = _mm_xor_pd(xs, _mm_set1_pd(-0.0));
+  const __m128d up = _mm_max_pd(_mm_mul_pd(xs, ys_l), _mm_mul_pd(xs, ys_u));
+  const __m128d dn = _mm_max_pd(_mm_mul_pd(nxs, ys_l), _mm_mul_pd(nxs, ys_u));
+  return _mm_max_pd(_mm_unpacklo_pd(dn, up), _mm_unpackhi_pd(dn, up));
+}
+[[gnu::always_inline]] inline interval from_pair(__m128d r) {
+  r = opaque_pd(r);
+  return interval(-_mm_cvtsd_f64(r), _mm_cvtsd_f64(_mm_unpackhi_pd(r, r)), true);
+}
+/// a0 b0 + a1 b1 + a2 b2, the bounds of ((a0 b0) + (a1 b1)) + (a2 b2).
+inline interval interval_sum_of_products(const interval& a0, const interval& b0, const interval& a1, const interval& b1,
+                                const interval& a2, const interval& b2) {
+  if (!(ordinary(a0) && ordinary(b0) && ordinary(a1) && ordinary(b1) && ordinary(a2) && ordinary(b2))) [[unlikely]]
+    return add(add(multiply(a0, b0), multiply(a1, b1)), multiply(a2, b2));
+  const interval_rounding rnd;
+  const __m128d s = _mm_add_pd(opaque_pd(_mm_add_pd(product_pair(a0, b0), product_pair(a1, b1))), product_pair(a2, b2));
+  return from_pair(s);
+}
+/// a0 b0 - a1 b1, the bounds of (a0 b0) - (a1 b1).
+inline interval interval_difference_of_products(const interval& a0, const interval& b0, const interval& a1, const interval& b1) {
+  if (!(ordinary(a0) && ordinary(b0) && ordinary(a1) && ordinary(b1))) [[unlikely]]
+    return subtract(multiply(a0, b0), multiply(a1, b1));
+  const interval_rounding rnd;
+  const __m128d q = product_pair(a1, b1);
+  return from_pair(_mm_add_pd(product_pair(a0, b0), _mm_shuffle_pd(q, q, 1)));  // + (-upper, lower) of a1 b1
+}
 }  // namespace appell::detail
 
 namespace boost::numeric {

@@ -9,6 +9,7 @@
 #include "appell/dynamics/speeds.hpp"
 #include "appell/dynamics/virtual_work.hpp"
 #include "appell/scalar/decimal.hpp"
+#include "appell/scalar/products.hpp"
 #include "appell/system/definition.hpp"
 
 namespace appell {
@@ -174,6 +175,13 @@ struct compiled_system {
   std::vector<link> links;   ///< in the definition's link order (each after its parent)
   std::vector<int> link_of;  ///< each body's place in links; -1: not a link
 
+  /// Value k of the table `name` set to v on every tape that reads it (with_parameter); returns
+  /// how many nodes read the table.
+  int set_table_value(const std::string& name, std::size_t k, const T& v) {
+    return body_tape.set_table_value(name, k, v) + kinematics_tape.set_table_value(name, k, v) +
+           constraint_tape.set_table_value(name, k, v);
+  }
+
   /// The links' constants from the parameters' current values (after they change: with_parameter).
   void refresh_links() {
     std::vector<T> x(static_cast<std::size_t>(def->vars.size()), T(0));
@@ -275,7 +283,7 @@ struct compiled_system {
   template <class S>
   vec3<S> to_link(const link& L, const link_state<S>& st, const vec3<S>& w) const {
     if constexpr (link_state<S>::can_fold)
-      if (st.folded) return transpose_times_plain(st.X, w);
+      if (st.folded) return transpose_times(st.X, w);
     vec3<S> r = L.R0_identity ? w : transpose_times(L.R0, w);
     if (L.type == system_joint_definition::kind::revolute) r = rotate(L, st, r, true);
     return r;
@@ -283,34 +291,33 @@ struct compiled_system {
   template <class S>
   vec3<S> to_parent(const link& L, const link_state<S>& st, const vec3<S>& w) const {
     if constexpr (link_state<S>::can_fold)
-      if (st.folded) return times_plain(st.X, w);
+      if (st.folded) return times(st.X, w);
     vec3<S> r = L.type == system_joint_definition::kind::revolute ? rotate(L, st, w, false) : w;
     return L.R0_identity ? r : times(L.R0, r);
   }
-  template <class S>
-  static vec3<S> times_plain(const mat3<S>& R, const vec3<S>& w) {
+  /// R w and R^T w, R in T (a joint's constant rotation) or in S itself (a folded rotation):
+  /// with S = T every entry is taken as it is, each component one sum_of_products; for jets
+  /// and slopes the entries are converted (from_base) and the sums written out.
+  template <class U, class S>
+  static vec3<S> times(const mat3<U>& R, const vec3<S>& w) {
     vec3<S> r;
-    for (int i = 0; i < 3; ++i) r(i) = R(i, 0) * w(0) + R(i, 1) * w(1) + R(i, 2) * w(2);
+    for (int i = 0; i < 3; ++i) {
+      if constexpr (std::is_same_v<U, S>)
+        r(i) = sum_of_products(R(i, 0), w(0), R(i, 1), w(1), R(i, 2), w(2));
+      else
+        r(i) = detail::from_base<S>(R(i, 0)) * w(0) + detail::from_base<S>(R(i, 1)) * w(1) + detail::from_base<S>(R(i, 2)) * w(2);
+    }
     return r;
   }
-  template <class S>
-  static vec3<S> transpose_times_plain(const mat3<S>& R, const vec3<S>& w) {
+  template <class U, class S>
+  static vec3<S> transpose_times(const mat3<U>& R, const vec3<S>& w) {
     vec3<S> r;
-    for (int i = 0; i < 3; ++i) r(i) = R(0, i) * w(0) + R(1, i) * w(1) + R(2, i) * w(2);
-    return r;
-  }
-  template <class S>
-  static vec3<S> times(const mat3<T>& R, const vec3<S>& w) {
-    vec3<S> r;
-    for (int i = 0; i < 3; ++i)
-      r(i) = detail::from_base<S>(R(i, 0)) * w(0) + detail::from_base<S>(R(i, 1)) * w(1) + detail::from_base<S>(R(i, 2)) * w(2);
-    return r;
-  }
-  template <class S>
-  static vec3<S> transpose_times(const mat3<T>& R, const vec3<S>& w) {
-    vec3<S> r;
-    for (int i = 0; i < 3; ++i)
-      r(i) = detail::from_base<S>(R(0, i)) * w(0) + detail::from_base<S>(R(1, i)) * w(1) + detail::from_base<S>(R(2, i)) * w(2);
+    for (int i = 0; i < 3; ++i) {
+      if constexpr (std::is_same_v<U, S>)
+        r(i) = sum_of_products(R(0, i), w(0), R(1, i), w(1), R(2, i), w(2));
+      else
+        r(i) = detail::from_base<S>(R(0, i)) * w(0) + detail::from_base<S>(R(1, i)) * w(1) + detail::from_base<S>(R(2, i)) * w(2);
+    }
     return r;
   }
   template <class S>

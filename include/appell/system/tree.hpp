@@ -141,10 +141,10 @@ mat3<S> to_parent_matrix(const compiled_system<T>& c, const typename compiled_sy
     if (st.folded) {
       const mat3<S>& X = st.X;
       for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) A(i, j) = X(i, 0) * W(0, j) + X(i, 1) * W(1, j) + X(i, 2) * W(2, j);
+        for (int j = 0; j < 3; ++j) A(i, j) = sum_of_products(X(i, 0), W(0, j), X(i, 1), W(1, j), X(i, 2), W(2, j));
       for (int i = 0; i < 3; ++i)
         for (int j = i; j < 3; ++j) {
-          B(i, j) = A(i, 0) * X(j, 0) + A(i, 1) * X(j, 1) + A(i, 2) * X(j, 2);
+          B(i, j) = sum_of_products(A(i, 0), X(j, 0), A(i, 1), X(j, 1), A(i, 2), X(j, 2));
           if (j != i) B(j, i) = B(i, j);
         }
       return B;

@@ -378,7 +378,8 @@ def validity(scene, vary, t_end, *, scalar="interval", bits=None, resolution=Non
              max_width=1.0, max_seconds=None, jobs=0, progress=None):
     """The range ``vary = (field, lo, hi)`` of one field (a state component, a model
     parameter, a joint's torque given as a number as "torques.JOINT", a sole's half-length as
-    "contacts.NAME.sole.half_lengths[0]" or "[1]", or "mu") split into pieces until each is proved to keep every contact over
+    "contacts.NAME.sole.half_lengths[0]" or "[1]", a table's K-th value as "tables.NAME.value[K]",
+    or "mu") split into pieces until each is proved to keep every contact over
     [0, t_end] ("holds"), proved to lose one ("fails"), or is narrower than ``resolution``
     (``appell validity``).  ``jobs`` threads run the pieces.  Returns a ``Validity``."""
     if not (isinstance(vary, (tuple, list)) and len(vary) == 3):
