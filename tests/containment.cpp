@@ -291,7 +291,8 @@ BOOST_AUTO_TEST_CASE(sums_of_products_contain_their_exact_range) {
     BOOST_TEST(t.samples >= 100000);
   }
   // x x + y y + z z with each square one value twice (arb takes Arb's square there, as the
-  // expression does): the values at each operand's ends and at 0 where it holds 0.
+  // expression does, and keeps its part >= 0): each square is >= 0, and the sum holds the values
+  // at each operand's ends and at 0 where it holds 0.
   rng_t rng;
   tally t;
   const mp_precision_scope scope(113);
@@ -303,6 +304,8 @@ BOOST_AUTO_TEST_CASE(sums_of_products_contain_their_exact_range) {
       scalar_traits<arb>::to_mpfr(x[k], lo[k], hi[k]);
     }
     const arb r = sum_of_products(x[0], x[0], x[1], x[1], x[2], x[2]);
+    for (int k = 0; k < 3; ++k)  // a square's part >= 0 (arb_backend.cpp; a sum of such balls may reach below)
+      BOOST_TEST_REQUIRE(scalar_traits<arb>::lower(arb(x[k] * x[k])) >= 0, to_string(x[k]));
     ++t.cases;
     for (int v = 0; v < 27; ++v) {
       mpfr_value sum(1200), p(1200), at(1200);

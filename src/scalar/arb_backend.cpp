@@ -154,8 +154,12 @@ void eval_add(arb_backend& r, const arb_backend& b) { arb_add(A(r), A(r), A(b), 
 void eval_subtract(arb_backend& r, const arb_backend& a, const arb_backend& b) { arb_sub(A(r), A(a), A(b), r.prec()); }
 void eval_subtract(arb_backend& r, const arb_backend& b) { arb_sub(A(r), A(r), A(b), r.prec()); }
 void eval_multiply(arb_backend& r, const arb_backend& a, const arb_backend& b) {
-  if (&a == &b) arb_sqr(A(r), A(a), r.prec());  // x * x >= 0, tighter than the product of two balls
-  else arb_mul(A(r), A(a), A(b), r.prec());
+  if (&a == &b) {  // x * x >= 0: Arb's square of a ball that holds 0 reaches below 0, so its part >= 0
+    arb_sqr(A(r), A(a), r.prec());
+    if (!arb_is_nonnegative(A(r))) arb_nonnegative_part(A(r), A(r));
+  } else {
+    arb_mul(A(r), A(a), A(b), r.prec());
+  }
 }
 void eval_multiply(arb_backend& r, const arb_backend& b) { eval_multiply(r, r, b); }
 void eval_divide(arb_backend& r, const arb_backend& a, const arb_backend& b) { arb_div(A(r), A(a), A(b), r.prec()); }
