@@ -108,11 +108,13 @@ Eigen::MatrixXd random_matrix(int n) {
 }
 
 // Random systems with exact (thin) data: the exact rational solution is enclosed.
+// n from n_min to n_max: up to 12 the fixed-capacity path (small_interval_solve_into), above it
+// the borrowed one (residual_solve_into, its row sums from residual_row_sums_into).
 template <class I>
-int random_thin_systems(bool spd, int count) {
+int random_thin_systems(bool spd, int count, int n_min = 1, int n_max = 12) {
   int solved = 0;
   for (int c = 0; c < count; ++c) {
-    const int n = std::uniform_int_distribution<int>(1, 12)(rng);
+    const int n = std::uniform_int_distribution<int>(n_min, n_max)(rng);
     const Eigen::MatrixXd G = random_matrix(n);
     Eigen::MatrixXd A = G;
     if (spd) {  // G^T G + n I, rounded: still exactly symmetric, and positive definite
@@ -164,14 +166,16 @@ BOOST_AUTO_TEST_CASE(random_spd_and_general_systems_enclose_the_exact_solution) 
   BOOST_TEST(s4 >= 90);
 }
 
-BOOST_AUTO_TEST_CASE(thick_systems_enclose_every_vertex_solution) {
-  // [A] = A0 + [-r, r] entrywise: the solution of each of many point systems
-  // drawn from the box (vertices and interior points, exact) lies in the result.
+namespace {
+// [A] = A0 + [-r, r] entrywise: the solution of each of many point systems
+// drawn from the box (vertices and interior points, exact) lies in the result.
+// Returns the number of point solutions checked.
+int thick_systems(int count, int n_min, int n_max, int samples) {
   int checked = 0;
-  for (int c = 0; c < 60; ++c) {
-    const int n = std::uniform_int_distribution<int>(2, 6)(rng);
+  for (int c = 0; c < count; ++c) {
+    const int n = std::uniform_int_distribution<int>(n_min, n_max)(rng);
     Eigen::MatrixXd A0 = random_matrix(n);
-    A0 += 4.0 * Eigen::MatrixXd::Identity(n, n);
+    A0 += (n <= 6 ? 4.0 : n) * Eigen::MatrixXd::Identity(n, n);
     const double r = 1e-3;
     matrix_t<interval> AI(n, n);
     vector_t<interval> bI(n);
@@ -186,7 +190,7 @@ BOOST_AUTO_TEST_CASE(thick_systems_enclose_every_vertex_solution) {
       continue;
     }
     std::uniform_int_distribution<int> coin(0, 2);
-    for (int sample = 0; sample < 30; ++sample) {
+    for (int sample = 0; sample < samples; ++sample) {
       qmatrix Aq(n);
       qvector bq(n), xq(n);
       for (int i = 0; i < n; ++i) {
@@ -202,8 +206,126 @@ BOOST_AUTO_TEST_CASE(thick_systems_enclose_every_vertex_solution) {
       ++checked;
     }
   }
+  return checked;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(thick_systems_enclose_every_vertex_solution) {
+  const int checked = thick_systems(60, 2, 6, 30);
   BOOST_TEST_MESSAGE("thick systems: " << checked << " point solutions checked inside the enclosures");
   BOOST_TEST(checked >= 1000);
+}
+
+BOOST_AUTO_TEST_CASE(large_systems_enclose_the_exact_solution) {
+  // Above small_system_max (12 unknowns) the interval residual bound takes its row sums of
+  // |I - R A| from one product in floating point with its rounding bounded a priori
+  // (residual_row_sums_into), and mpfi's residual path the same: thin SPD and general systems of
+  // 13 to 40 unknowns enclose their exact rational solutions, thick ones every point solution drawn.
+  const int s1 = random_thin_systems<interval>(true, 40, 13, 40);
+  const int s2 = random_thin_systems<interval>(false, 40, 13, 40);
+  BOOST_TEST_MESSAGE("interval, 13 to 40 unknowns: SPD " << s1 << "/40 certified, general " << s2 << "/40");
+  BOOST_TEST(s1 == 40);
+  BOOST_TEST(s2 >= 36);
+  {
+    mp_precision_scope scope(128);
+    const int s3 = random_thin_systems<mpfi>(true, 15, 13, 40);
+    BOOST_TEST_MESSAGE("mpfi 128, 13 to 40 unknowns: SPD " << s3 << "/15 certified");
+    BOOST_TEST(s3 == 15);
+  }
+  const int checked = thick_systems(12, 13, 30, 10);
+  BOOST_TEST_MESSAGE("thick systems of 13 to 30 unknowns: " << checked << " point solutions checked inside the enclosures");
+  BOOST_TEST(checked >= 100);
+}
+
+BOOST_AUTO_TEST_CASE(row_sums_bound_the_exact_row_sums_of_the_residual_matrix) {
+  // residual_row_sums_into against the exact maxima over the box [A] of sum_j |delta_ij - (R A)_ij|
+  // (linear in A entrywise: |delta_ij - (R mid A)_ij| + (|R| rad A)_ij, with mid and rad exact
+  // rationals), on random thin and thick matrices and approximate inverses of 1 to 40 unknowns;
+  // and the row sums of the enclosure of I - R A (identity_minus_product) bound them too.
+  int cases = 0, rows = 0;
+  double widest = 0;  // the largest ratio of the a priori bound's row sum to the enclosure's
+  mpq_t acc, t, m, rad, e;
+  for (mpq_t* q : {&acc, &t, &m, &rad, &e}) mpq_init(*q);
+  for (int c = 0; c < 120; ++c) {
+    const int n = std::uniform_int_distribution<int>(1, 40)(rng);
+    const double r = c % 3 == 0 ? 0.0 : std::ldexp(1.0, -std::uniform_int_distribution<int>(10, 50)(rng));
+    Eigen::MatrixXd A0 = random_matrix(n);
+    A0 += n * Eigen::MatrixXd::Identity(n, n);
+    matrix_t<interval> AI(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) AI(i, j) = r == 0 ? interval(A0(i, j)) : interval(A0(i, j) - r, A0(i, j) + r);
+    const Eigen::MatrixXd R = A0.inverse();
+    Eigen::VectorXd row_sum, enclosure_sum;
+    detail::residual_row_sums_into(R, AI, row_sum);
+    detail::row_sums_of_magnitudes_into(detail::identity_minus_product(R, AI), enclosure_sum);
+    for (int i = 0; i < n; ++i) {
+      mpq_set_ui(acc, 0, 1);
+      for (int j = 0; j < n; ++j) {
+        mpq_set_si(e, i == j ? 1 : 0, 1);  // delta_ij - sum_k R_ik mid_kj, then |.|, plus sum_k |R_ik| rad_kj
+        mpq_set_ui(rad, 0, 1);
+        for (int k = 0; k < n; ++k) {
+          mpq_set_d(m, AI(k, j).lower());
+          mpq_set_d(t, AI(k, j).upper());
+          mpq_add(m, m, t);
+          mpq_div_2exp(m, m, 1);  // the exact midpoint
+          mpq_set_d(t, R(i, k));
+          mpq_mul(m, m, t);
+          mpq_sub(e, e, m);
+          mpq_set_d(m, AI(k, j).upper());
+          mpq_set_d(t, AI(k, j).lower());
+          mpq_sub(m, m, t);
+          mpq_div_2exp(m, m, 1);  // the exact radius
+          mpq_set_d(t, std::abs(R(i, k)));
+          mpq_mul(m, m, t);
+          mpq_add(rad, rad, m);
+        }
+        mpq_abs(e, e);
+        mpq_add(acc, acc, e);
+        mpq_add(acc, acc, rad);
+      }
+      mpq_set_d(t, row_sum(i));
+      BOOST_REQUIRE_MESSAGE(mpq_cmp(t, acc) >= 0, "n = " << n << ", row " << i << ": the bound " << row_sum(i)
+                                                          << " is below the exact row sum " << mpq_get_d(acc));
+      mpq_set_d(t, enclosure_sum(i));
+      BOOST_REQUIRE(mpq_cmp(t, acc) >= 0);
+      if (enclosure_sum(i) > 0) widest = std::max(widest, row_sum(i) / enclosure_sum(i));
+      ++rows;
+    }
+    ++cases;
+  }
+  for (mpq_t* q : {&acc, &t, &m, &rad, &e}) mpq_clear(*q);
+  BOOST_TEST_MESSAGE("row sums: " << cases << " matrices, " << rows << " rows, every bound above the exact sum; the a priori "
+                                  << "bound at most " << widest << " times the enclosure's");
+  BOOST_TEST(rows > 1000);
+}
+
+BOOST_AUTO_TEST_CASE(sums_of_point_products_are_the_operations_one_by_one) {
+  // sum_of_point_products (the residual b - A x~ and R r of the residual bound) claims the bounds
+  // of the interval products by [d, d] and their sums done one by one: the same bits on random
+  // operands of every sign, thin and wide, with exact zeros among the points.
+  std::uniform_real_distribution<double> u(-1, 1);
+  long same = 0, cases = 0;
+  const upward_rounding mode;
+  for (int c = 0; c < 20000; ++c) {
+    const int n = 1 + c % 9;
+    std::vector<interval> a(static_cast<std::size_t>(n));
+    std::vector<double> d(static_cast<std::size_t>(n));
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      const double x = std::ldexp(u(rng), std::uniform_int_distribution<int>(-30, 30)(rng));
+      const double w = c % 2 ? 0.0 : std::abs(x) * std::ldexp(std::abs(u(rng)), -std::uniform_int_distribution<int>(1, 50)(rng));
+      a[k] = interval(x - w, x + w);
+      d[k] = c % 5 == 0 && k == 0 ? 0.0 : std::ldexp(u(rng), std::uniform_int_distribution<int>(-30, 30)(rng));
+    }
+    interval one_by_one = a[0] * interval(d[0]);
+    for (std::size_t k = 1; k < a.size(); ++k) one_by_one += a[k] * interval(d[k]);
+    const interval s =
+        detail::sum_of_point_products(n, [&](Eigen::Index k) -> const interval& { return a[static_cast<std::size_t>(k)]; },
+                                      [&](Eigen::Index k) { return d[static_cast<std::size_t>(k)]; });
+    ++cases;
+    // the same numbers (a zero bound's sign aside: an exact zero product is left out of the sum)
+    same += s.lower() == one_by_one.lower() && s.upper() == one_by_one.upper();
+  }
+  BOOST_TEST(same == cases);
 }
 
 namespace {

@@ -27,7 +27,6 @@ bool small_interval_solve_into(const matrix_t<interval>& A, const vector_t<inter
   constexpr int M = static_cast<int>(small_system_max);
   using DM = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, M, M>;
   using DV = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, M, 1>;
-  using IM = Eigen::Matrix<interval, Eigen::Dynamic, Eigen::Dynamic, 0, M, M>;
   using IV = Eigen::Matrix<interval, Eigen::Dynamic, 1, 0, M, 1>;
   const Eigen::Index n = A.rows();
   if (n == 0 || n > small_system_max) return false;
@@ -44,16 +43,15 @@ bool small_interval_solve_into(const matrix_t<interval>& A, const vector_t<inter
   if (!R.allFinite()) return false;
   DV xt = R * bm;
   xt += R * (bm - Am * xt);  // one refinement step, as residual_solve_into
+  if (!xt.allFinite()) return false;
   IV xI(n), residual(n);
   for (Eigen::Index i = 0; i < n; ++i) xI(i) = thin<interval>(xt(i));
-  for (Eigen::Index i = 0; i < n; ++i) {  // b - A x~, in residual_solve_into's order
-    interval sum = A(i, 0) * xI(0);
-    for (Eigen::Index k = 1; k < n; ++k) sum += A(i, k) * xI(k);
-    residual(i) = b(i) - sum;
+  {
+    const upward_rounding mode;
+    for (Eigen::Index i = 0; i < n; ++i)  // b - A x~, as residual_solve_into
+      residual(i) = b(i) - sum_of_point_products(n, [&](Eigen::Index k) -> const interval& { return A(i, k); }, xt);
   }
-  IM C;
-  identity_minus_product_into(R, A, C);
-  const std::optional<IV> e = residual_enclosure(R, C, residual);
+  const std::optional<IV> e = residual_enclosure<true>(R, A, residual);
   if (!e) return false;
   x.resize(n);  // of its size already: no allocation
   for (Eigen::Index i = 0; i < n; ++i) x(i) = xI(i) + (*e)(i);
@@ -156,7 +154,8 @@ std::optional<vector_t<I>> mp_residual_solve(const matrix_t<I>& A, const vector_
     const double hi = mpfr_get_d(s, MPFR_RNDU);
     rd(i) = interval(lo, hi, true);
   }
-  const std::optional<vector_t<interval>> e = residual_enclosure(R, identity_minus_product(R, Ad), rd);
+  const std::optional<vector_t<interval>> e =
+      n <= small_system_max ? residual_enclosure<true>(R, Ad, rd) : residual_enclosure<false>(R, Ad, rd);
   if (!e) return std::nullopt;
   vector_t<I> x(n);
   for (Eigen::Index i = 0; i < n; ++i) {

@@ -9,7 +9,11 @@
 // |I - R A| is at most beta <= 2^-10, then x lies in
 // x~ + R r + [-s_i eps, s_i eps] with eps = ||R r||/(1 - beta); for mpfi only
 // r is computed at p bits (scaled by a power of 2 into double's range), the
-// n^3 part in double.  Otherwise (ill-conditioned systems, entries outside
+// n^3 part in double.  The row sums s_i come from an enclosure of I - R A (three
+// products in double, the tightest) up to small_system_max unknowns, and above it
+// from one product R mid(A) in floating point with its rounding bounded a priori
+// (residual_row_sums_into: a third of the work, the solution's bounds the same
+// but for an ulp where a bound of the correction was exactly zero).  Otherwise (ill-conditioned systems, entries outside
 // double's range) it runs Krawczyk's operator with a
 // midpoint-inverse preconditioner and epsilon-inflation (Rump 1983).  With
 // R ~ mid(A)^-1, x~ ~ R mid(b), z = R (b - A x~) and C = I - R A (both in
@@ -178,37 +182,113 @@ inline matrix_t<interval> identity_minus_product(const Eigen::MatrixXd& R, const
 /// norm bound is loose and Krawczyk's iteration is used instead.
 inline constexpr double max_contraction = 1.0 / 1024;
 
+/// Sum_k a_k d_k for intervals a_k = a(k) and doubles d_k = d(k), k < n, with the bounds of the
+/// products and sums done one by one in interval arithmetic (a product by the thin [d, d] is
+/// [a_lo d, a_hi d] or [a_hi d, a_lo d] by d's sign: one product per bound, not four), each
+/// product kept as the pair (-lower, upper) and the pairs added in upward mode, as
+/// interval_sum_of_products does.  Every a_k and d_k finite, the caller inside an upward scope
+/// (upward_rounding).  Terms with d_k = 0 are exactly zero and left out.
+template <class A, class D>
+interval sum_of_point_products(Eigen::Index n, const A& a, const D& d) {
+  __m128d s = _mm_setzero_pd();
+  const __m128d low_sign = _mm_set_pd(0.0, -0.0);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const double dk = d(k);
+    if (dk == 0) continue;
+    const interval& ak = a(k);
+    __m128d p = _mm_xor_pd(_mm_set_pd(ak.upper(), ak.lower()), low_sign);  // (-lower, upper)
+    if (dk < 0) p = _mm_shuffle_pd(p, p, 1);                               // (upper, -lower)
+    s = _mm_add_pd(s, opaque_pd(_mm_mul_pd(p, _mm_set1_pd(std::fabs(dk)))));
+  }
+  return from_pair(s);
+}
+
+/// Upper bounds of the row sums of |I - R A| over every A in [A], for a double matrix R and an
+/// interval matrix A, into row_sum (what the residual bound needs of I - R A: not the matrix
+/// itself).  With A = Am + D, |D| <= Ar (Am, Ar: midpoints and radii rounded up), and G the
+/// product R Am in floating point (Eigen's, in whatever order and rounding mode: every operation's
+/// relative error is below u = 2^-52, and an underflowing product's absolute error below 2^-1074),
+///   |G_ij - (R Am)_ij| <= gamma_n (|R| |Am|)_ij + 2 n 2^-1074,   gamma_n = n u / (1 - n u)
+/// (Higham, Accuracy and Stability of Numerical Algorithms, sec. 3.5), so that
+///   sum_j |delta_ij - (R A)_ij| <= sum_j |delta_ij - G_ij| + (|R| (gamma_n |Am| + Ar) 1)_i + 2 n^2 2^-1074,
+/// every term rounded up.  One product of n x n matrices in double (Eigen's blocked kernel) and
+/// two matrix-vector products, where the enclosure of I - R A itself (identity_minus_product_into,
+/// which Krawczyk's iteration needs) takes three products.  The bound is looser than that
+/// enclosure's by about gamma_n |R| |Am|; it enters the solution's radius only multiplied by the
+/// correction's norm (residual_enclosure_into), far below the radius R r itself contributes.
+/// Matrices of a dynamic DM borrowed from a pool of Site's, as in identity_minus_product_into.
+template <class Site = void, class DM, class IMA, class SV>
+void residual_row_sums_into(const DM& R, const IMA& A, SV& row_sum) {
+  const Eigen::Index n = A.rows();
+  constexpr bool borrowed = DM::MaxRowsAtCompileTime == Eigen::Dynamic;
+  struct site;
+  std::optional<scratch<DM, site>> held[2];
+  DM local[borrowed ? 1 : 2];
+  auto matrix = [&](int k) -> DM& {
+    if constexpr (borrowed) {
+      held[k].emplace();
+      return *held[k].value();
+    } else {
+      return local[k];
+    }
+  };
+  DM &Am = matrix(0), &G = matrix(1);
+  Am.resize(n, n);
+  std::optional<scratch<SV, site>> w_held;
+  SV w_local;
+  if constexpr (SV::MaxRowsAtCompileTime == Eigen::Dynamic) w_held.emplace();
+  SV& w = w_held ? **w_held : w_local;  // w_k = sum_j (gamma_n |Am_kj| + Ar_kj), rounded up
+  w.resize(n);
+  row_sum.resize(n);
+  {
+    const upward_rounding mode;
+    const auto opaque = [](double v) { return interval_arith::opaque(v); };
+    const double nu = opaque(static_cast<double>(n) * 0x1p-52);  // exact
+    const double gamma = opaque(nu / -opaque(nu - 1.0));         // n u / (1 - n u), rounded up
+    for (Eigen::Index k = 0; k < n; ++k) w(k) = 0;
+    for (Eigen::Index j = 0; j < n; ++j)
+      for (Eigen::Index k = 0; k < n; ++k) {
+        const double lo = A(k, j).lower(), hi = A(k, j).upper();
+        const double m = lo + (hi - lo) * 0.5;
+        Am(k, j) = (lo <= m && m <= hi) ? m : lo;
+        const double ar = std::max(opaque(hi - Am(k, j)), opaque(Am(k, j) - lo));  // rounded up
+        w(k) = opaque(w(k) + opaque(ar + opaque(gamma * std::fabs(Am(k, j)))));
+      }
+  }
+  G.resize(n, n);
+  G.noalias() = R * Am;
+  {
+    const upward_rounding mode;
+    const auto opaque = [](double v) { return interval_arith::opaque(v); };
+    const double underflow = opaque(static_cast<double>(2 * n * n) * 0x1p-1074);  // rounded up
+    for (Eigen::Index i = 0; i < n; ++i) row_sum(i) = underflow;
+    for (Eigen::Index j = 0; j < n; ++j)  // down the columns (contiguous)
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const double g = G(i, j);
+        const double e = i == j ? std::max(opaque(1.0 - g), opaque(g - 1.0)) : std::fabs(g);  // >= |delta_ij - g|
+        row_sum(i) = opaque(row_sum(i) + opaque(e + opaque(std::fabs(R(i, j)) * w(j))));
+      }
+  }
+}
+
 /// Encloses A^-1 r for every A in [A] and r in [r] given an approximate
-/// inverse R of mid(A) and C enclosing I - R A for every A in [A]
-/// (identity_minus_product), or nullopt if some row sum of |C| exceeds max_contraction.
-/// IV: an interval vector type (heap or fixed-capacity storage); a dynamic IV's row sums borrowed
-/// from a pool of Site's (as identity_minus_product_into).
-template <class Site = void, class DM, class IM, class IV>
-bool residual_enclosure_into(const DM& R, const IM& C, const IV& r, IV& z) {
-  const Eigen::Index n = C.rows();
+/// inverse R of mid(A) and row_sum bounding the row sums of |I - R A| for every A in [A]
+/// (residual_row_sums_into), or false if some row sum exceeds max_contraction.
+template <class DM, class SV, class IV>
+bool residual_enclosure_into(const DM& R, const SV& row_sum, const IV& r, IV& z) {
+  const Eigen::Index n = R.rows();
   const upward_rounding mode;  // plain double operations below round upward
   const auto opaque = [](double v) { return interval_arith::opaque(v); };
-  using sums = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, IV::MaxRowsAtCompileTime, 1>;
-  struct site;
-  std::optional<scratch<sums, site>> held;  // a dynamic IV's row sums borrowed (linalg/scratch.hpp)
-  sums local;
-  if constexpr (IV::MaxRowsAtCompileTime == Eigen::Dynamic) held.emplace();
-  sums& row_sum = held ? **held : local;
-  row_sum.resize(n);
   double beta = 0;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    double s = 0;
-    for (Eigen::Index j = 0; j < n; ++j) s = opaque(s + std::max(-C(i, j).lower(), C(i, j).upper()));
-    row_sum(i) = s;
-    if (!(s <= beta)) beta = s;  // a NaN row sum makes beta NaN
-  }
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (!(row_sum(i) <= beta)) beta = row_sum(i);  // a NaN row sum makes beta NaN
   if (!(beta <= max_contraction)) return false;
+  for (Eigen::Index j = 0; j < n; ++j)
+    if (!is_finite(r(j))) return false;
   z.resize(n);
   double z_max = 0;
   for (Eigen::Index i = 0; i < n; ++i) {
-    interval s(0);
-    for (Eigen::Index j = 0; j < n; ++j)
-      if (R(i, j) != 0) s += interval(R(i, j)) * r(j);
+    const interval s = sum_of_point_products(n, r, [&](Eigen::Index j) { return R(i, j); });
     z(i) = s;
     z_max = std::max(z_max, std::max(-s.lower(), s.upper()));
   }
@@ -223,10 +303,35 @@ bool residual_enclosure_into(const DM& R, const IM& C, const IV& r, IV& z) {
     if (!is_finite(z(i))) return false;
   return true;
 }
-template <class DM, class IM, class IV>
-std::optional<IV> residual_enclosure(const DM& R, const IM& C, const IV& r) {
+/// The row sums of |C| for an interval matrix C (an enclosure of I - R A:
+/// identity_minus_product_into), rounded up, into row_sum.
+template <class IM, class SV>
+void row_sums_of_magnitudes_into(const IM& C, SV& row_sum) {
+  const Eigen::Index n = C.rows();
+  const upward_rounding mode;
+  row_sum.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double s = 0;
+    for (Eigen::Index j = 0; j < n; ++j)
+      s = interval_arith::opaque(s + std::max(-C(i, j).lower(), C(i, j).upper()));
+    row_sum(i) = s;
+  }
+}
+/// The residual bound's correction A^-1 r from the enclosure C of I - R A (three products in
+/// double: the tightest row sums, for systems small enough that they cost little), or from
+/// residual_row_sums_into (one product: large systems); nullopt where the bound does not apply.
+template <bool from_enclosure, class DM, class IM, class IV>
+std::optional<IV> residual_enclosure(const DM& R, const IM& A, const IV& r) {
+  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, IV::MaxRowsAtCompileTime, 1> row_sum;
+  if constexpr (from_enclosure) {
+    Eigen::Matrix<interval, Eigen::Dynamic, Eigen::Dynamic, 0, IV::MaxRowsAtCompileTime, IV::MaxRowsAtCompileTime> C;
+    identity_minus_product_into(R, A, C);
+    row_sums_of_magnitudes_into(C, row_sum);
+  } else {
+    residual_row_sums_into(R, A, row_sum);
+  }
   IV z;
-  if (!residual_enclosure_into(R, C, r, z)) return std::nullopt;
+  if (!residual_enclosure_into(R, row_sum, r, z)) return std::nullopt;
   return z;
 }
 
@@ -392,7 +497,7 @@ bool residual_solve_into(const matrix_t<interval>& A, const vector_t<interval>& 
   const scratch<vector_t<P>, Site> bm_held, xt_held, t_held, u_held;
   const scratch<Eigen::PartialPivLU<matrix_t<P>>, Site> lu;
   const scratch<vector_t<interval>, Site> xI_held, residual_held, e_held;
-  const scratch<matrix_t<interval>, Site> C_held;
+  const scratch<vector_t<P>, Site> row_sum_held;
   matrix_t<P>&Am = *Am_held, &R = *R_held;
   vector_t<P>&bm = *bm_held, &xt = *xt_held, &t = *t_held, &u = *u_held;
   vector_t<interval>&xI = *xI_held, &residual = *residual_held, &e = *e_held;
@@ -416,15 +521,16 @@ bool residual_solve_into(const matrix_t<interval>& A, const vector_t<interval>& 
   t = bm - t;
   u.noalias() = R * t;
   xt += u;
+  if (!xt.allFinite()) return false;
   xI = xt.unaryExpr([](const P& p) { return thin<interval>(p); });
   residual.resize(n);
-  for (Eigen::Index i = 0; i < n; ++i) {  // b - A x~, as detail::product sums
-    interval sum = A(i, 0) * xI(0);
-    for (Eigen::Index k = 1; k < n; ++k) sum += A(i, k) * xI(k);
-    residual(i) = b(i) - sum;
+  {
+    const upward_rounding mode;
+    for (Eigen::Index i = 0; i < n; ++i)  // b - A x~
+      residual(i) = b(i) - sum_of_point_products(n, [&](Eigen::Index k) -> const interval& { return A(i, k); }, xt);
   }
-  identity_minus_product_into<Site>(R, A, *C_held);
-  if (!residual_enclosure_into<Site>(R, *C_held, residual, e)) return false;
+  residual_row_sums_into<Site>(R, A, *row_sum_held);
+  if (!residual_enclosure_into(R, *row_sum_held, residual, e)) return false;
   x.resize(n);
   for (Eigen::Index i = 0; i < n; ++i) x(i) = xI(i) + e(i);
   return true;

@@ -227,13 +227,20 @@ inline double bound_product_up(double a, double b) {  // a*b rounded up, 0 x inf
                               std::max(bound_product_up(-xu, yl), bound_product_up(-xu, yu)));
   return interval(-mlo, hi, true);
 }
-[[gnu::always_inline]] inline bool finite_bounds(double xl, double xu, double yl, double yu) {
-  constexpr double big = std::numeric_limits<double>::max();
-  return std::fabs(xl) <= big && std::fabs(xu) <= big && std::fabs(yl) <= big && std::fabs(yu) <= big;
+/// Both x and y have finite bounds, the lower not above the upper (NaN, the empty set's bound,
+/// fails every comparison): -max <= lower <= upper <= max, both operands' lanes at once, one
+/// branch for the caller instead of six.
+[[gnu::always_inline]] inline __m128d ordinary_mask(const interval& x, const interval& y) {
+  const __m128d lo = _mm_set_pd(y.lower(), x.lower()), hi = _mm_set_pd(y.upper(), x.upper());
+  const __m128d big = _mm_set1_pd(std::numeric_limits<double>::max());
+  return _mm_and_pd(_mm_and_pd(_mm_cmple_pd(lo, hi), _mm_cmple_pd(hi, big)), _mm_cmple_pd(_mm_xor_pd(big, _mm_set1_pd(-0.0)), lo));
+}
+[[gnu::always_inline]] inline bool ordinary_pair(const interval& x, const interval& y) {
+  return _mm_movemask_pd(ordinary_mask(x, y)) == 3;
 }
 [[gnu::always_inline]] inline interval multiply(const interval& x, const interval& y) {
   const double xl = x.lower(), xu = x.upper(), yl = y.lower(), yu = y.upper();
-  if (!finite_bounds(xl, xu, yl, yu) || !(xl <= xu) || !(yl <= yu)) [[unlikely]]
+  if (!ordinary_pair(x, y)) [[unlikely]]
     return multiply_slow(xl, xu, yl, yu);
   const interval_rounding rnd;
   const __m128d xs = opaque_pd(_mm_set_pd(xu, xl));             // (xl, xu)
@@ -266,11 +273,8 @@ inline double bound_product_up(double a, double b) {  // a*b rounded up, 0 x inf
 // negation of a product swaps its lanes (exactly). The bounds are those of the same
 // operations done one by one (a + b computes its lower bound as -((-a) - b), the same
 // rounding of the same numbers), without forming and checking the intermediate intervals.
-// Operands with an infinite, NaN (empty) or reversed bound take the operations one by one.
-[[gnu::always_inline]] inline bool ordinary(const interval& x) {
-  constexpr double big = std::numeric_limits<double>::max();
-  return std::fabs(x.lower()) <= big && std::fabs(x.upper()) <= big && x.lower() <= x.upper();
-}
+// Operands with an infinite, NaN (empty) or reversed bound (ordinary_mask, above) take the
+// operations one by one.
 /// (-lower, upper) of x y, rounded up (upward mode; bounds finite).
 [[gnu::always_inline]] inline __m128d product_pair(const interval& x, const interval& y) {
   const __m128d xs = opaque_pd(_mm_set_pd(x.upper(), x.lower()));  // (xl, xu)
@@ -287,7 +291,8 @@ inline double bound_product_up(double a, double b) {  // a*b rounded up, 0 x inf
 /// a0 b0 + a1 b1 + a2 b2, the bounds of ((a0 b0) + (a1 b1)) + (a2 b2).
 inline interval interval_sum_of_products(const interval& a0, const interval& b0, const interval& a1, const interval& b1,
                                 const interval& a2, const interval& b2) {
-  if (!(ordinary(a0) && ordinary(b0) && ordinary(a1) && ordinary(b1) && ordinary(a2) && ordinary(b2))) [[unlikely]]
+  if (_mm_movemask_pd(_mm_and_pd(_mm_and_pd(ordinary_mask(a0, b0), ordinary_mask(a1, b1)), ordinary_mask(a2, b2))) != 3)
+      [[unlikely]]
     return add(add(multiply(a0, b0), multiply(a1, b1)), multiply(a2, b2));
   const interval_rounding rnd;
   const __m128d s = _mm_add_pd(opaque_pd(_mm_add_pd(product_pair(a0, b0), product_pair(a1, b1))), product_pair(a2, b2));
@@ -295,7 +300,7 @@ inline interval interval_sum_of_products(const interval& a0, const interval& b0,
 }
 /// a0 b0 - a1 b1, the bounds of (a0 b0) - (a1 b1).
 inline interval interval_difference_of_products(const interval& a0, const interval& b0, const interval& a1, const interval& b1) {
-  if (!(ordinary(a0) && ordinary(b0) && ordinary(a1) && ordinary(b1))) [[unlikely]]
+  if (_mm_movemask_pd(_mm_and_pd(ordinary_mask(a0, b0), ordinary_mask(a1, b1))) != 3) [[unlikely]]
     return subtract(multiply(a0, b0), multiply(a1, b1));
   const interval_rounding rnd;
   const __m128d q = product_pair(a1, b1);
