@@ -141,6 +141,42 @@ BOOST_AUTO_TEST_CASE(a_mode_changed_behind_the_scope_is_detected) {
   BOOST_TEST(scope.intact());
 }
 
+BOOST_AUTO_TEST_CASE(flush_to_zero_left_by_other_code_is_turned_off) {
+  // A program linked with -ffast-math (GCC's crtfastmath) starts with MXCSR's flush-to-zero and
+  // denormals-are-zero bits set: the product 1e-160 x 1e-160 = 1e-320 (subnormal), rounded up,
+  // would flush to +0, an upper bound below the true product, and a subnormal operand would be
+  // read as 0. Every mode appell sets turns both bits off; an upward scope with them set again
+  // behind its back is not intact.
+  const unsigned saved = appell::detail::read_mxcsr();
+  appell::detail::write_mxcsr(saved | 0x8040u);
+  volatile double tiny_v = 1e-160, sub_v = 0x1p-1070;  // not constants the compiler could fold
+  const double tiny = tiny_v, sub = sub_v;
+  const interval outside = interval(tiny) * interval(tiny);  // the operation sets the mode itself
+  interval inside, sub_sum;
+  bool intact = false, intact_after = true;
+  {
+    const appell::upward_rounding scope;
+    inside = interval(tiny) * interval(tiny);
+    sub_sum = interval(sub) + interval(sub);
+    intact = scope.intact();
+    appell::detail::write_mxcsr(appell::detail::read_mxcsr() | 0x8000u);  // flush-to-zero set behind the scope
+    intact_after = scope.intact();
+    appell::detail::write_mxcsr(appell::detail::read_mxcsr() & ~0x8000u);
+  }
+  const unsigned after = appell::detail::read_mxcsr();
+  appell::detail::write_mxcsr(saved);
+  BOOST_TEST(outside.lower() > 0.0);  // 1e-320 rounded down and up: subnormals, not flushed
+  BOOST_TEST(outside.lower() <= outside.upper());
+  BOOST_TEST(outside.upper() < 1.001e-320);
+  BOOST_TEST(inside.lower() == outside.lower());
+  BOOST_TEST(inside.upper() == outside.upper());
+  BOOST_TEST(sub_sum.lower() == 0x1p-1069);  // the subnormals read as themselves, added exactly
+  BOOST_TEST(sub_sum.upper() == 0x1p-1069);
+  BOOST_TEST(intact);
+  BOOST_TEST(!intact_after);
+  BOOST_TEST((after & 0x8040u) == 0x8040u);  // the scope gave back the mode it found
+}
+
 BOOST_AUTO_TEST_CASE(products_with_infinite_bounds_use_zero_times_infinity_is_zero) {
   const double inf = INFINITY;
   const appell::upward_rounding scope;  // the fast path's slow branch, under the flag

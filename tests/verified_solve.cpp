@@ -7,6 +7,7 @@
 
 #include <gmp.h>
 
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -232,6 +233,30 @@ BOOST_AUTO_TEST_CASE(large_systems_enclose_the_exact_solution) {
     BOOST_TEST_MESSAGE("mpfi 128, 13 to 40 unknowns: SPD " << s3 << "/15 certified");
     BOOST_TEST(s3 == 15);
   }
+  // the residual path itself certifies them (not Krawczyk's iteration behind it)
+  for (int c = 0; c < 20; ++c) {
+    const int n = std::uniform_int_distribution<int>(13, 40)(rng);
+    const Eigen::MatrixXd G = random_matrix(n);
+    Eigen::MatrixXd A = G.transpose() * G;
+    A += n * Eigen::MatrixXd::Identity(n, n);
+    A = (A + A.transpose()) / 2;
+    matrix_t<interval> AI(n, n);
+    vector_t<interval> bI(n), x(n);
+    qmatrix Aq(n);
+    qvector bq(n), xq(n);
+    for (int i = 0; i < n; ++i) {
+      const double bi = random_entry();
+      bI(i) = interval(bi);
+      mpq_set_d(bq[i], bi);
+      for (int j = 0; j < n; ++j) {
+        AI(i, j) = interval(A(i, j));
+        mpq_set_d(Aq(i, j), A(i, j));
+      }
+    }
+    BOOST_REQUIRE(exact_solve(Aq, bq, xq));
+    BOOST_REQUIRE(detail::residual_solve_into<void>(AI, bI, x));
+    for (int i = 0; i < n; ++i) BOOST_REQUIRE(encloses(x(i), xq[i]));
+  }
   const int checked = thick_systems(12, 13, 30, 10);
   BOOST_TEST_MESSAGE("thick systems of 13 to 30 unknowns: " << checked << " point solutions checked inside the enclosures");
   BOOST_TEST(checked >= 100);
@@ -240,48 +265,60 @@ BOOST_AUTO_TEST_CASE(large_systems_enclose_the_exact_solution) {
 BOOST_AUTO_TEST_CASE(row_sums_bound_the_exact_row_sums_of_the_residual_matrix) {
   // residual_row_sums_into against the exact maxima over the box [A] of sum_j |delta_ij - (R A)_ij|
   // (linear in A entrywise: |delta_ij - (R mid A)_ij| + (|R| rad A)_ij, with mid and rad exact
-  // rationals), on random thin and thick matrices and approximate inverses of 1 to 40 unknowns;
-  // and the row sums of the enclosure of I - R A (identity_minus_product) bound them too.
+  // rationals), on random matrices of 1 to 40 unknowns and of 48 to 64 (Eigen's blocked product),
+  // thin and thick, well and badly conditioned (no diagonal shift: the inverse R inaccurate, the
+  // bound's gamma_n |R| |mid A| large), some with entries near the subnormal range (products that
+  // underflow), half of them inside an upward-rounding scope (as the solves call it, G = R mid A
+  // then rounded upward); and the row sums of the enclosure of I - R A (identity_minus_product)
+  // bound them too.
   int cases = 0, rows = 0;
   double widest = 0;  // the largest ratio of the a priori bound's row sum to the enclosure's
-  mpq_t acc, t, m, rad, e;
-  for (mpq_t* q : {&acc, &t, &m, &rad, &e}) mpq_init(*q);
-  for (int c = 0; c < 120; ++c) {
-    const int n = std::uniform_int_distribution<int>(1, 40)(rng);
+  mpq_t acc, t, e, rad_sum;
+  for (mpq_t* q : {&acc, &t, &e, &rad_sum}) mpq_init(*q);
+  for (int c = 0; c < 136; ++c) {
+    const int n = c < 120 ? std::uniform_int_distribution<int>(1, 40)(rng) : std::uniform_int_distribution<int>(48, 64)(rng);
     const double r = c % 3 == 0 ? 0.0 : std::ldexp(1.0, -std::uniform_int_distribution<int>(10, 50)(rng));
     Eigen::MatrixXd A0 = random_matrix(n);
-    A0 += n * Eigen::MatrixXd::Identity(n, n);
+    if (c % 4 != 3) A0 += n * Eigen::MatrixXd::Identity(n, n);
+    if (c % 5 == 1)  // entries near the bottom of double's range
+      for (int q = 0; q < n; ++q) A0(std::uniform_int_distribution<int>(0, n - 1)(rng), q) = std::ldexp(random_entry(), -1040);
     matrix_t<interval> AI(n, n);
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) AI(i, j) = r == 0 ? interval(A0(i, j)) : interval(A0(i, j) - r, A0(i, j) + r);
     const Eigen::MatrixXd R = A0.inverse();
+    if (!R.allFinite()) continue;
     Eigen::VectorXd row_sum, enclosure_sum;
-    detail::residual_row_sums_into(R, AI, row_sum);
-    detail::row_sums_of_magnitudes_into(detail::identity_minus_product(R, AI), enclosure_sum);
+    {
+      std::optional<upward_rounding> up;
+      if (c % 2) up.emplace();
+      detail::residual_row_sums_into(R, AI, row_sum);
+      detail::row_sums_of_magnitudes_into(detail::identity_minus_product(R, AI), enclosure_sum);
+    }
+    qmatrix mid(n), rad(n), Rq(n);
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j) {
+        mpq_set_d(mid(k, j), AI(k, j).lower());
+        mpq_set_d(t, AI(k, j).upper());
+        mpq_sub(rad(k, j), t, mid(k, j));
+        mpq_div_2exp(rad(k, j), rad(k, j), 1);  // the exact radius
+        mpq_add(mid(k, j), mid(k, j), rad(k, j));  // the exact midpoint
+        mpq_set_d(Rq(k, j), R(k, j));
+      }
     for (int i = 0; i < n; ++i) {
       mpq_set_ui(acc, 0, 1);
       for (int j = 0; j < n; ++j) {
         mpq_set_si(e, i == j ? 1 : 0, 1);  // delta_ij - sum_k R_ik mid_kj, then |.|, plus sum_k |R_ik| rad_kj
-        mpq_set_ui(rad, 0, 1);
+        mpq_set_ui(rad_sum, 0, 1);
         for (int k = 0; k < n; ++k) {
-          mpq_set_d(m, AI(k, j).lower());
-          mpq_set_d(t, AI(k, j).upper());
-          mpq_add(m, m, t);
-          mpq_div_2exp(m, m, 1);  // the exact midpoint
-          mpq_set_d(t, R(i, k));
-          mpq_mul(m, m, t);
-          mpq_sub(e, e, m);
-          mpq_set_d(m, AI(k, j).upper());
-          mpq_set_d(t, AI(k, j).lower());
-          mpq_sub(m, m, t);
-          mpq_div_2exp(m, m, 1);  // the exact radius
-          mpq_set_d(t, std::abs(R(i, k)));
-          mpq_mul(m, m, t);
-          mpq_add(rad, rad, m);
+          mpq_mul(t, Rq(i, k), mid(k, j));
+          mpq_sub(e, e, t);
+          mpq_mul(t, Rq(i, k), rad(k, j));
+          mpq_abs(t, t);
+          mpq_add(rad_sum, rad_sum, t);
         }
         mpq_abs(e, e);
         mpq_add(acc, acc, e);
-        mpq_add(acc, acc, rad);
+        mpq_add(acc, acc, rad_sum);
       }
       mpq_set_d(t, row_sum(i));
       BOOST_REQUIRE_MESSAGE(mpq_cmp(t, acc) >= 0, "n = " << n << ", row " << i << ": the bound " << row_sum(i)
@@ -293,16 +330,18 @@ BOOST_AUTO_TEST_CASE(row_sums_bound_the_exact_row_sums_of_the_residual_matrix) {
     }
     ++cases;
   }
-  for (mpq_t* q : {&acc, &t, &m, &rad, &e}) mpq_clear(*q);
+  for (mpq_t* q : {&acc, &t, &e, &rad_sum}) mpq_clear(*q);
   BOOST_TEST_MESSAGE("row sums: " << cases << " matrices, " << rows << " rows, every bound above the exact sum; the a priori "
                                   << "bound at most " << widest << " times the enclosure's");
-  BOOST_TEST(rows > 1000);
+  BOOST_TEST(cases >= 130);
+  BOOST_TEST(rows > 1500);
 }
 
 BOOST_AUTO_TEST_CASE(sums_of_point_products_are_the_operations_one_by_one) {
   // sum_of_point_products (the residual b - A x~ and R r of the residual bound) claims the bounds
-  // of the interval products by [d, d] and their sums done one by one: the same bits on random
-  // operands of every sign, thin and wide, with exact zeros among the points.
+  // of the interval products by [d, d] and their sums done one by one: the same numbers on random
+  // operands of every sign, thin, wide and holding 0, with points of either sign, zeros of either
+  // sign, subnormal points, and products that overflow to infinity.
   std::uniform_real_distribution<double> u(-1, 1);
   long same = 0, cases = 0;
   const upward_rounding mode;
@@ -312,9 +351,12 @@ BOOST_AUTO_TEST_CASE(sums_of_point_products_are_the_operations_one_by_one) {
     std::vector<double> d(static_cast<std::size_t>(n));
     for (std::size_t k = 0; k < a.size(); ++k) {
       const double x = std::ldexp(u(rng), std::uniform_int_distribution<int>(-30, 30)(rng));
-      const double w = c % 2 ? 0.0 : std::abs(x) * std::ldexp(std::abs(u(rng)), -std::uniform_int_distribution<int>(1, 50)(rng));
+      const double w = c % 2 ? 0.0 : std::abs(x) * std::ldexp(std::abs(u(rng)), std::uniform_int_distribution<int>(-50, 2)(rng));
       a[k] = interval(x - w, x + w);
-      d[k] = c % 5 == 0 && k == 0 ? 0.0 : std::ldexp(u(rng), std::uniform_int_distribution<int>(-30, 30)(rng));
+      d[k] = std::ldexp(u(rng), std::uniform_int_distribution<int>(-30, 30)(rng));
+      if (c % 5 == 0 && k == 0) d[k] = c % 10 == 0 ? -0.0 : 0.0;
+      if (c % 7 == 1 && k == 0) d[k] = std::ldexp(u(rng), -1060);  // subnormal
+      if (c % 11 == 2 && k == 0) a[k] = interval(-1e300, 1e300), d[k] = 1e10 * (u(rng) < 0 ? -1 : 1);  // overflows
     }
     interval one_by_one = a[0] * interval(d[0]);
     for (std::size_t k = 1; k < a.size(); ++k) one_by_one += a[k] * interval(d[k]);

@@ -3,12 +3,13 @@
 // With an approximate inverse R (double) and an approximate solution x~, the error
 // e = x - x~ of every system A x = b, A in [A], b in [b], satisfies A e = r with
 // r = b - A x~ in [r], hence  e = R r + C e,  C = I - R A.  If every row sum of
-// |C| is at most beta < 1 (C enclosed for every A in [A] by midpoint-radius
-// products), every such A is nonsingular, ||e||_inf <= ||R r||_inf / (1 - beta)
+// |C| is at most beta < 1 (bounded for every A in [A]: up to 12 unknowns from an
+// enclosure of C by midpoint-radius products, above from one product R mid(A) with
+// its rounding bounded a priori), every such A is nonsingular, ||e||_inf <= ||R r||_inf / (1 - beta)
 // =: eps, and e_i lies in (R r)_i + [-s_i eps, s_i eps] with s_i the i-th row sum.
 // Only r needs the working precision: for mpfi it is computed at p bits, then
 // scaled by a power of two and enclosed in double, where the rest runs (n^3
-// double operations for C instead of n^3 mpfi ones).  The result is x~ + e-box,
+// double operations instead of n^3 mpfi ones).  The result is x~ + e-box,
 // as wide as the residual's enclosure makes it; where beta is not small the
 // caller falls back to Krawczyk's iteration at full precision.
 #include <mpfi.h>

@@ -27,7 +27,7 @@ using unary_mpfr = int (*)(mpfr_ptr, mpfr_srcptr, mpfr_rnd_t);
 // round-to-nearest here: switch it for the one operation).
 double directed(double a, double b, bool add, unsigned mode) {
   const unsigned csr = detail::read_mxcsr();
-  detail::write_mxcsr((csr & ~detail::mxcsr_rounding) | mode);
+  detail::write_mxcsr((csr & ~detail::mxcsr_mode) | mode);
   const double r = add ? interval_arith::opaque(interval_arith::opaque(a) + interval_arith::opaque(b))
                        : interval_arith::opaque(interval_arith::opaque(a) - interval_arith::opaque(b));
   detail::write_mxcsr(csr);
@@ -232,7 +232,7 @@ bool covers_period(const interval& x) { return x.upper() - x.lower() > 6.3; }
 // -fno-builtin-sqrt keeps GCC from folding it under the wrong mode).
 double sqrt_directed(double x, unsigned mode) {
   const unsigned csr = detail::read_mxcsr();
-  detail::write_mxcsr((csr & ~detail::mxcsr_rounding) | mode);
+  detail::write_mxcsr((csr & ~detail::mxcsr_mode) | mode);
   const double r = interval_arith::opaque(std::sqrt(interval_arith::opaque(x)));
   detail::write_mxcsr(csr);
   return r;

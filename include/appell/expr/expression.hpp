@@ -430,6 +430,12 @@ class expression_tape {
   }
   std::size_t size() const { return nodes_.size(); }
 
+  /// How many nodes read the table `name` (0: none does).
+  int table_readers(const std::string& name) const {
+    int n = 0;
+    for (const entry& e : nodes_) n += e.table && e.table->name == name;
+    return n;
+  }
   /// Value k of the table named `name`, in every node that reads the table, set to v in place of
   /// the decimal the table gives (`appell validity --vary tables.NAME.value[K]`: v a range).
   /// Returns how many nodes read the table (0: v reaches nothing on this tape).

@@ -91,6 +91,27 @@ vector_t<T> product(const matrix_t<T>& A, const vector_t<T>& x) {
   return y;
 }
 
+/// K Eigen objects of type M for one call: borrowed from a pool (linalg/scratch.hpp, one pool per
+/// Site: the caller's own) where M's size is dynamic, on the stack where its capacity is fixed;
+/// the same operations either way.
+template <class M, int K, class Site>
+class scratch_matrices {
+ public:
+  M& operator[](int k) {
+    if constexpr (borrowed) {
+      if (!held_[k]) held_[k].emplace();
+      return **held_[k];
+    } else {
+      return local_[k];
+    }
+  }
+
+ private:
+  static constexpr bool borrowed = M::MaxRowsAtCompileTime == Eigen::Dynamic;
+  std::optional<scratch<M, Site>> held_[K];
+  M local_[borrowed ? 1 : K];
+};
+
 /// The three double products of identity_minus_product_into (below) in one
 /// pass: up = RU(R Am) >= R Am, neg_down = RU((-R) Am) >= -(R Am) and
 /// rad = RU(|R| Ar) >= |R| Ar, every operation in the caller's rounding mode,
@@ -136,19 +157,9 @@ template <class DM>
 template <class Site = void, class DM, class IMA, class IMC>
 void identity_minus_product_into(const DM& R, const IMA& A, IMC& C) {
   const Eigen::Index n = A.rows();
-  constexpr bool borrowed = DM::MaxRowsAtCompileTime == Eigen::Dynamic;
   struct site;
-  std::optional<scratch<DM, site>> held[5];
-  DM local[borrowed ? 1 : 5];
-  auto matrix = [&](int k) -> DM& {
-    if constexpr (borrowed) {
-      held[k].emplace();
-      return *held[k].value();
-    } else {
-      return local[k];
-    }
-  };
-  DM &Am = matrix(0), &Ar = matrix(1), &up = matrix(2), &neg_down = matrix(3), &rad = matrix(4);
+  scratch_matrices<DM, 5, site> matrix;
+  DM &Am = matrix[0], &Ar = matrix[1], &up = matrix[2], &neg_down = matrix[3], &rad = matrix[4];
   for (DM* M : {&Am, &Ar, &up, &neg_down, &rad}) M->resize(n, n);
   {
     const upward_rounding mode;
@@ -157,7 +168,10 @@ void identity_minus_product_into(const DM& R, const IMA& A, IMC& C) {
         const double lo = A(i, j).lower(), hi = A(i, j).upper();
         const double m = lo + (hi - lo) * 0.5;
         Am(i, j) = (lo <= m && m <= hi) ? m : lo;
-        Ar(i, j) = std::max(interval_arith::opaque(hi - Am(i, j)), interval_arith::opaque(Am(i, j) - lo));  // rounded up
+        const auto sub_up = [](double a, double b) {
+          return interval_arith::opaque(interval_arith::opaque(a) - interval_arith::opaque(b));
+        };
+        Ar(i, j) = std::max(sub_up(hi, Am(i, j)), sub_up(Am(i, j), lo));  // rounded up
       }
     rump_products(R, Am, Ar, up, neg_down, rad);
   }
@@ -186,8 +200,9 @@ inline constexpr double max_contraction = 1.0 / 1024;
 /// products and sums done one by one in interval arithmetic (a product by the thin [d, d] is
 /// [a_lo d, a_hi d] or [a_hi d, a_lo d] by d's sign: one product per bound, not four), each
 /// product kept as the pair (-lower, upper) and the pairs added in upward mode, as
-/// interval_sum_of_products does.  Every a_k and d_k finite, the caller inside an upward scope
-/// (upward_rounding).  Terms with d_k = 0 are exactly zero and left out.
+/// interval_sum_of_products does.  Every a_k and d_k finite; the caller inside an upward scope
+/// (upward_rounding: this function switches nothing, and every caller holds one).  Terms with
+/// d_k = 0 (either sign) are exactly zero and left out.
 template <class A, class D>
 interval sum_of_point_products(Eigen::Index n, const A& a, const D& d) {
   __m128d s = _mm_setzero_pd();
@@ -220,53 +235,45 @@ interval sum_of_point_products(Eigen::Index n, const A& a, const D& d) {
 template <class Site = void, class DM, class IMA, class SV>
 void residual_row_sums_into(const DM& R, const IMA& A, SV& row_sum) {
   const Eigen::Index n = A.rows();
-  constexpr bool borrowed = DM::MaxRowsAtCompileTime == Eigen::Dynamic;
   struct site;
-  std::optional<scratch<DM, site>> held[2];
-  DM local[borrowed ? 1 : 2];
-  auto matrix = [&](int k) -> DM& {
-    if constexpr (borrowed) {
-      held[k].emplace();
-      return *held[k].value();
-    } else {
-      return local[k];
-    }
-  };
-  DM &Am = matrix(0), &G = matrix(1);
+  scratch_matrices<DM, 2, site> matrix;
+  scratch_matrices<SV, 1, site> vector;
+  DM &Am = matrix[0], &G = matrix[1];
+  SV& w = vector[0];  // w_k = sum_j (gamma_n |Am_kj| + Ar_kj), rounded up
   Am.resize(n, n);
-  std::optional<scratch<SV, site>> w_held;
-  SV w_local;
-  if constexpr (SV::MaxRowsAtCompileTime == Eigen::Dynamic) w_held.emplace();
-  SV& w = w_held ? **w_held : w_local;  // w_k = sum_j (gamma_n |Am_kj| + Ar_kj), rounded up
   w.resize(n);
   row_sum.resize(n);
+  // Every operation rounded upward has its operands and its result passed through opaque (as
+  // interval_arith's): neither can be computed before the mode switch nor folded.
+  const auto opaque = [](double v) { return interval_arith::opaque(v); };
+  const auto add_up = [&](double a, double b) { return opaque(opaque(a) + opaque(b)); };
+  const auto sub_up = [&](double a, double b) { return opaque(opaque(a) - opaque(b)); };
+  const auto mul_up = [&](double a, double b) { return opaque(opaque(a) * opaque(b)); };
   {
     const upward_rounding mode;
-    const auto opaque = [](double v) { return interval_arith::opaque(v); };
-    const double nu = opaque(static_cast<double>(n) * 0x1p-52);  // exact
-    const double gamma = opaque(nu / -opaque(nu - 1.0));         // n u / (1 - n u), rounded up
+    const double nu = mul_up(static_cast<double>(n), 0x1p-52);                    // exact
+    const double gamma = opaque(opaque(nu) / -sub_up(nu, 1.0));                   // n u / (1 - n u), rounded up
     for (Eigen::Index k = 0; k < n; ++k) w(k) = 0;
     for (Eigen::Index j = 0; j < n; ++j)
       for (Eigen::Index k = 0; k < n; ++k) {
         const double lo = A(k, j).lower(), hi = A(k, j).upper();
-        const double m = lo + (hi - lo) * 0.5;
+        const double m = lo + (hi - lo) * 0.5;  // any point of [lo, hi] will do
         Am(k, j) = (lo <= m && m <= hi) ? m : lo;
-        const double ar = std::max(opaque(hi - Am(k, j)), opaque(Am(k, j) - lo));  // rounded up
-        w(k) = opaque(w(k) + opaque(ar + opaque(gamma * std::fabs(Am(k, j)))));
+        const double ar = std::max(sub_up(hi, Am(k, j)), sub_up(Am(k, j), lo));  // >= |A - Am|
+        w(k) = add_up(w(k), add_up(ar, mul_up(gamma, std::fabs(Am(k, j)))));
       }
   }
   G.resize(n, n);
-  G.noalias() = R * Am;
+  G.noalias() = R * Am;  // in any rounding mode: the bound above holds for each
   {
     const upward_rounding mode;
-    const auto opaque = [](double v) { return interval_arith::opaque(v); };
-    const double underflow = opaque(static_cast<double>(2 * n * n) * 0x1p-1074);  // rounded up
+    const double underflow = mul_up(static_cast<double>(2 * n * n), 0x1p-1074);
     for (Eigen::Index i = 0; i < n; ++i) row_sum(i) = underflow;
     for (Eigen::Index j = 0; j < n; ++j)  // down the columns (contiguous)
       for (Eigen::Index i = 0; i < n; ++i) {
         const double g = G(i, j);
-        const double e = i == j ? std::max(opaque(1.0 - g), opaque(g - 1.0)) : std::fabs(g);  // >= |delta_ij - g|
-        row_sum(i) = opaque(row_sum(i) + opaque(e + opaque(std::fabs(R(i, j)) * w(j))));
+        const double e = i == j ? std::max(sub_up(1.0, g), sub_up(g, 1.0)) : std::fabs(g);  // >= |delta_ij - g|
+        row_sum(i) = add_up(row_sum(i), add_up(e, mul_up(std::fabs(R(i, j)), w(j))));
       }
   }
 }
@@ -280,9 +287,10 @@ bool residual_enclosure_into(const DM& R, const SV& row_sum, const IV& r, IV& z)
   const upward_rounding mode;  // plain double operations below round upward
   const auto opaque = [](double v) { return interval_arith::opaque(v); };
   double beta = 0;
-  for (Eigen::Index i = 0; i < n; ++i)
-    if (!(row_sum(i) <= beta)) beta = row_sum(i);  // a NaN row sum makes beta NaN
-  if (!(beta <= max_contraction)) return false;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (!(row_sum(i) <= max_contraction)) return false;  // NaN fails too
+    beta = std::max(beta, row_sum(i));
+  }
   for (Eigen::Index j = 0; j < n; ++j)
     if (!is_finite(r(j))) return false;
   z.resize(n);
@@ -486,7 +494,8 @@ vector_t<I> verified_solve(const matrix_t<I>& A, const vector_t<I>& b) {
 namespace detail {
 /// The residual bound for an interval system of more than small_system_max unknowns, every
 /// matrix borrowed from Site's pool (linalg/scratch.hpp): R ~ mid(A)^-1 by LU in double, x~ with
-/// one refinement step, r = b - A x~ and C = I - R A enclosed, then residual_enclosure_into;
+/// one refinement step, r = b - A x~ enclosed, the row sums of |I - R A| bounded a priori
+/// (residual_row_sums_into), then residual_enclosure_into;
 /// false where the bound does not give an enclosure (verified_solve then decides: Krawczyk's
 /// iteration, or the refusal).
 template <class Site>

@@ -429,8 +429,7 @@ struct system_problem {
       if (v.axis < 0)
         return "the table " + table.name + " has " + std::to_string(table.values.size()) + " values: value[0] to value[" +
                std::to_string(table.values.size() - 1) + "] (K counted from 0, without leading zeros)";
-      compiled_system<T> probe = model->sys;
-      if (probe.set_table_value(table.name, static_cast<std::size_t>(v.axis), value) == 0)
+      if (model->sys.table_readers(table.name) == 0)
         return "no force, couple or effort of the scene calls the table " + table.name + "(t)";
       return "";
     }

@@ -234,17 +234,14 @@ bool run_refinement_piece(const P& prob, const vector_t<I>& x, double h, const R
   if constexpr (requires { prob.breakpoints(); prob.time_component(); }) {
     const int ti = prob.time_component();
     if (ti >= 0)
-      for (const double b : prob.breakpoints()) {
-        const I e = I(I(b) - x(ti));  // the breakpoint, from the piece's start
-        const bool exactly = lower(e) == upper(e) && lower(e) == h;
-        if (!exactly && !(upper(e) < h) && !(h < lower(e))) {
+      for (const double b : prob.breakpoints())
+        if (ode::may_straddle(I(I(b) - x(ti)), I(h))) {  // the breakpoint, from the piece's start
           try {
             return run(h * (1 + 0x1p-30));
           } catch (const input_error&) {
             return false;
           }
         }
-      }
   }
   return run(h);
 }

@@ -371,6 +371,16 @@ inline constexpr int affine_symbols_per_component = 3000;
 /// (slope_order): half the series' order, at least 6.
 inline int default_slope_order(int p) { return std::min(p - 1, std::max(6, p / 2)); }
 
+/// A horizon (time elapsed from the start) that may lie on either side of the breakpoint b
+/// (elapsed from the start too): the two overlap and are not the same one number.  enclose
+/// refuses such a horizon; a refinement piece ending there runs a hair past it
+/// (motion/engine.hpp, run_refinement_piece).
+template <class I>
+bool may_straddle(const I& b, const I& horizon) {
+  const bool same = lower(b) == upper(b) && lower(horizon) == upper(horizon) && lower(b) == lower(horizon);
+  return !same && !(upper(b) < lower(horizon)) && !(upper(horizon) < lower(b));
+}
+
 /// Encloses the motion of prob from the box x0 over [0, t_end]; calls `emit` for every step.
 template <class P, class I>
 enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int p, double tol, double max_width,
@@ -420,14 +430,11 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     ++next_break;
   }
   double segment_start = next_break > 0 ? breaks[next_break - 1] : approx_double(I(lower(start_time)));
-  for (std::size_t k = next_break; k < breaks.size(); ++k) {  // a horizon on a breakpoint: exactly, or refused
-    const I b = I(I(breaks[k]) - start_time);
-    const bool same = lower(b) == upper(b) && lower(t_end) == upper(t_end) && lower(b) == lower(t_end);
-    if (!same && !(upper(b) < lower(t_end)) && !(upper(t_end) < lower(b)))
+  for (std::size_t k = next_break; k < breaks.size(); ++k)  // a horizon on a breakpoint: exactly, or refused
+    if (may_straddle(I(I(breaks[k]) - start_time), t_end))
       throw input_error("the horizon " + to_string(t_end) + " may lie on either side of the breakpoint " +
                         number_text(breaks[k]) + " of a table, measured from the start (end the motion before it, "
                         "after it, or exactly on it)");
-  }
   while (true) {
     if (!(upper(t) < lower(t_end))) break;  // t_end reached
     const bool break_left = next_break < breaks.size();

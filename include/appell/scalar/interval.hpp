@@ -66,12 +66,16 @@ inline unsigned read_mxcsr() {
   return csr;
 }
 inline void write_mxcsr(unsigned csr) { asm volatile("ldmxcsr %0" : : "m"(csr)); }
-constexpr unsigned mxcsr_rounding = 0x6000, mxcsr_upward = 0x4000;
+/// The MXCSR bits appell sets: the rounding control (0x6000), and flush-to-zero (0x8000) and
+/// denormals-are-zero (0x0040), which every mode it sets turns off: a program linked with
+/// -ffast-math (GCC's crtfastmath) starts with both on, and a subnormal upper bound flushed to 0
+/// is no upper bound.  A mode is "upward" only with both off.
+constexpr unsigned mxcsr_mode = 0x6000 | 0x8000 | 0x0040, mxcsr_upward = 0x4000;
 /// upward_known (scalar/rounding_state.hpp): true while this thread is inside an upward_rounding
 /// scope (and not inside a nearest_rounding one within it): the SSE unit is then known to round
 /// upward and interval operations skip reading MXCSR (measured: the read cost 40% of an interval
 /// addition).  Declared there, defined in libappell_rounding.so, read initial-exec everywhere.
-inline bool mxcsr_is_upward() { return (read_mxcsr() & mxcsr_rounding) == mxcsr_upward; }
+inline bool mxcsr_is_upward() { return (read_mxcsr() & mxcsr_mode) == mxcsr_upward; }
 }  // namespace detail
 
 /// Sets upward rounding (SSE) for a scope and restores the previous mode:
@@ -84,7 +88,7 @@ inline bool mxcsr_is_upward() { return (read_mxcsr() & mxcsr_rounding) == mxcsr_
 class upward_rounding {
  public:
   upward_rounding() : saved_(detail::read_mxcsr()), was_known_(detail::upward_known) {
-    detail::write_mxcsr((saved_ & ~detail::mxcsr_rounding) | detail::mxcsr_upward);
+    detail::write_mxcsr((saved_ & ~detail::mxcsr_mode) | detail::mxcsr_upward);
     detail::upward_known = true;
   }
   ~upward_rounding() {
@@ -106,7 +110,7 @@ class nearest_rounding {
  public:
   nearest_rounding() : saved_(detail::read_mxcsr()), was_known_(detail::upward_known) {
     detail::upward_known = false;
-    detail::write_mxcsr(saved_ & ~detail::mxcsr_rounding);
+    detail::write_mxcsr(saved_ & ~detail::mxcsr_mode);
   }
   ~nearest_rounding() {
     detail::write_mxcsr(saved_);
@@ -155,7 +159,7 @@ struct interval_arith : boost::numeric::interval_lib::rounded_arith_opp<double> 
   double sqrt_up(double x) { return opaque(std::sqrt(opaque(x))); }                    // upward mode
   double sqrt_down(double x) {
     const unsigned csr = detail::read_mxcsr();
-    detail::write_mxcsr((csr & ~detail::mxcsr_rounding) | 0x2000);  // downward
+    detail::write_mxcsr((csr & ~detail::mxcsr_mode) | 0x2000);  // downward
     const double r = opaque(std::sqrt(opaque(x)));
     detail::write_mxcsr(csr);
     return r;
@@ -174,8 +178,8 @@ struct interval_rounding : interval_arith {
       return;
     }
     saved_ = detail::read_mxcsr();
-    restore_ = (saved_ & detail::mxcsr_rounding) != detail::mxcsr_upward;
-    if (restore_) detail::write_mxcsr((saved_ & ~detail::mxcsr_rounding) | detail::mxcsr_upward);
+    restore_ = (saved_ & detail::mxcsr_mode) != detail::mxcsr_upward;
+    if (restore_) detail::write_mxcsr((saved_ & ~detail::mxcsr_mode) | detail::mxcsr_upward);
   }
   [[gnu::always_inline]] ~interval_rounding() {
     if (restore_) detail::write_mxcsr(saved_);

@@ -175,6 +175,10 @@ struct compiled_system {
   std::vector<link> links;   ///< in the definition's link order (each after its parent)
   std::vector<int> link_of;  ///< each body's place in links; -1: not a link
 
+  /// How many nodes of the tapes read the table `name` (0: no force, couple or effort calls it).
+  int table_readers(const std::string& name) const {
+    return body_tape.table_readers(name) + kinematics_tape.table_readers(name) + constraint_tape.table_readers(name);
+  }
   /// Value k of the table `name` set to v on every tape that reads it (with_parameter); returns
   /// how many nodes read the table.
   int set_table_value(const std::string& name, std::size_t k, const T& v) {
