@@ -108,6 +108,24 @@ Eigen::MatrixXd random_matrix(int n) {
   return G;
 }
 
+// The interval system [A -+ r] x = [b] with a random thin b, and the exact one A x = b (Aq, bq
+// of A's size): the box's midpoint system, whose solution every enclosure must hold.
+void random_rhs_system(const Eigen::MatrixXd& A, double r, matrix_t<interval>& AI, vector_t<interval>& bI, qmatrix& Aq,
+                       qvector& bq) {
+  const auto n = A.rows();
+  AI.resize(n, n);
+  bI.resize(n);
+  for (int i = 0; i < n; ++i) {
+    const double bi = random_entry();
+    bI(i) = interval(bi);
+    mpq_set_d(bq[i], bi);
+    for (int j = 0; j < n; ++j) {
+      AI(i, j) = r == 0 ? interval(A(i, j)) : interval(A(i, j) - r, A(i, j) + r);  // A -+ r rounded: contains A
+      mpq_set_d(Aq(i, j), A(i, j));
+    }
+  }
+}
+
 // Random systems with exact (thin) data: the exact rational solution is enclosed.
 // n from n_min to n_max: up to 12 the fixed-capacity path (small_interval_solve_into), above it
 // the borrowed one (residual_solve_into, its row sums from residual_row_sums_into).
@@ -240,19 +258,11 @@ BOOST_AUTO_TEST_CASE(large_systems_enclose_the_exact_solution) {
     Eigen::MatrixXd A = G.transpose() * G;
     A += n * Eigen::MatrixXd::Identity(n, n);
     A = (A + A.transpose()) / 2;
-    matrix_t<interval> AI(n, n);
-    vector_t<interval> bI(n), x(n);
+    matrix_t<interval> AI;
+    vector_t<interval> bI, x(n);
     qmatrix Aq(n);
     qvector bq(n), xq(n);
-    for (int i = 0; i < n; ++i) {
-      const double bi = random_entry();
-      bI(i) = interval(bi);
-      mpq_set_d(bq[i], bi);
-      for (int j = 0; j < n; ++j) {
-        AI(i, j) = interval(A(i, j));
-        mpq_set_d(Aq(i, j), A(i, j));
-      }
-    }
+    random_rhs_system(A, 0.0, AI, bI, Aq, bq);
     BOOST_REQUIRE(exact_solve(Aq, bq, xq));
     BOOST_REQUIRE(detail::residual_solve_into<void>(AI, bI, x));
     for (int i = 0; i < n; ++i) BOOST_REQUIRE(encloses(x(i), xq[i]));
@@ -612,19 +622,11 @@ BOOST_AUTO_TEST_CASE(interval_residual_bound_is_as_tight_as_krawczyk) {
     const double r = c % 2 ? 0.0 : 1e-9;
     Eigen::MatrixXd A0 = random_matrix(n);
     A0 += n * Eigen::MatrixXd::Identity(n, n);
-    matrix_t<interval> AI(n, n);
-    vector_t<interval> bI(n);
+    matrix_t<interval> AI;
+    vector_t<interval> bI;
     qmatrix Aq(n);
     qvector bq(n), xq(n);
-    for (int i = 0; i < n; ++i) {
-      const double bi = random_entry();
-      bI(i) = interval(bi);
-      mpq_set_d(bq[i], bi);
-      for (int j = 0; j < n; ++j) {
-        AI(i, j) = r == 0 ? interval(A0(i, j)) : interval(A0(i, j) - r, A0(i, j) + r);  // A0 -+ r rounded: contains A0
-        mpq_set_d(Aq(i, j), A0(i, j));
-      }
-    }
+    random_rhs_system(A0, r, AI, bI, Aq, bq);
     BOOST_REQUIRE(exact_solve(Aq, bq, xq));
     const vector_t<interval> x = solve(AI, bI), xk = detail::residual_or_krawczyk_solve(AI, bI, false);
     double norm = 0;
