@@ -19,6 +19,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "counting_malloc.hpp"
+#include "built_scalars.hpp"
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR (CMakeLists.txt)
 #include "appell/derivatives/jet.hpp"  // detail::identical
 #include "appell/models/system.hpp"
@@ -186,7 +187,13 @@ BOOST_AUTO_TEST_CASE(kinematics_and_constraints_in_float128) { check_scalar<floa
 BOOST_AUTO_TEST_CASE(kinematics_and_constraints_in_interval) { check_scalar<interval>("interval"); }
 
 BOOST_AUTO_TEST_CASE(evaluations_in_double) { check_compute<double>("double"); }
-BOOST_AUTO_TEST_CASE(evaluations_in_long_double) { check_compute<long double>("long-double"); }
-BOOST_AUTO_TEST_CASE(evaluations_in_dd) { check_compute<dd>("dd"); }
-BOOST_AUTO_TEST_CASE(evaluations_in_float128) { check_compute<float128>("float128"); }
+BOOST_AUTO_TEST_CASE(evaluations_in_long_double, *test::needs_scalars({"long-double"})) {
+  test::if_built<long double>([](auto t) { check_compute<typename decltype(t)::type>("long-double"); });
+}
+BOOST_AUTO_TEST_CASE(evaluations_in_dd, *test::needs_scalars({"dd"})) {
+  test::if_built<dd>([](auto t) { check_compute<typename decltype(t)::type>("dd"); });
+}
+BOOST_AUTO_TEST_CASE(evaluations_in_float128, *test::needs_scalars({"float128"})) {
+  test::if_built<float128>([](auto t) { check_compute<typename decltype(t)::type>("float128"); });
+}
 BOOST_AUTO_TEST_CASE(evaluations_in_interval) { check_compute<interval>("interval"); }

@@ -16,6 +16,7 @@
 #define BOOST_TEST_MODULE extremes
 #include <boost/test/unit_test.hpp>
 
+#include "built_scalars.hpp"
 #include "appell/studies/accuracy.hpp"
 #include "appell/studies/extreme_sweeps.hpp"
 #include "appell/io/scene.hpp"
@@ -100,7 +101,8 @@ void check(const scene_input& scene, const std::vector<mpfr_value>& ref, tally& 
 
 }  // namespace
 
-BOOST_AUTO_TEST_CASE(every_sweep_point_is_contained_or_within_its_bound_and_refusals_are_bounded) {
+BOOST_AUTO_TEST_CASE(every_sweep_point_is_contained_or_within_its_bound_and_refusals_are_bounded,
+                     *test::needs_scalars({"double", "long-double", "dd", "float128", "mpfr", "interval", "mpfi", "arb"})) {
   tally total;
   long points = 0;
   for (const auto& w : studies::extreme_sweeps()) {

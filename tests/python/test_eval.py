@@ -80,6 +80,8 @@ def test_point_scalars_agree_with_the_truth_to_their_precision():
         scale = max(abs(t) for t in truth)  # mpf at 120 digits: exact enough for 200 bits
         for scalar, bits, eps in (("double", None, 2.0**-53), ("long-double", None, 2.0**-64), ("dd", None, 2.0**-104),
                                   ("float128", None, 2.0**-113), ("mpfr", 200, 2.0**-200)):
+            if scalar not in appell.built_scalars():  # scripts/test.sh's quick tier left it out
+                continue
             ev = s.eval(scalar, bits)
             assert not ev.rigorous
             for k in range(3):
