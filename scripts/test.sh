@@ -4,8 +4,10 @@
 # The quick tier (the default) compiles the library in double, interval and mpfi: the point
 # scalar every command defaults to and the two rigorous scalars every build has (CMake's
 # APPELL_SCALARS); a test case that needs another scalar says so and is skipped
-# (tests/built_scalars.hpp), and `--scalar` naming one is exit 2 saying how to build it.  --full
-# compiles all eight scalars and runs every case (what CI runs: .ci/run).  The benchmarks are
+# (tests/built_scalars.hpp), and `--scalar` naming one is exit 2 saying how to build it.  It
+# compiles at -O2 (the same results; 2 minutes less of a cold build, the suites as fast:
+# docs/architecture.md, "Build time").  --full compiles all eight scalars at -O3, what a user's
+# Release build has, and runs every case (what CI runs: .ci/run).  The benchmarks are
 # left out (docs/benchmarks.md: -DAPPELL_BUILD_BENCH=ON builds them); the one test bench/ holds
 # (chain_against_simbody) is built with the tests.  The tier's choices are passed explicitly: a
 # build directory configured before (scripts/run.sh's first build: the evaluation alone, -O2)
@@ -13,14 +15,16 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scalars=double,interval,mpfi
+optimization=-O2
 if [[ ${1:-} == --full ]]; then
   scalars=all
+  optimization=-O3
   shift
 fi
 scripts/build.sh -DAPPELL_BUILD_TESTS=ON -DAPPELL_BUILD_BENCH=OFF "-DAPPELL_SCALARS=$scalars" -DAPPELL_EVAL_ONLY=OFF \
-  -DAPPELL_RELEASE_OPTIMIZATION=-O3
+  "-DAPPELL_RELEASE_OPTIMIZATION=$optimization"
 cd build
 if [[ $scalars != all ]]; then
-  echo "test.sh: the quick tier (the library in $scalars); scripts/test.sh --full runs every scalar" >&2
+  echo "test.sh: the quick tier (the library in $scalars, $optimization); scripts/test.sh --full runs every scalar" >&2
 fi
 ctest --output-on-failure -j"$(nproc)" "$@"
