@@ -8,7 +8,7 @@
 # to build them), in interval and mpfi, which every build has, and the scalar `--scalar` names
 # (APPELL_SCALARS, CMakeLists.txt), at -O2 (the same results, bit for bit; an evaluation takes
 # milliseconds either way; docs/architecture.md, "Build time").  A build directory configured before keeps its choices and
-# gains the scalar asked for; one with everything (scripts/test.sh's) stays so.  Only the
+# gains the scalar asked for; one with everything (scripts/test.sh --full's) stays so.  Only the
 # `appell` command is built.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -32,7 +32,12 @@ if [[ $scalars != all ]]; then
   if [[ -n $asked ]] && grep -qx -- "$asked" <<<"$known" && ! grep -qx -- "$asked" <<<"$(tr ',;' '\n\n' <<<"$scalars")"; then
     scalars="$scalars,$asked"
   fi
-  flags=(-DAPPELL_BUILD_TESTS=OFF -DAPPELL_BUILD_BENCH=OFF "-DAPPELL_SCALARS=$scalars")
+  flags=(-DAPPELL_BUILD_BENCH=OFF "-DAPPELL_SCALARS=$scalars")
+  # The tests need double, interval and mpfi (scripts/test.sh's quick tier): a list without them
+  # turns them off; one with them (a quick tier's build) keeps its tests as they were.
+  for needed in double interval mpfi; do
+    if ! grep -qx -- "$needed" <<<"$(tr ',;' '\n\n' <<<"$scalars")"; then flags+=(-DAPPELL_BUILD_TESTS=OFF); break; fi
+  done
 fi
 scripts/deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${first[@]}" "${flags[@]}" >/dev/null

@@ -25,6 +25,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <array>
 #include <boost/math/constants/constants.hpp>
@@ -1063,50 +1064,60 @@ BOOST_AUTO_TEST_CASE(a_logged_torque_step_is_certified_as_run) {
   BOOST_TEST(from >= truth_t("0.05"), "fails from " << from);
   BOOST_TEST(to <= truth_t("0.0501"), "fails by " << to);
   BOOST_TEST(to - from <= truth_t("1e-7"));
-  // Where the friction ratio |F_x| / N crosses 0.05 on the ramp, by simulates in double: the
-  // ratio at the end of a simulate to t is below 0.05 at the ramp's start and above it at its end,
-  // and bisection on t brackets the crossing to 1e-10 (each run ends on its own t; the ratio rises
-  // by about 0.07 over the ramp's 1e-4 s).  The located failure must contain the bracket, to 1e-9.
-  // (--locate's runs start from states along the motion, whose tables must be read at the state's
-  // own t, not at the scene's start: a defect found here put the failure at the ramp's end,
-  // 0.0500999.)  Rows every 1e-6 s found the crossing before, at 50,100 steps of the integrator,
-  // which cuts a step at every row: 190 s of the suite's 330; the bisection takes 40 runs of a few
-  // steps each.
+  // Where the friction ratio |F_x| / N crosses 0.05 on the ramp, by simulates in double.  Before
+  // the ramp (rows every 1e-3 s to 0.05) the ratio stays below 0.05; at the end of a simulate to
+  // t it is below 0.05 at the ramp's start and above it at its end, and bisection on t brackets
+  // the crossing to 1e-10 s (each run ends on its own t; the ratio rises by about 0.07 over the
+  // ramp's 1e-4 s): 20 halvings, 22 runs of a few steps each.  The located failure must hold the
+  // bracket, to 1e-9 s.  (--locate's runs start from states along the motion, whose tables must
+  // be read at the state's own t, not at the scene's start: a defect found here put the failure at
+  // the ramp's end, 0.0500999.)  Rows every 1e-6 s found the crossing before, at 50,100 steps of
+  // the integrator, which cuts a step at every row: 190 s of the suite's 330.
   {
-    struct last_ratio final : motion::row_sink {
-      std::size_t fx = 0, n = 0;
-      double ratio = -1;
+    struct ratio_rows final : motion::row_sink {
+      std::size_t t = 0, fx = 0, n = 0;
+      double last_t = -1, ratio = -1, largest = -1;
       void columns(const std::string& table, const std::vector<std::string>& names) override {
         if (table != "trajectory") return;
         auto col = [&](const std::string& x) { return static_cast<std::size_t>(std::find(names.begin(), names.end(), x) - names.begin()); };
-        fx = col("sole_friction_force_x"), n = col("sole_normal_force");
+        t = col("t"), fx = col("sole_friction_force_x"), n = col("sole_normal_force");
+        BOOST_TEST_REQUIRE(t < names.size());
         BOOST_TEST_REQUIRE(fx < names.size());
         BOOST_TEST_REQUIRE(n < names.size());
       }
       void row(const std::string& table, const std::vector<std::string>& c) override {
-        if (table == "trajectory") ratio = std::fabs(std::stod(c[fx])) / std::stod(c[n]);
+        if (table != "trajectory") return;
+        last_t = std::stod(c[t]);
+        ratio = std::fabs(std::stod(c[fx])) / std::stod(c[n]);
+        largest = std::max(largest, ratio);
       }
     };
     const scene_input logged = read_scene_file(scene);
-    auto ratio_at = [&](double t) {
-      last_ratio sim;
+    // a simulate in double to t with rows every `every` (t itself where empty): complete, its last
+    // row at t, its ratios finite
+    auto simulated = [&](double t, const std::string& every) {
+      ratio_rows sim;
       motion::settings ss;
       char text[32];
       std::snprintf(text, sizeof text, "%.17g", t);  // the double itself
       ss.t_end = text;
-      ss.every = ss.t_end;
+      ss.every = every.empty() ? ss.t_end : every;
       ss.scalar = "double";
-      (void)motion::simulate(logged, ss, sim);
-      return sim.ratio;
+      const motion::simulate_report r = motion::simulate(logged, ss, sim);
+      BOOST_TEST_REQUIRE(r.failure.empty(), "simulate to " << text << ": " << r.failure);
+      BOOST_TEST_REQUIRE(sim.last_t == t, "simulate to " << text << " ended its rows at " << sim.last_t);
+      BOOST_TEST_REQUIRE((std::isfinite(sim.largest) && sim.ratio >= 0), "simulate to " << text);
+      return sim;
     };
+    BOOST_TEST(simulated(0.05, "0.001").largest < 0.05, "the ratio reaches 0.05 before the ramp");
     double lo = 0.05, hi = 0.0501;
-    BOOST_TEST_REQUIRE(ratio_at(lo) < 0.05);
-    BOOST_TEST_REQUIRE(ratio_at(hi) > 0.05);
+    BOOST_TEST_REQUIRE(simulated(lo, "").ratio < 0.05);
+    BOOST_TEST_REQUIRE(simulated(hi, "").ratio > 0.05);
     while (hi - lo > 1e-10) {
       const double mid = lo + (hi - lo) / 2;
-      (ratio_at(mid) > 0.05 ? hi : lo) = mid;
+      (simulated(mid, "").ratio > 0.05 ? hi : lo) = mid;
     }
-    BOOST_TEST((from <= truth_t(hi) + truth_t("1e-9") && truth_t(lo) - truth_t("1e-9") <= to),
+    BOOST_TEST((from <= truth_t(lo) + truth_t("1e-9") && truth_t(hi) - truth_t("1e-9") <= to),
                "located [" << from << ", " << to << "], the double simulates cross in [" << lo << ", " << hi << "]");
   }
   BOOST_TEST_MESSAGE("a logged torque step: the sole fails with mu = 0.05 in [" << from << ", " << to << "]");

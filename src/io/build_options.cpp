@@ -14,7 +14,7 @@ bool motion_built() {
 std::string left_out_message(const std::string& command) {
   return command +
          ": this build of appell evaluates scenes only (-DAPPELL_EVAL_ONLY=ON, scripts/run.sh's first build); "
-         "scripts/build.sh -DAPPELL_EVAL_ONLY=OFF -DAPPELL_SCALARS=all builds every command (scripts/test.sh does)";
+         "scripts/build.sh -DAPPELL_EVAL_ONLY=OFF -DAPPELL_SCALARS=all builds every command (scripts/test.sh --full does)";
 }
 
 }  // namespace appell

@@ -17,7 +17,7 @@ def python_blocks(path):
 @pytest.mark.parametrize("path", ["docs/python.md", "README.md"])
 def test_examples_run_as_printed(path, tmp_path, monkeypatch):
     missing = [x for x in ("long-double", "dd", "float128", "mpfr") if x not in appell.built_scalars()]
-    if missing:  # the examples run every scalar
+    if missing and path == "docs/python.md":  # its examples run every scalar (the README's: interval)
         pytest.skip(f"this build left out {', '.join(missing)} (scripts/test.sh --full builds every scalar)")
     blocks = python_blocks(path)
     assert blocks, f"{path} has no Python example"

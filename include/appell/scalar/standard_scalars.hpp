@@ -135,7 +135,7 @@ inline std::string built_scalar_names() {
 /// The message for a scalar this build left out: which ones it has, and how to get the others.
 inline std::string left_out_scalar_message(const std::string& option, const std::string& name) {
   return option + ": this build of appell left the scalar '" + name + "' out (it has " + built_scalar_names() +
-         "); build every scalar with scripts/build.sh -DAPPELL_SCALARS=all (scripts/test.sh does), or add it: "
+         "); build every scalar with scripts/build.sh -DAPPELL_SCALARS=all (scripts/test.sh --full does), or add it: "
          "scripts/run.sh SCENE --scalar " + name;
 }
 
