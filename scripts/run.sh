@@ -35,8 +35,9 @@ if [[ $scalars != all ]]; then
   flags=(-DAPPELL_BUILD_BENCH=OFF "-DAPPELL_SCALARS=$scalars")
   # The tests need double, interval and mpfi (scripts/test.sh's quick tier): a list without them
   # turns them off; one with them (a quick tier's build) keeps its tests as they were.
+  listed=$(tr ',;' '\n\n' <<<"$scalars")
   for needed in double interval mpfi; do
-    if ! grep -qx -- "$needed" <<<"$(tr ',;' '\n\n' <<<"$scalars")"; then flags+=(-DAPPELL_BUILD_TESTS=OFF); break; fi
+    if ! grep -qx -- "$needed" <<<"$listed"; then flags+=(-DAPPELL_BUILD_TESTS=OFF); break; fi
   done
 fi
 scripts/deps.sh

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <initializer_list>
 #include <string>
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
@@ -63,22 +64,23 @@ std::string euler(const std::string& inertia, const std::string& torque, const s
          ", \"state\": " + state + "}";
 }
 
-void expect_bad_input(const std::string& args, const std::string& must_mention) {
+void expect_bad_input(const std::string& args, std::initializer_list<std::string> must_mention) {
   const outcome o = run(args);
   BOOST_TEST(o.status == 2, args << ": exit " << o.status);
   BOOST_TEST(o.out.empty(), args << ": stdout not empty");
   BOOST_TEST(!o.err.empty());
   BOOST_TEST(std::count(o.err.begin(), o.err.end(), '\n') == 1, args << ": not one line: " << o.err);
-  BOOST_TEST(o.err.find(must_mention) != std::string::npos, args << ": '" << o.err << "' lacks '" << must_mention << "'");
+  for (const std::string& m : must_mention)
+    BOOST_TEST(o.err.find(m) != std::string::npos, args << ": '" << o.err << "' lacks '" << m << "'");
 }
+void expect_bad_input(const std::string& args, const std::string& must_mention) { expect_bad_input(args, {must_mention}); }
 
 /// Whether this build left `scalar` out (tests/built_scalars.hpp); if so, `appell ARGS` must
 /// refuse it as such: exit 2, one line naming the scalar and how to build it.  The caller then
 /// skips what the scalar would have run.
 bool left_out(const std::string& scalar, const std::string& args) {
   if (appell::test::built(scalar)) return false;
-  expect_bad_input(args, "'" + scalar + "'");
-  expect_bad_input(args, "-DAPPELL_SCALARS=all");
+  expect_bad_input(args, {"'" + scalar + "'", "-DAPPELL_SCALARS=all"});
   return true;
 }
 
@@ -88,8 +90,9 @@ BOOST_AUTO_TEST_CASE(every_scalar_evaluates_the_shipped_scene) {
   BOOST_TEST(appell::standard_scalar_infos().size() == 8u);
   for (const appell::scalar_info& info : appell::standard_scalar_infos()) {
     const std::string s = info.name;
-    if (left_out(s, "eval " + good_scene + " --scalar " + s)) continue;
-    const outcome o = run("eval " + good_scene + " --scalar " + s);
+    const std::string args = "eval " + good_scene + " --scalar " + s;
+    if (left_out(s, args)) continue;
+    const outcome o = run(args);
     BOOST_TEST(o.status == 0, s << ": " << o.err);
     BOOST_TEST(o.out.find("\"model\": \"euler_body\"") != std::string::npos);
     BOOST_TEST(o.out.find("\"scalar\": \"" + s + "\"") != std::string::npos);
@@ -106,8 +109,9 @@ BOOST_AUTO_TEST_CASE(bits_set_the_precision_of_mpfr_and_mpfi) {
   BOOST_TEST(o.out.find("\"bits\": 100, \"rigorous\"") != std::string::npos, o.out);  // exactly N bits
   for (const char* bits : {"53", "113", "200", "256", "257"}) {  // both exactly (appell's own backends)
     for (const char* scalar : {"mpfi", "mpfr"}) {
-      if (left_out(scalar, "eval " + good_scene + " --scalar " + scalar + " --bits " + bits)) continue;
-      const outcome r = run("eval " + good_scene + " --scalar " + scalar + " --bits " + bits);
+      const std::string args = "eval " + good_scene + " --scalar " + scalar + " --bits " + bits;
+      if (left_out(scalar, args)) continue;
+      const outcome r = run(args);
       BOOST_TEST(r.status == 0);
       BOOST_TEST(r.out.find("\"bits\": " + std::string(bits) + ", \"rigorous\"") != std::string::npos, r.out);
       BOOST_TEST(r.out.find("bits_requested") == std::string::npos, r.out);
@@ -121,8 +125,9 @@ BOOST_AUTO_TEST_CASE(bits_set_the_precision_of_mpfr_and_mpfi) {
   for (const char* scalar : {"mpfr", "mpfi"}) {
     const std::string dir = (work / ("bits_summary_" + std::string(scalar))).string();
     const std::string command = std::string(scalar) == "mpfr" ? "simulate" : "enclose";
-    if (left_out(scalar, command + " " + good_scene + " --scalar " + scalar + " --bits 113 --t-end 0.1 --quiet --out " + dir)) continue;
-    const outcome m = run(command + " " + good_scene + " --scalar " + scalar + " --bits 113 --t-end 0.1 --quiet --out " + dir);
+    const std::string args = command + " " + good_scene + " --scalar " + scalar + " --bits 113 --t-end 0.1 --quiet --out " + dir;
+    if (left_out(scalar, args)) continue;
+    const outcome m = run(args);
     BOOST_TEST_REQUIRE(m.status == 0, m.err);
     const appell::json_value summary = appell::parse_json(slurp(dir + "/summary.json"));
     const outcome e = run("eval " + good_scene + " --scalar " + scalar + " --bits 113");
@@ -180,8 +185,9 @@ const std::string good_top = "\"A\": \"0.08\", \"C\": \"0.02\", \"mass\": \"1.5\
 BOOST_AUTO_TEST_CASE(top_on_cone_in_every_scalar) {
   for (const char* file : {"top_on_cone.json", "top_on_cone_constant.json", "top_on_cone_steep.json"})
     for (const char* s : {"double", "long-double", "dd", "float128", "mpfr", "interval", "mpfi"}) {
-      if (left_out(s, std::string("eval " + APPELL_SOURCE_DIR + "/data/scenes/") + file + " --scalar " + s)) continue;
-      const outcome o = run(std::string("eval " + APPELL_SOURCE_DIR + "/data/scenes/") + file + " --scalar " + s);
+      const std::string args = std::string("eval " + APPELL_SOURCE_DIR + "/data/scenes/") + file + " --scalar " + s;
+      if (left_out(s, args)) continue;
+      const outcome o = run(args);
       BOOST_TEST(o.status == 0, file << " " << s << ": " << o.err);
       for (const char* key : {"theta_ddot", "phi_ddot", "psi_ddot", "\"H\"", "couple", "virtual_work_invariant",
                               "cotton_minus_lagrange"})
@@ -221,8 +227,9 @@ BOOST_AUTO_TEST_CASE(rolling_sphere_in_every_scalar) {
   for (const char* file : {"rolling_sphere_plane.json", "rolling_sphere_globe.json", "rolling_sphere_bowl.json",
                            "rolling_sphere_pipe.json", "rolling_sphere_tube.json"})
     for (const char* s : {"double", "long-double", "dd", "float128", "mpfr", "interval", "mpfi"}) {
-      if (left_out(s, std::string("eval " + APPELL_SOURCE_DIR + "/data/scenes/") + file + " --scalar " + s)) continue;
-      const outcome o = run(std::string("eval " + APPELL_SOURCE_DIR + "/data/scenes/") + file + " --scalar " + s);
+      const std::string args = std::string("eval " + APPELL_SOURCE_DIR + "/data/scenes/") + file + " --scalar " + s;
+      if (left_out(s, args)) continue;
+      const outcome o = run(args);
       BOOST_TEST(o.status == 0, file << " " << s << ": " << o.err);
       for (const char* key : {"center_ddot", "omega_dot", "contact_force", "normal_force", "tangential_force",
                               "pivot_couple", "friction_ratio", "virtual_work_invariant"})
@@ -301,8 +308,9 @@ BOOST_AUTO_TEST_CASE(bad_command_lines_exit_2_with_one_line) {
 BOOST_AUTO_TEST_CASE(linearize_the_bicycle_in_every_scalar) {
   const std::string bike = APPELL_SOURCE_DIR + "/data/scenes/system_whipple_bicycle.json";
   for (const char* scalar : {"double", "long-double", "dd", "float128", "mpfr", "interval", "mpfi"}) {
-    if (left_out(scalar, "linearize " + bike + " --scalar " + scalar)) continue;
-    const outcome o = run("linearize " + bike + " --scalar " + scalar);
+    const std::string args = "linearize " + bike + " --scalar " + scalar;
+    if (left_out(scalar, args)) continue;
+    const outcome o = run(args);
     BOOST_TEST_REQUIRE(o.status == 0, scalar << ": exit " << o.status << " " << o.err);
     BOOST_TEST(o.err.empty(), scalar << ": " << o.err);
     const appell::json_value doc = appell::parse_json(o.out);
@@ -360,14 +368,14 @@ BOOST_AUTO_TEST_CASE(inputs_beyond_the_limits_exit_2_and_overflow_exits_3) {
   }
   // x^0 = 1 in every scalar, 0^0 included (QD's npwr(0, 0) is NaN: appell::pown answers 1 first)
   const std::string zero_power = scene_file("zero_power", top(good_top, "(theta - 0.7)^0", "0.7"));
-  if (!left_out("dd", "eval " + zero_power + " --scalar dd")) {
-    const outcome dd = run("eval " + zero_power + " --scalar dd");
+  if (const std::string args = "eval " + zero_power + " --scalar dd"; !left_out("dd", args)) {
+    const outcome dd = run(args);
     BOOST_TEST(dd.status == 0, dd.err);
     BOOST_TEST(dd.err.empty(), dd.err);
   }
   BOOST_TEST(run("eval " + zero_power).status == 0);
-  if (!left_out("mpfr", "eval " + huge + " --scalar mpfr --bits 64")) {
-    const outcome wide = run("eval " + huge + " --scalar mpfr --bits 64");  // MPFR's exponent range holds it
+  if (const std::string args = "eval " + huge + " --scalar mpfr --bits 64"; !left_out("mpfr", args)) {
+    const outcome wide = run(args);  // MPFR's exponent range holds it
     BOOST_TEST(wide.status == 0, wide.err);
   }
 }
