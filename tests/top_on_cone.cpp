@@ -157,12 +157,18 @@ long check_all() {
 
 BOOST_AUTO_TEST_CASE(point_types_agree_with_the_532_bit_closed_form) {
   mp_precision_scope scope(256);
-  int point_types = 1;  // double, and each other one this build compiled
-  { const long n = check_all<double>(); BOOST_TEST_MESSAGE("double " << n << " values"); BOOST_TEST(n == 93 * 7); /* 3 shipped + 90 random scenes, 7 values each */ }
-  test::if_built<long double>([&]<class T>(std::type_identity<T>) { const long n = check_all<T>(); BOOST_TEST_MESSAGE("long double " << n << " values"); BOOST_TEST(n == 93 * 7); /* 3 shipped + 90 random scenes, 7 values each */ ++point_types; });
-  test::if_built<dd>([&]<class T>(std::type_identity<T>) { const long n = check_all<T>(); BOOST_TEST_MESSAGE("dd " << n << " values"); BOOST_TEST(n == 93 * 7); /* 3 shipped + 90 random scenes, 7 values each */ ++point_types; });
-  test::if_built<float128>([&]<class T>(std::type_identity<T>) { const long n = check_all<T>(); BOOST_TEST_MESSAGE("float128 " << n << " values"); BOOST_TEST(n == 93 * 7); /* 3 shipped + 90 random scenes, 7 values each */ ++point_types; });
-  test::if_built<mpfr>([&]<class T>(std::type_identity<T>) { const long n = check_all<T>(); BOOST_TEST_MESSAGE("mpfr 256 " << n << " values"); BOOST_TEST(n == 93 * 7); /* 3 shipped + 90 random scenes, 7 values each */ ++point_types; });
+  int point_types = 0;  // double, and each other one this build compiled
+  auto point = [&]<class T>(std::type_identity<T>, const char* label) {
+    const long n = check_all<T>();
+    BOOST_TEST_MESSAGE(label << " " << n << " values");
+    BOOST_TEST(n == 93 * 7);  // 3 shipped + 90 random scenes, 7 values each
+    ++point_types;
+  };
+  point(std::type_identity<double>{}, "double");
+  test::if_built<long double>([&](auto type) { point(type, "long double"); });
+  test::if_built<dd>([&](auto type) { point(type, "dd"); });
+  test::if_built<float128>([&](auto type) { point(type, "float128"); });
+  test::if_built<mpfr>([&](auto type) { point(type, "mpfr 256"); });
   BOOST_TEST(n_checks == point_types * 93 * 3);  // 5 point types (in a build of every scalar) x 93 scenes x 3 checks (eq. 4, H and theta'' Cotton - Lagrange)
   BOOST_TEST_MESSAGE("point-type checks (eq. 4, Cotton - Lagrange): largest |residual| " << worst_check
                                                                                           << " eps * scale (bound 256)");
