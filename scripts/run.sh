@@ -6,8 +6,9 @@
 # A first build (no ./build yet) compiles what this job needs: the evaluation alone
 # (APPELL_EVAL_ONLY: the motion and the linearization left out, their commands exit 2 saying how
 # to build them), in interval and mpfi, which every build has, and the scalar `--scalar` names
-# (APPELL_SCALARS, CMakeLists.txt), at -O2 (the same results, bit for bit; an evaluation takes
-# milliseconds either way; docs/architecture.md, "Build time").  A build directory configured before keeps its choices and
+# (APPELL_SCALARS, CMakeLists.txt), at -O1 (the same results, bit for bit; an evaluation takes
+# milliseconds either way; scripts/test.sh's quick tier then reuses these units;
+# docs/architecture.md, "Build time").  A build directory configured before keeps its choices and
 # gains the scalar asked for; one with everything (scripts/test.sh --full's) stays so.  Only the
 # `appell` command is built.
 set -euo pipefail
@@ -21,7 +22,7 @@ for ((i = 0; i + 1 < ${#args[@]}; i++)); do
 done
 known=$(sed -n 's/^  X(ctx, .*"\([a-z0-9-]*\)").*/\1/p' include/appell/scalar/standard_scalars.hpp)
 scalars="interval,mpfi"
-first=(-DAPPELL_EVAL_ONLY=ON -DAPPELL_RELEASE_OPTIMIZATION=-O2)
+first=(-DAPPELL_EVAL_ONLY=ON -DAPPELL_RELEASE_OPTIMIZATION=-O1)
 if [[ -f build/CMakeCache.txt ]]; then
   first=()
   scalars=$(sed -n 's/^APPELL_SCALARS:[A-Z]*=//p' build/CMakeCache.txt)
