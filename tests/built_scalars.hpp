@@ -31,6 +31,11 @@
 /// 1 where this build compiled the library in the scalar NAME (long double: long_double), else 0.
 #define APPELL_TEST_HAS(name) ((((APPELL_BUILT_SCALAR_MASK) >> APPELL_TEST_SCALAR_INDEX_##name) & 1u) != 0)
 
+/// 1 where this build compiled every standard scalar (scripts/test.sh --full, CI's build); the
+/// quick tier's three-scalar build is 0, and the suites that draw many random inputs draw fewer
+/// there (each says how many), the full tier keeping the statistics.
+#define APPELL_TEST_EVERY_SCALAR (((APPELL_BUILT_SCALAR_MASK) & 0xffu) == 0xffu)
+
 namespace appell::test {
 
 static_assert(standard_scalar_index<double> == APPELL_TEST_SCALAR_INDEX_double);
