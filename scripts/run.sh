@@ -45,7 +45,7 @@ scripts/deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${first[@]}" "${flags[@]}" >/dev/null
 # The compiler's output goes to a log (GCC 12 prints false-positive warnings from libstdc++), shown
 # when the build fails.
-echo "scripts/run.sh: building build/appell (a first build takes about 4 minutes on 2 cores; log: build/run-build.log)" >&2
+echo "scripts/run.sh: building build/appell (a first build takes about 3 minutes on 2 cores; log: build/run-build.log)" >&2
 if ! cmake --build build -j"$(nproc)" --target appell >build/run-build.log 2>&1; then
   tail -n 40 build/run-build.log >&2
   echo "scripts/run.sh: the build failed (the whole log: build/run-build.log)" >&2
