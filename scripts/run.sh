@@ -7,8 +7,7 @@
 # (APPELL_EVAL_ONLY: the motion and the linearization left out, their commands exit 2 saying how
 # to build them), in interval and mpfi, which every build has, and the scalar `--scalar` names
 # (APPELL_SCALARS, CMakeLists.txt), at -O1 (the same results, bit for bit; an evaluation takes
-# milliseconds either way; scripts/test.sh's quick tier then reuses these units;
-# docs/architecture.md, "Build time").  A build directory configured before keeps its choices and
+# milliseconds either way; docs/architecture.md, "Build time").  A build directory configured before keeps its choices and
 # gains the scalar asked for; one with everything (scripts/test.sh --full's) stays so.  Only the
 # `appell` command is built.
 set -euo pipefail

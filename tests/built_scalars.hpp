@@ -14,6 +14,7 @@
 
 #include <initializer_list>
 #include <string>
+#include <tuple>
 #include <type_traits>
 
 #include "appell/scalar/standard_scalars.hpp"
@@ -46,6 +47,8 @@ static_assert(standard_scalar_index<mpfr> == APPELL_TEST_SCALAR_INDEX_mpfr);
 static_assert(standard_scalar_index<interval> == APPELL_TEST_SCALAR_INDEX_interval);
 static_assert(standard_scalar_index<mpfi> == APPELL_TEST_SCALAR_INDEX_mpfi);
 static_assert(standard_scalar_index<arb> == APPELL_TEST_SCALAR_INDEX_arb);
+// APPELL_TEST_EVERY_SCALAR's 0xff: the eight scalars above (a ninth needs its bit there too)
+static_assert(std::tuple_size_v<per_standard_scalar<std::type_identity_t>> == 8);
 static_assert(APPELL_TEST_HAS(double) == scalar_built<double> && APPELL_TEST_HAS(long_double) == scalar_built<long double> &&
               APPELL_TEST_HAS(dd) == scalar_built<dd> && APPELL_TEST_HAS(float128) == scalar_built<float128> &&
               APPELL_TEST_HAS(mpfr) == scalar_built<mpfr> && APPELL_TEST_HAS(interval) == scalar_built<interval> &&

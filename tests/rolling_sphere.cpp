@@ -205,10 +205,10 @@ BOOST_AUTO_TEST_CASE(all_seven_scalars_agree_with_newton_euler_at_532_bits) {
   }
 }
 
-// The sanitized build (scripts/sanitize.sh) runs 1000 states per surface: it
-// looks for memory and undefined-behaviour errors, which do not depend on the
-// count; so does the quick tier (scripts/test.sh, three scalars: 26 s less of its
-// run); the full tier keeps 10,000 for the statistics.
+// A sanitized build (scripts/sanitize.sh; its default list leaves this suite out)
+// runs 1000 states per surface: it looks for memory and undefined-behaviour errors,
+// which do not depend on the count; so does the quick tier (scripts/test.sh, three
+// scalars: 24 s less of its run); the full tier keeps 10,000 for the statistics.
 #if defined(APPELL_SANITIZED) || !APPELL_TEST_EVERY_SCALAR
 constexpr int random_states = 1000;
 #else
