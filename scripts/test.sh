@@ -7,7 +7,8 @@
 # (tests/built_scalars.hpp), and `--scalar` naming one is exit 2 saying how to build it.  It
 # compiles at -O1 (the same results, bit for bit; a third less compile time than -O3; the suites
 # it runs take about as long: docs/architecture.md, "Build time") and leaves out the CTest entries
-# labelled long (the bicycle's two motions, the contacts' validity sweeps: minutes each).
+# labelled long (the bicycle's two motions and contacts_long, a minute or two each; the two
+# valgrind runs of the backends' suites; docs/testing.md, "Two tiers").
 # --full compiles all eight scalars at -O3, what a user's Release build has, and runs every case
 # and entry (what CI runs: .ci/run).  The benchmarks are left out (docs/benchmarks.md:
 # -DAPPELL_BUILD_BENCH=ON builds them); the one test bench/ holds (chain_against_simbody) is built
@@ -28,7 +29,7 @@ cd build
 if [[ $scalars != all ]]; then
   echo "test.sh: the quick tier (the library in $scalars, $optimization, the entries labelled long left out);" \
     "scripts/test.sh --full runs every scalar and every entry" >&2
-  ctest --output-on-failure -j"$(nproc)" -LE long "$@"
+  ctest --output-on-failure --no-tests=error -j"$(nproc)" -LE '^long$' "$@"
 else
-  ctest --output-on-failure -j"$(nproc)" "$@"
+  ctest --output-on-failure --no-tests=error -j"$(nproc)" "$@"
 fi
