@@ -844,24 +844,31 @@ BOOST_AUTO_TEST_CASE(validity_of_the_built_in_sphere_gives_the_same_pieces_on_on
   }
 }
 
+namespace {
+/// The built-in sphere's loop (rolling_sphere_bowl_contact.json, the loop above as the built-in
+/// model: the same truth) without mu, enclosed with `args`: the lift-off located within `width`
+/// around its closed form's t*.
+void builtin_lift_off_located(const std::string& args, const std::string& name, const char* width) {
+  const loop_truth L;
+  const truth_t t_star = L.time_to(L.lift_off());
+  const run_result r = enclose(replaced(scene_text("rolling_sphere_bowl_contact.json"), "{\"mu\": \"0.5\"}", "{}"),
+                               args + " --until-contact-fails");
+  BOOST_TEST_REQUIRE(r.status == 0, r.out);
+  const nlohmann::json& c = r.summary["contacts"]["surface"];
+  BOOST_TEST_REQUIRE(c["verdict"] == "fails", r.out);
+  const truth_t from(c["first_failure"]["from"].get<std::string>()), to(c["first_failure"]["to"].get<std::string>());
+  BOOST_TEST(from <= t_star);
+  BOOST_TEST(t_star <= to);
+  BOOST_TEST(to - from <= truth_t(width), name << ": located to " << (to - from) << ": " << r.out);
+  BOOST_TEST_MESSAGE(name << ": lift-off at t* = " << t_star << ", located in [" << from << ", " << to << "]");
+}
+}  // namespace
+
 BOOST_AUTO_TEST_CASE(the_built_in_sphere_looping_in_a_bowl_loses_its_contact_when_the_closed_form_says) {
   // rolling_sphere_bowl_contact.json is the loop above as the built-in model: the same truth.
   const loop_truth L;
   const std::string text = scene_text("rolling_sphere_bowl_contact.json");
-  // The lift-off (no mu) enclosed with `args`: the first failure located within `width` around t*.
-  auto lift_off_located = [&](const std::string& args, const std::string& name, const char* width) {
-    const truth_t t_star = L.time_to(L.lift_off());
-    const run_result r = enclose(replaced(text, "{\"mu\": \"0.5\"}", "{}"), args + " --until-contact-fails");
-    BOOST_TEST_REQUIRE(r.status == 0, r.out);
-    const nlohmann::json& c = r.summary["contacts"]["surface"];
-    BOOST_TEST_REQUIRE(c["verdict"] == "fails", r.out);
-    const truth_t from(c["first_failure"]["from"].get<std::string>()), to(c["first_failure"]["to"].get<std::string>());
-    BOOST_TEST(from <= t_star);
-    BOOST_TEST(t_star <= to);
-    BOOST_TEST(to - from <= truth_t(width), name << ": located to " << (to - from) << ": " << r.out);
-    BOOST_TEST_MESSAGE(name << ": lift-off at t* = " << t_star << ", located in [" << from << ", " << to << "]");
-  };
-  lift_off_located("--t-end 0.8 --locate 1e-6", "builtin_lift_off", "1e-6");
+  builtin_lift_off_located("--t-end 0.8 --locate 1e-6", "builtin_lift_off", "1e-6");
   {
     const truth_t t_slip = L.time_to(L.slip(truth_t("0.5")));
     const run_result r = enclose(text, "--t-end 0.5 --locate 1e-6");
@@ -884,18 +891,7 @@ BOOST_AUTO_TEST_CASE(the_built_in_sphere_looping_in_a_bowl_loses_its_contact_whe
 // minute: labelled long (the CTest entry contacts_long; the quick tier leaves it to --full).
 BOOST_AUTO_TEST_CASE(the_built_in_sphere_s_lift_off_is_located_to_1e_15_in_mpfi_at_128_bits,
                      *boost::unit_test::label("long")) {
-  const loop_truth L;
-  const truth_t t_star = L.time_to(L.lift_off());
-  const run_result r = enclose(replaced(scene_text("rolling_sphere_bowl_contact.json"), "{\"mu\": \"0.5\"}", "{}"),
-                               "--scalar mpfi --bits 128 --t-end 0.8 --locate 1e-15 --until-contact-fails");
-  BOOST_TEST_REQUIRE(r.status == 0, r.out);
-  const nlohmann::json& c = r.summary["contacts"]["surface"];
-  BOOST_TEST_REQUIRE(c["verdict"] == "fails", r.out);
-  const truth_t from(c["first_failure"]["from"].get<std::string>()), to(c["first_failure"]["to"].get<std::string>());
-  BOOST_TEST(from <= t_star);
-  BOOST_TEST(t_star <= to);
-  BOOST_TEST(to - from <= truth_t("1e-15"), "located to " << (to - from) << ": " << r.out);
-  BOOST_TEST_MESSAGE("builtin_lift_off_128: lift-off at t* = " << t_star << ", located in [" << from << ", " << to << "]");
+  builtin_lift_off_located("--scalar mpfi --bits 128 --t-end 0.8 --locate 1e-15", "builtin_lift_off_128", "1e-15");
 }
 
 BOOST_AUTO_TEST_CASE(a_sphere_on_an_accelerating_belt_follows_at_two_sevenths) {
