@@ -26,10 +26,10 @@ fi
 scripts/build.sh -DAPPELL_BUILD_TESTS=ON -DAPPELL_BUILD_BENCH=OFF "-DAPPELL_SCALARS=$scalars" -DAPPELL_EVAL_ONLY=OFF \
   "-DAPPELL_RELEASE_OPTIMIZATION=$optimization"
 cd build
+left_out=()
 if [[ $scalars != all ]]; then
   echo "test.sh: the quick tier (the library in $scalars, $optimization, the entries labelled long left out);" \
     "scripts/test.sh --full runs every scalar and every entry" >&2
-  ctest --output-on-failure --no-tests=error -j"$(nproc)" -LE '^long$' "$@"
-else
-  ctest --output-on-failure --no-tests=error -j"$(nproc)" "$@"
+  left_out=(-LE '^long$')
 fi
+ctest --output-on-failure --no-tests=error -j"$(nproc)" "${left_out[@]}" "$@"
