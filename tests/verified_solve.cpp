@@ -589,26 +589,142 @@ scaled_run scaled_mpfi_systems(int count, int max_shift, bool thick) {
 }
 }  // namespace
 
-BOOST_AUTO_TEST_CASE(mpfi_residual_path_encloses_at_every_scale_and_precision) {
+namespace {
+// systems(count, max_shift, thick) at 64 to 1024 bits, thin and thick, data within 2^+-400 (in
+// double's range: the residual path must certify every system alone) and within 2^+-1500 (the
+// fallback too): every system certified, and on the residual path at most 16 ulps of the
+// solution's norm wider than `compared_with`.
+template <class Systems>
+void residual_path_at_every_scale_and_precision(const char* scalar, const char* compared_with, int in_range_count,
+                                                int beyond_count, Systems systems) {
   for (unsigned bits : {64u, 128u, 320u, 1024u}) {
     mp_precision_scope scope(bits);
     for (bool thick : {false, true}) {
-      const scaled_run in_range = scaled_mpfi_systems(60, 400, thick);
-      const scaled_run beyond = scaled_mpfi_systems(30, 1500, thick);
-      BOOST_TEST_MESSAGE("mpfi " << bits << " bits" << (thick ? ", thick" : ", thin") << ": " << in_range.certified
-                                 << " + " << beyond.certified << " certified; largest excess width over Krawczyk's box "
-                                 << std::max(in_range.worst_excess_ulps, beyond.worst_excess_ulps) << " ulps; residual path "
-                                 << in_range.residual_path << "/60 in range, " << beyond.residual_path
-                                 << "/30 beyond; " << in_range.point_systems + beyond.point_systems
-                                 << " exact point systems of the boxes enclosed");
-      // The residual path may be a little wider than Krawczyk's contracted box, by a few ulps at most
-      // (measured: up to 11 ulps on thin systems of up to 10 unknowns).
-      BOOST_TEST(in_range.certified == 60);
-      BOOST_TEST(beyond.certified == 30);
-      BOOST_TEST(in_range.residual_path == 60);  // in double's range the residual path certifies alone
+      const scaled_run in_range = systems(in_range_count, 400, thick);
+      const scaled_run beyond = systems(beyond_count, 1500, thick);
+      BOOST_TEST_MESSAGE(scalar << " " << bits << " bits" << (thick ? ", thick" : ", thin") << ": " << in_range.certified
+                                << " + " << beyond.certified << " certified; largest excess width over " << compared_with
+                                << ": " << in_range.worst_excess_ulps << " ulps in range, " << beyond.worst_excess_ulps
+                                << " beyond; residual path " << in_range.residual_path << "/" << in_range_count
+                                << " in range, " << beyond.residual_path << "/" << beyond_count << " beyond; "
+                                << in_range.point_systems + beyond.point_systems << " exact point systems of the boxes enclosed");
+      BOOST_TEST(in_range.certified == in_range_count);
+      BOOST_TEST(beyond.certified == beyond_count);
+      BOOST_TEST(in_range.residual_path == in_range_count);  // in double's range the residual path certifies alone
       BOOST_TEST(std::max(in_range.worst_excess_ulps, beyond.worst_excess_ulps) <= 16.0);
     }
   }
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(mpfi_residual_path_encloses_at_every_scale_and_precision) {
+  // The residual path may be a little wider than Krawczyk's contracted box, by a few ulps at most
+  // (measured: up to 11 ulps on thin systems of up to 10 unknowns).
+  residual_path_at_every_scale_and_precision("mpfi", "17/16 of Krawczyk's box", 60, 30,
+                                             [](int count, int max_shift, bool thick) {
+                                               return scaled_mpfi_systems(count, max_shift, thick);
+                                             });
+}
+
+namespace {
+// arb systems like scaled_mpfi_systems' (entries doubles scaled by 2^sa and 2^sb exactly; thick
+// ones of relative radius 2^-100; half the right-hand sides with bits beyond the working
+// precision), of 1 to n_max unknowns: arb's own residual path (x~ refined from the double LU,
+// the residual by arb_dot; linalg/solve.hpp) above and below small_system_max, and where A
+// leaves double's range the full-precision fallback.  The same system in mpfi gives the width to
+// compare with, on the systems the residual path certified: the largest excess of arb's width
+// over twice mpfi's, in ulps of ||x||_inf at the working precision (a ball rounds its midpoint
+// to nearest and bounds the error by a whole ulp in its radius where mpfi rounds each bound half
+// an ulp outward: about twice as wide at the same precision, docs/benchmarks.md, "Ball
+// arithmetic").
+scaled_run scaled_arb_systems(int count, int max_shift, int n_max, bool thick) {
+  scaled_run out;
+  for (int c = 0; c < count; ++c) {
+    const int n = std::uniform_int_distribution<int>(1, n_max)(rng);
+    const long sa = std::uniform_int_distribution<int>(-max_shift, max_shift)(rng);
+    const long sb = std::uniform_int_distribution<int>(-max_shift, max_shift)(rng);
+    Eigen::MatrixXd A = random_matrix(n);
+    A += n * Eigen::MatrixXd::Identity(n, n);
+    matrix_t<arb> AI(n, n);
+    vector_t<arb> bI(n);
+    matrix_t<mpfi> AM(n, n);
+    vector_t<mpfi> bM(n);
+    qmatrix Aq(n);
+    qvector bq(n), xq(n);
+    const mpfr eps_a = thick ? mpfr(std::ldexp(1.0, -100)) : mpfr(0);
+    const bool wide_b = c % 2 == 1;
+    const mpfr_prec_t bp = wide_b ? static_cast<mpfr_prec_t>(2 * mp_precision_bits() + 128)
+                                  : static_cast<mpfr_prec_t>(mp_precision_bits());
+    const long extra = static_cast<long>(mp_precision_bits()) + 30;
+    for (int i = 0; i < n; ++i) {
+      mpfr_value bi(bp), t(bp);
+      mpfr_set_d(bi, random_entry(), MPFR_RNDN);
+      if (wide_b) {
+        mpfr_mul_2si(t, bi, -extra, MPFR_RNDN);
+        mpfr_add(bi, bi, t, MPFR_RNDN);  // exact at bp bits
+      }
+      mpfr_mul_2si(bi, bi, sb, MPFR_RNDN);
+      mpfr_get_q(bq[i], bi);  // exact
+      bI(i) = scalar_traits<arb>::from_mpfr(bi);   // exactly: a ball of radius 0
+      bM(i) = scalar_traits<mpfi>::from_mpfr(bi);  // exactly at bp bits
+      for (int j = 0; j < n; ++j) {
+        const mpfr am = ldexp(mpfr(A(i, j)), static_cast<int>(sa));
+        const mpfr r = abs(am) * eps_a;  // exact: a power of two times am
+        AI(i, j) = ball_from_bounds(mpfr(am - r), mpfr(am + r));
+        AM(i, j) = mpfi_from_bounds(mpfr(am - r), mpfr(am + r));
+        mpq_set_d(Aq(i, j), A(i, j));
+        if (sa >= 0) mpq_mul_2exp(Aq(i, j), Aq(i, j), static_cast<mp_bitcnt_t>(sa));
+        else mpq_div_2exp(Aq(i, j), Aq(i, j), static_cast<mp_bitcnt_t>(-sa));
+      }
+    }
+    BOOST_REQUIRE(exact_solve(Aq, bq, xq));  // the midpoint system: its solution lies in every enclosure
+    const vector_t<arb> x = solve(AI, bI);   // diagonally dominant: must certify
+    const vector_t<mpfi> xm = solve(AM, bM);
+    const bool residual_path = detail::arb_residual_solve(AI, bI).has_value();
+    if (residual_path) ++out.residual_path;
+    if (thick) {  // vertex systems of the box [A] (as scaled_mpfi_systems)
+      std::uniform_int_distribution<int> coin(0, 1);
+      for (int sample = 0; sample < 4; ++sample) {
+        qmatrix As(n);
+        qvector bs(n), xs(n);
+        for (int i = 0; i < n; ++i) {
+          mpfr_value lo, hi;
+          scalar_traits<arb>::to_mpfr(bI(i), lo, hi);  // a point of b's ball (b is a point, or a
+          mpfr_get_q(bs[i], lo);                        // ball round it where it had more bits)
+          for (int j = 0; j < n; ++j) {
+            scalar_traits<arb>::to_mpfr(AI(i, j), lo, hi);
+            mpfr_get_q(As(i, j), coin(rng) == 0 ? lo.get() : hi.get());
+          }
+        }
+        BOOST_REQUIRE(exact_solve(As, bs, xs));
+        for (int i = 0; i < n; ++i) BOOST_REQUIRE_MESSAGE(encloses(x(i), xs[i]), "a point system of the box misses");
+        ++out.point_systems;
+      }
+    }
+    mpfr x_norm = 0;
+    for (int i = 0; i < n; ++i) {
+      BOOST_REQUIRE_MESSAGE(encloses(x(i), xq[i]), "n " << n << " sa " << sa << " sb " << sb << " misses");
+      const mpfr m = abs(mpfi_mid(xm(i)));
+      if (m > x_norm) x_norm = m;
+    }
+    const mpfr ulp = ldexp(x_norm, 1 - static_cast<int>(mp_precision_bits()));
+    if (residual_path)  // the widths of the path under test (the fallback's: docs/testing.md)
+      for (int i = 0; i < n; ++i) {
+        const mpfr excess = (ball_width(x(i)) - mpfi_width(xm(i)) * 2) / ulp;
+        out.worst_excess_ulps = std::max(out.worst_excess_ulps, static_cast<double>(excess));
+      }
+    ++out.certified;
+  }
+  return out;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(arb_residual_path_encloses_at_every_scale_and_precision) {
+  // up to 28 unknowns in double's range (both residual bounds; Atlas's mass matrix has 27), up to
+  // 10 beyond it
+  residual_path_at_every_scale_and_precision("arb", "twice mpfi's width", 24, 12, [](int count, int max_shift, bool thick) {
+    return scaled_arb_systems(count, max_shift, max_shift > 1000 ? 10 : 28, thick);
+  });
 }
 
 BOOST_AUTO_TEST_CASE(interval_residual_bound_is_as_tight_as_krawczyk) {

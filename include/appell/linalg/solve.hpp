@@ -354,7 +354,8 @@ bool small_interval_solve_into(const matrix_t<interval>& A, const vector_t<inter
 /// mpfi systems by the residual bound: x~ by mpfr LU, r = b - A x~ in mpfi,
 /// the rest in double.  nullopt where it does not apply (the caller falls back).
 std::optional<vector_t<mpfi>> mpfi_residual_solve(const matrix_t<mpfi>& A, const vector_t<mpfi>& b);
-/// The same for arb: r = b - A x~ in arb (Arb's submul), the rest as mpfi's.
+/// The same for arb, x~ from the double LU refined in mixed precision (no LU at the working
+/// precision), r = b - A x~ by Arb's arb_dot, the rest as mpfi's.
 std::optional<vector_t<arb>> arb_residual_solve(const matrix_t<arb>& A, const vector_t<arb>& b);
 
 template <class M>
