@@ -209,7 +209,7 @@ function(appell_generate_linearize_units out_var)
   set(sources "")
   # Included by a path relative to the generated unit, not an absolute one: the unit's text is
   # then the same in every clone whose build directory sits at the same place in its tree, and so
-  # is its ccache key (absolute paths here made these 21 units miss in every new clone).
+  # is its ccache key (an absolute path would make these units miss the cache in every new clone).
   file(RELATIVE_PATH linearize_header ${PROJECT_BINARY_DIR}/generated ${PROJECT_SOURCE_DIR}/src/models/system_linearize.hpp)
   set(indexes ${APPELL_BUILT_SCALAR_INDEXES})
   if(APPELL_EVAL_ONLY)  # linearize left out (CMakeLists.txt)

@@ -323,7 +323,7 @@ BOOST_AUTO_TEST_CASE(linearize_the_bicycle_in_every_scalar) {
   BOOST_TEST(text.status == 0);
   BOOST_TEST(text.out.find("weave-like): v = [4.29238253") != std::string::npos, text.out);
   BOOST_TEST(text.out.find("capsize-like): v = [6.02426201") != std::string::npos, text.out);
-  expect_bad_input("linearize " + good_scene, "linearize needs a system file");
+  expect_bad_input("linearize " + good_scene, "linearize needs a scene of a model that linearizes (system), not 'euler_body'");
   expect_bad_input("linearize " + std::string(APPELL_SOURCE_DIR + "/data/scenes/system_rolling_disk.json"),
                    "no \"linearize\" section");
   expect_bad_input("linearize " + bike + " --format xml", "--format");

@@ -56,12 +56,17 @@ J random_value(std::mt19937_64& rng, int depth) {
   }
 }
 
-/// j through json_line_writer (objects and their members; lists and numbers given as raw text).
+/// j through json_line_writer (objects and their members, lists and their items; numbers other
+/// than floating point given as raw text).
 void stream(json_line_writer& w, const J& j) {
   if (j.is_object()) {
     w.open_object();
     for (auto it = j.begin(); it != j.end(); ++it) stream(w.key(it.key()), it.value());
     w.close_object();
+  } else if (j.is_array()) {
+    w.open_array();
+    for (const J& item : j) stream(w, item);
+    w.close_array();
   } else if (j.is_string()) {
     w.string(j.get<std::string>());
   } else if (j.is_boolean()) {
@@ -124,4 +129,10 @@ BOOST_AUTO_TEST_CASE(a_misused_writer_says_so) {
   BOOST_CHECK_THROW(w.key("k"), std::logic_error);  // a key outside an object
   w.open_object();
   BOOST_CHECK_THROW(w.string("v"), std::logic_error);  // a member without its key
+  BOOST_CHECK_THROW(w.close_array(), std::logic_error);  // an object closed as a list
+  w.key("list").open_array();
+  BOOST_CHECK_THROW(w.key("k"), std::logic_error);  // a key inside a list
+  BOOST_CHECK_THROW(w.close_object(), std::logic_error);  // a list closed as an object
+  w.string("a").number(1.5).close_array().close_object();
+  BOOST_TEST(out == R"({"list":["a",1.5]})");
 }

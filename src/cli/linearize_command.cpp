@@ -1,7 +1,8 @@
+// `appell linearize` (linearize_command.hpp): reads the system file, runs the linearization in the
+// scalar asked for, writes the document (JSON or text).
 #include "linearize_command.hpp"
 
 #include "appell/io/scene.hpp"
-#include "appell/models/system_linearization.hpp"
 #include "commands.hpp"
 #include "flags.hpp"
 
@@ -9,9 +10,13 @@ namespace appell::cli {
 
 std::string linearize(const linearize_options& o) {
   const scene_input scene = read_scene_file(o.scene);
-  if (scene.model != "system")
-    throw input_error("model: linearize needs a system file (model \"system\"), not '" + scene.model + "'");
-  return linearization_text(scene.as<system_input>(), o.scalar, o.bits, o.format);
+  if (!scene.entry->linearize) {
+    std::string models;  // those that linearize
+    for (const model_entry* m : registered_models())
+      if (m->linearize) models += (models.empty() ? "" : ", ") + m->name;
+    throw input_error("model: linearize needs a scene of a model that linearizes (" + models + "), not '" + scene.model + "'");
+  }
+  return scene.entry->linearize(*scene.input, o.scalar, o.bits, o.format);
 }
 
 int linearize_command(int argc, char** argv, int first) {

@@ -7,7 +7,6 @@
 #include <optional>
 #include <string>
 
-#include "appell/models/system.hpp"
 
 namespace appell::cli {
 

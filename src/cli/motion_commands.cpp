@@ -1,3 +1,6 @@
+// `appell simulate`, `appell enclose` and `appell validity` (motion_commands.hpp): their flags
+// parsed into the library's settings (appell/motion/motion.hpp), the runs, their files written
+// through motion_output.hpp.
 #include "motion_commands.hpp"
 
 #include "commands.hpp"

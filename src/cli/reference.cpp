@@ -27,7 +27,6 @@
 #include "appell/errors.hpp"
 #include "appell/io/amplification.hpp"
 #include "appell/io/scene.hpp"
-#include "appell/io/urdf.hpp"
 #include "appell/io/files.hpp"
 #include "appell/io/json_text.hpp"
 #include "appell/studies/certify.hpp"
@@ -85,7 +84,6 @@ struct reference_run::impl {
   std::size_t first = 0;                        ///< 1 when the first column names the states
   std::vector<field_path> paths;                ///< per value column
   std::vector<std::vector<std::string>> values;  ///< per state, per value column (checked)
-  bool urdf = false;                             ///< a "urdf" scene (its file made absolute)
 };
 
 reference_run::reference_run(const reference_options& o) {
@@ -98,15 +96,10 @@ reference_run::reference_run(const reference_options& o) {
   r.scene_text = read_text_file(o.scene, json_limits::bytes, "the scene file");
   r.root = parse_json(r.scene_text);
   if (!o.project.empty()) set_project(r.root, o.project, o.scene);  // the scene's "project", set or replaced
-  // A URDF robot: its file found from the scene's directory wherever the states are computed
-  // (threads, MPI ranks), and with --inputs binary64 each state's scene is taken as the system
-  // file it reads as, so that the URDF's own numbers are rounded too (compute()).
-  const json_value* model = r.root.type == json_value::kind::object ? r.root.find("model") : nullptr;
-  r.urdf = model && model->text == "urdf";
-  if (r.urdf)
-    for (auto& m : r.root.members)
-      if (m.key == "file" && m.value.type == json_value::kind::string && std::filesystem::path(m.value.text).is_relative())
-        m.value.text = (std::filesystem::path(o.scene).parent_path() / m.value.text).string();
+  // A scene that reads other files (a URDF robot): found from the scene's directory wherever the
+  // states are computed (threads, MPI ranks).
+  if (const model_entry* model = scene_model(r.root); model && model->anchor_files)
+    model->anchor_files(r.root, std::filesystem::path(o.scene).parent_path().string());
   const scene_input base_scene = read_scene(r.root);  // the scene itself must be valid
   if (!o.trajectory.empty()) {
     r.states = trajectory_states(o, base_scene);

@@ -113,27 +113,48 @@ void json_line_writer::before_value() {
     after_key_ = false;
     return;
   }
-  if (!first_.empty()) throw std::logic_error("json_line_writer: a member without its key");
+  if (open_.empty()) return;
+  if (!open_.back().array) throw std::logic_error("json_line_writer: a member without its key");
+  if (!open_.back().first) out_ += ',';
+  open_.back().first = false;
 }
 
 json_line_writer& json_line_writer::open_object() {
   before_value();
   out_ += '{';
-  first_.push_back(true);
+  open_.push_back({false, true});
   return *this;
 }
 
+json_line_writer& json_line_writer::open_array() {
+  before_value();
+  out_ += '[';
+  open_.push_back({true, true});
+  return *this;
+}
+
+void json_line_writer::close(bool array) {
+  if (open_.empty() || open_.back().array != array || after_key_)
+    throw std::logic_error(array ? "json_line_writer: close_array without its list"
+                                 : "json_line_writer: close_object without its object");
+  open_.pop_back();
+  out_ += array ? ']' : '}';
+}
+
 json_line_writer& json_line_writer::close_object() {
-  if (first_.empty() || after_key_) throw std::logic_error("json_line_writer: close_object without its object");
-  first_.pop_back();
-  out_ += '}';
+  close(false);
+  return *this;
+}
+
+json_line_writer& json_line_writer::close_array() {
+  close(true);
   return *this;
 }
 
 json_line_writer& json_line_writer::key(std::string_view k) {
-  if (first_.empty() || after_key_) throw std::logic_error("json_line_writer: a key outside an object");
-  if (!first_.back()) out_ += ',';
-  first_.back() = false;
+  if (open_.empty() || open_.back().array || after_key_) throw std::logic_error("json_line_writer: a key outside an object");
+  if (!open_.back().first) out_ += ',';
+  open_.back().first = false;
   append_string(out_, k);
   out_ += ':';
   after_key_ = true;

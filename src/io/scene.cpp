@@ -59,6 +59,14 @@ const model_entry& find_model(const std::string& name) {
   throw input_error("model: unknown model '" + name + "' (known: " + known + ")");
 }
 
+const model_entry* scene_model(const json_value& scene) {
+  const json_value* model = scene.type == json_value::kind::object ? scene.find("model") : nullptr;
+  if (!model || model->type != json_value::kind::string) return nullptr;
+  for (const model_entry* m : registered_models())
+    if (m->name == model->text) return m;
+  return nullptr;
+}
+
 scene_input read_scene(const json_value& root) {
   object_reader scene(root, "");
   scene_input out;

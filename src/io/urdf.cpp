@@ -665,6 +665,13 @@ const model_entry& urdf_model_entry() {
     model_entry e = make_model_entry<system_model>();
     e.name = "urdf";
     e.read = &read_urdf_scene;
+    e.anchor_files = [](json_value& scene, const std::string& scene_directory) {
+      for (auto& m : scene.members)
+        if (m.key == "file" && m.value.type == json_value::kind::string && std::filesystem::path(m.value.text).is_relative())
+          m.value.text = (std::filesystem::path(scene_directory) / m.value.text).string();
+    };
+    e.read_as_text = &urdf_scene_system_text;
+    e.linearize = nullptr;  // a robot's scene names no steady motion (SCENES.md, "linearize")
     return e;
   }();
   return entry;

@@ -114,6 +114,11 @@ std::string report_in(const system_input& in, const std::string& format) {
 
 }  // namespace
 
+std::string system_model::linearize(const model_input& in, const std::string& scalar, std::optional<unsigned> bits,
+                                    const std::string& format) {
+  return linearization_text(dynamic_cast<const system_input&>(in), scalar, bits, format);
+}
+
 std::string linearization_text(const system_input& in, const std::string& scalar, std::optional<unsigned> bits,
                               const std::string& format) {
   if (format != "json" && format != "text") throw input_error("--format: expected json or text, got '" + format + "'");

@@ -1,3 +1,6 @@
+// validity's pieces (appell/motion/pieces.hpp): a piece's report as the message that crosses
+// processes, and the scheduler that hands the pieces to threads (and, under appell-mpi, to other
+// ranks) and collects their reports.
 #include "appell/motion/pieces.hpp"
 
 #include <algorithm>

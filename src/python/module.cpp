@@ -37,6 +37,7 @@
 #include "appell/errors.hpp"
 #include "appell/io/files.hpp"
 #include "appell/io/json.hpp"
+#include "appell/io/json_text.hpp"
 #include "appell/io/scene.hpp"
 #include "appell/io/scene_fields.hpp"
 #include "appell/motion/motion.hpp"
@@ -142,42 +143,23 @@ std::vector<std::pair<std::string, std::string>> fields_of(const py::dict& d) {
   return out;
 }
 
-/// The scene's JSON as text (numbers as written: exact decimals).
-void write_json(const json_value& v, std::string& out) {
-  auto quoted = [&](const std::string& s) {
-    out += '"';
-    for (const char c : s) {
-      if (c == '"' || c == '\\') out += '\\', out += c;
-      else if (static_cast<unsigned char>(c) < 0x20) {
-        char b[8];
-        std::snprintf(b, sizeof b, "\\u%04x", c);
-        out += b;
-      } else out += c;
-    }
-    out += '"';
-  };
+/// The scene's JSON through the one writer (io/json_text.hpp), its numbers as written: exact
+/// decimals, given as raw text.
+void write_json(const json_value& v, json_line_writer& w) {
   switch (v.type) {
-    case json_value::kind::null: out += "null"; break;
-    case json_value::kind::boolean: out += v.boolean ? "true" : "false"; break;
-    case json_value::kind::number: out += v.text; break;
-    case json_value::kind::string: quoted(v.text); break;
+    case json_value::kind::null: w.raw("null"); break;
+    case json_value::kind::boolean: w.boolean(v.boolean); break;
+    case json_value::kind::number: w.raw(v.text); break;
+    case json_value::kind::string: w.string(v.text); break;
     case json_value::kind::array:
-      out += '[';
-      for (std::size_t i = 0; i < v.items.size(); ++i) {
-        if (i) out += ", ";
-        write_json(v.items[i], out);
-      }
-      out += ']';
+      w.open_array();
+      for (const json_value& item : v.items) write_json(item, w);
+      w.close_array();
       break;
     case json_value::kind::object:
-      out += '{';
-      for (std::size_t i = 0; i < v.members.size(); ++i) {
-        if (i) out += ", ";
-        quoted(v.members[i].key);
-        out += ": ";
-        write_json(v.members[i].value, out);
-      }
-      out += '}';
+      w.open_object();
+      for (const auto& member : v.members) write_json(member.value, w.key(member.key));
+      w.close_object();
       break;
   }
 }
@@ -713,7 +695,8 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("model", [](const py_scene& s) { return s.input.model; })
       .def("json", [](const py_scene& s) {
         std::string out;
-        write_json(s.root, out);
+        json_line_writer w(out);
+        write_json(s.root, w);
         return out;
       })
       .def("with_fields",

@@ -12,7 +12,6 @@
 #include "appell/scalar/standard_scalars.hpp"
 #include "appell/io/amplification.hpp"
 #include "appell/io/scene_fields.hpp"
-#include "appell/io/urdf.hpp"
 #include "appell/scalar/x87_bounds.hpp"
 
 namespace appell {
@@ -183,9 +182,10 @@ state_certificate certify_state(json_value scene, const std::string& scalar, std
                                 bool binary64_inputs) {
   state_certificate out;
   try {
-    const json_value* model = scene.type == json_value::kind::object ? scene.find("model") : nullptr;
-    if (binary64_inputs && model && model->text == "urdf") {
-      scene = parse_json(urdf_scene_system_text(scene));
+    // A front end's scene (a URDF robot) as the scene it reads as, so that the other file's
+    // numbers are rounded too.
+    if (const model_entry* model = scene_model(scene); binary64_inputs && model && model->read_as_text) {
+      scene = parse_json(model->read_as_text(scene));
       to_binary64(scene, "");
     }
     out.state = certify(read_scene(scene), scalar, bits);

@@ -39,6 +39,8 @@ class json_line_writer {
   explicit json_line_writer(std::string& out) : out_(out) {}
   json_line_writer& open_object();
   json_line_writer& close_object();
+  json_line_writer& open_array();
+  json_line_writer& close_array();
   json_line_writer& key(std::string_view k);
   json_line_writer& string(std::string_view v);
   json_line_writer& boolean(bool v);
@@ -48,8 +50,13 @@ class json_line_writer {
 
  private:
   void before_value();
+  void close(bool array);
+  struct open_value {
+    bool array;  ///< a list (its items need no keys), or an object
+    bool first;  ///< no member or item written yet
+  };
   std::string& out_;
-  std::vector<bool> first_;  ///< per open object: no member written yet
+  std::vector<open_value> open_;  ///< the objects and lists open, outermost first
   bool after_key_ = false;
 };
 

@@ -80,7 +80,9 @@ per_standard_scalar<prepare_fn> prepare_table(type_list<Ts...>) {
 /// The registry entry of Model.
 template <class Model>
 model_entry make_model_entry() {
-  return {Model::name, &detail::read_model<Model>, detail::prepare_table<Model>(standard_scalars{}), Model::name};
+  model_entry e{Model::name, &detail::read_model<Model>, detail::prepare_table<Model>(standard_scalars{}), Model::name};
+  if constexpr (requires { &Model::linearize; }) e.linearize = &Model::linearize;
+  return e;
 }
 
 /// A scene of Model from inputs built in code (tests, proofs): the same as a

@@ -278,6 +278,18 @@ struct model_entry {
   per_standard_scalar<prepare_fn> prepare;
   /// The model module whose inputs the reader makes (its name; "system" for "urdf").
   std::string module;
+  /// A scene whose reader opens other files (a robot's description): makes the scene's relative
+  /// paths to them absolute, from `scene_directory`, so that the scene reads the same wherever it
+  /// is evaluated (`reference`'s threads and processes). nullptr: the scene names no file.
+  void (*anchor_files)(json_value& scene, const std::string& scene_directory) = nullptr;
+  /// A front end's scene as the text of the scene it reads as (the `system` file `appell convert`
+  /// prints), so that `reference --inputs binary64` rounds every number the model reads, the
+  /// other file's included. nullptr: the scene's own numbers are all there is.
+  std::string (*read_as_text)(const json_value& scene) = nullptr;
+  /// `appell linearize`'s report (json or text) for a model that linearizes its scenes (the
+  /// model's static `linearize`); nullptr: the model has no linearization.
+  std::string (*linearize)(const model_input& in, const std::string& scalar, std::optional<unsigned> bits,
+                           const std::string& format) = nullptr;
 };
 
 /// Every model compiled into the library, in the order of CMake's APPELL_MODELS, then those a
@@ -285,6 +297,9 @@ struct model_entry {
 const std::vector<const model_entry*>& registered_models();
 /// The model called `name`; input_error naming the field `model` otherwise.
 const model_entry& find_model(const std::string& name);
+/// The model a parsed scene names, or nullptr where its "model" is missing, not a string or not
+/// registered (read_scene then says which).
+const model_entry* scene_model(const json_value& scene);
 
 /// Validates a parsed scene; throws input_error naming the field.
 scene_input read_scene(const json_value& root);

@@ -196,6 +196,11 @@ inline constexpr std::array<state_component, 3> euler_body_state_table{{
     {"r", "omega[2]"},
 }};
 
+/// The result, as eval, reference and the motion's outputs name it.
+struct euler_body_result_names {
+  static constexpr const char* omega_dot = "omega_dot";  ///< (p', q', r')
+};
+
 }  // namespace appell
 
 namespace appell::ode {
@@ -219,7 +224,7 @@ struct euler_body_problem {
   template <class S>
   void results(const vector_t<S>& x, std::vector<named_values<S>>& out) const {
     const vector_t<S> w = rhs(x);
-    out.push_back({"omega_dot", {w(0), w(1), w(2)}});
+    out.push_back({euler_body_result_names::omega_dot, {w(0), w(1), w(2)}});
   }
   /// Without torque: the kinetic energy 1/2 omega.I omega and |I omega|^2 (Euler's two integrals).
   template <class S>
@@ -273,7 +278,7 @@ struct euler_body_model {
     const euler_body_result<T> r = euler_body_motion(m.body, m.omega);
     using W = evaluation_writer<T>;
     W out(e);
-    out.vector(W::results, "omega_dot", "", r.omega_dot);
+    out.vector(W::results, euler_body_result_names::omega_dot, "", r.omega_dot);
     out.scalar(W::checks, "virtual_work_invariant", "", r.virtual_work_residual);
     out.scalar(W::checks, "power_balance", "", r.power_residual);
     out.finish();

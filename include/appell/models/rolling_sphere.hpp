@@ -292,6 +292,18 @@ inline constexpr std::array<state_component, 6> rolling_sphere_state_table{{
     {"omega_z", "omega[2]"},
 }};
 
+/// The names eval, reference and the motion's outputs share, each written once.
+struct rolling_sphere_result_names {
+  static constexpr const char* center_ddot = "center_ddot";
+  static constexpr const char* omega_dot = "omega_dot";
+  static constexpr const char* contact_force = "contact_force";  ///< the surface's force on the sphere
+  static constexpr const char* normal_force = "normal_force";
+  static constexpr const char* pivot_couple = "pivot_couple";
+  // a judged contact's results, as every model names them (SCENES.md, "contacts")
+  static constexpr const char* surface_normal_force = "surface_normal_force";
+  static constexpr const char* surface_friction_force = "surface_friction_force";
+};
+
 }  // namespace appell
 
 namespace appell::ode {
@@ -384,15 +396,16 @@ struct rolling_sphere_problem {
   template <class S>
   void results(const vector_t<S>& x, std::vector<named_values<S>>& out) const {
     const rolling_sphere_result<S> r = motion(x, false);
-    out.push_back({"center_ddot", {r.center_ddot(0), r.center_ddot(1), r.center_ddot(2)}});
-    out.push_back({"omega_dot", {r.omega_dot(0), r.omega_dot(1), r.omega_dot(2)}});
-    out.push_back({"contact_force", {r.contact_force(0), r.contact_force(1), r.contact_force(2)}});
-    out.push_back({"normal_force", {r.normal_force}});
-    out.push_back({"pivot_couple", {r.pivot_couple}});
+    using name = rolling_sphere_result_names;
+    out.push_back({name::center_ddot, {r.center_ddot(0), r.center_ddot(1), r.center_ddot(2)}});
+    out.push_back({name::omega_dot, {r.omega_dot(0), r.omega_dot(1), r.omega_dot(2)}});
+    out.push_back({name::contact_force, {r.contact_force(0), r.contact_force(1), r.contact_force(2)}});
+    out.push_back({name::normal_force, {r.normal_force}});
+    out.push_back({name::pivot_couple, {r.pivot_couple}});
     if (contact) {  // the contact's forces as every model names them (judged by the commands)
       const vec3<S> f = r.friction_force();
-      out.push_back({"surface_normal_force", {r.normal_force}});
-      out.push_back({"surface_friction_force", {f(0), f(1), f(2)}});
+      out.push_back({name::surface_normal_force, {r.normal_force}});
+      out.push_back({name::surface_friction_force, {f(0), f(1), f(2)}});
     }
   }
   /// The energy M v^2 / 2 + A omega^2 / 2 - F . c (without a couple; the force is constant),
@@ -537,18 +550,19 @@ struct rolling_sphere_model {
                                 " cannot be told from 0");
     using W = evaluation_writer<T>;
     W out(e);
-    out.vector(W::results, "center_ddot", "", r.center_ddot);
-    out.vector(W::results, "omega_dot", "", r.omega_dot);
-    out.vector(W::results, "contact_force", "", r.contact_force);
-    out.scalar(W::results, "normal_force", "", r.normal_force);
+    using name = rolling_sphere_result_names;
+    out.vector(W::results, name::center_ddot, "", r.center_ddot);
+    out.vector(W::results, name::omega_dot, "", r.omega_dot);
+    out.vector(W::results, name::contact_force, "", r.contact_force);
+    out.scalar(W::results, name::normal_force, "", r.normal_force);
     out.scalar(W::results, "tangential_force", "", r.tangential_force());
-    out.scalar(W::results, "pivot_couple", "", r.pivot_couple);
+    out.scalar(W::results, name::pivot_couple, "", r.pivot_couple);
     if (!m.contact) {
       out.scalar(W::results, "friction_ratio", "", T(r.tangential_force() / r.normal_force));
     } else {  // the contact's results as every model names them (SCENES.md "contacts")
       const T tangential = r.tangential_force();
-      out.scalar(W::results, "surface_normal_force", "", r.normal_force);
-      out.vector(W::results, "surface_friction_force", "", r.friction_force());
+      out.scalar(W::results, name::surface_normal_force, "", r.normal_force);
+      out.vector(W::results, name::surface_friction_force, "", r.friction_force());
       out.scalar(W::results, "surface_tangential_force", "", tangential);
       out.contacts().push_back(judged_contact("surface", r.normal_force, tangential, m.mu));
     }

@@ -55,6 +55,9 @@ struct system_model {
   static constexpr const char* name = "system";
   using input = system_input;
   static input read(object_reader& scene);
+  /// `appell linearize`'s report (models/system_linearization.hpp's linearization_text).
+  static std::string linearize(const model_input& in, const std::string& scalar, std::optional<unsigned> bits,
+                               const std::string& format);
 
   template <Scalar T>
   struct prepared {

@@ -240,6 +240,16 @@ inline constexpr std::array<state_component, 4> top_on_cone_state_table{{
     {"phi_dot", "phi_dot"},
 }};
 
+/// The names eval, reference and the motion's outputs share, each written once.
+struct top_on_cone_result_names {
+  static constexpr const char* psi = "psi";  ///< the precession angle the cone imposes, psi = f(theta)
+  static constexpr const char* psi_dot = "psi_dot";
+  static constexpr const char* theta_ddot = "theta_ddot";
+  static constexpr const char* phi_ddot = "phi_ddot";
+  static constexpr const char* psi_ddot = "psi_ddot";
+  static constexpr const char* H = "H";  ///< Cotton's reaction: the couple's component about the line of nodes
+};
+
 }  // namespace appell
 
 namespace appell::ode {
@@ -273,12 +283,13 @@ struct top_on_cone_problem {
   template <class S>
   void results(const vector_t<S>& x, std::vector<named_values<S>>& out) const {
     const top_on_cone_result<S> r = top_on_cone_motion(top_in<S>(), cone, state(x), false);
-    out.push_back({"psi", {cone.psi(x(0))}});
-    out.push_back({"psi_dot", {cone.fprime(x(0)) * x(2)}});
-    out.push_back({"theta_ddot", {r.theta_ddot}});
-    out.push_back({"phi_ddot", {r.phi_ddot}});
-    out.push_back({"psi_ddot", {r.psi_ddot}});
-    out.push_back({"H", {r.H}});
+    using name = top_on_cone_result_names;
+    out.push_back({name::psi, {cone.psi(x(0))}});
+    out.push_back({name::psi_dot, {cone.fprime(x(0)) * x(2)}});
+    out.push_back({name::theta_ddot, {r.theta_ddot}});
+    out.push_back({name::phi_ddot, {r.phi_ddot}});
+    out.push_back({name::psi_ddot, {r.psi_ddot}});
+    out.push_back({name::H, {r.H}});
   }
   /// The energy: the cone is fixed and frictionless, so its couple does no work; the top's
   /// energy (symmetric_top_energy) at psi' = f'(theta) theta'.
@@ -334,16 +345,17 @@ struct top_on_cone_model {
     top_on_cone_motion_into(m.top, m.cone, s, true, *r_held);
     using W = evaluation_writer<T>;
     W out(e);
-    out.scalar(W::results, "theta_ddot", "", r.theta_ddot);
-    out.scalar(W::results, "phi_ddot", "", r.phi_ddot);
-    out.scalar(W::results, "psi_ddot", "", r.psi_ddot);
-    out.scalar(W::results, "H", "", r.H);
+    using name = top_on_cone_result_names;
+    out.scalar(W::results, name::theta_ddot, "", r.theta_ddot);
+    out.scalar(W::results, name::phi_ddot, "", r.phi_ddot);
+    out.scalar(W::results, name::psi_ddot, "", r.psi_ddot);
+    out.scalar(W::results, name::H, "", r.H);
     out.vector(W::results, "couple", "", r.couple);
     out.scalar(W::checks, "virtual_work_invariant", "", r.virtual_work_residual);
     out.scalar(W::checks, "cotton_minus_lagrange", "", T(r.H - r.lagrange_multiplier));
     out.scalar(W::checks, "theta_ddot_cotton_minus_lagrange", "", T(r.theta_ddot - r.theta_ddot_lagrange));
-    out.scalar(W::derived, "psi", "", s.psi);
-    out.scalar(W::derived, "psi_dot", "", T(m.cone.fprime(m.theta) * m.theta_dot));
+    out.scalar(W::derived, name::psi, "", s.psi);
+    out.scalar(W::derived, name::psi_dot, "", T(m.cone.fprime(m.theta) * m.theta_dot));
     out.finish();
   }
 };

@@ -224,10 +224,10 @@ std::optional<std::array<I, 2>> sole_of(const P& prob, const std::string& name) 
 /// A refinement's piece (contact_track's refine and locate) enclosed from x over h: run(h') with
 /// h' = h, or, where the piece's end may lie on either side of a table's breakpoint, h' = h (1 +
 /// 2^-30). A step of the run that ended on a breakpoint, cut in pieces from its rounded start by
-/// rounded lengths, ends its last piece on either side of it, a horizon enclose refuses (a
-/// defect until 2026-12-05: `validity` over a scene with a logged table stopped with an internal
-/// error); a hair past it, the piece steps to the breakpoint and beyond, and a verdict over more
-/// than the step holds over the step. When even that cannot run (the table ends at the
+/// rounded lengths, ends its last piece on either side of it, a horizon enclose refuses (so
+/// `validity` over a scene with a logged table would stop with an internal error; CHANGELOG.md);
+/// a hair past it, the piece steps to the breakpoint and beyond, and a verdict over more than the
+/// step holds over the step. When even that cannot run (the table ends at the
 /// breakpoint) the piece is not reached, and the step stays undecided.
 template <Scalar I, class P, class Run>
 bool run_refinement_piece(const P& prob, const vector_t<I>& x, double h, const Run& run) {

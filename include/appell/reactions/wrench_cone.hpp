@@ -1,5 +1,5 @@
 // appell/reactions/wrench_cone.hpp -- can a flat rectangular sole hold?  The contact wrench cone
-// of a rigid rectangular sole on a rigid support (issue 58), in closed form, over any scalar.
+// of a rigid rectangular sole on a rigid support, in closed form, over any scalar.
 //
 // The sole: a rectangle of half-lengths X (along its x axis) and Y (along y), its normal z
 // pointing out of the support into the body.  The support pushes at every point of the sole; the
