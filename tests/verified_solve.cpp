@@ -508,6 +508,31 @@ struct scaled_run {
   int residual_path = 0;  ///< systems the residual path certified by itself (no fallback)
   int point_systems = 0;  ///< exact point systems of thick boxes checked
 };
+// Four vertex systems of the box [A] drawn at random (each entry one of its bounds; b at its lower
+// bound: b itself where it is a point, a point of its box otherwise), solved exactly: each
+// solution must lie in x, the enclosure of the box's solutions. Returns the number checked.
+template <class I>
+int vertex_systems_enclosed(const matrix_t<I>& AI, const vector_t<I>& bI, const vector_t<I>& x) {
+  const int n = static_cast<int>(AI.rows());
+  std::uniform_int_distribution<int> coin(0, 1);
+  for (int sample = 0; sample < 4; ++sample) {
+    qmatrix As(n);
+    qvector bs(n), xs(n);
+    for (int i = 0; i < n; ++i) {
+      mpfr_value lo, hi;
+      scalar_traits<I>::to_mpfr(bI(i), lo, hi);
+      mpfr_get_q(bs[i], lo);
+      for (int j = 0; j < n; ++j) {
+        scalar_traits<I>::to_mpfr(AI(i, j), lo, hi);
+        mpfr_get_q(As(i, j), coin(rng) == 0 ? lo.get() : hi.get());
+      }
+    }
+    BOOST_REQUIRE(exact_solve(As, bs, xs));
+    for (int i = 0; i < n; ++i) BOOST_REQUIRE_MESSAGE(encloses(x(i), xs[i]), "a point system of the box misses");
+  }
+  return 4;
+}
+
 scaled_run scaled_mpfi_systems(int count, int max_shift, bool thick) {
   scaled_run out;
   for (int c = 0; c < count; ++c) {
@@ -553,23 +578,7 @@ scaled_run scaled_mpfi_systems(int count, int max_shift, bool thick) {
     const vector_t<mpfi> x = solve(AI, bI);  // diagonally dominant: must certify
     const vector_t<mpfi> xk = detail::residual_or_krawczyk_solve(AI, bI, false);
     if (detail::mpfi_residual_solve(AI, bI)) ++out.residual_path;
-    if (thick) {  // vertex systems of the box [A] (exact_solve has reduced Aq, bq: rebuilt from the boxes)
-      std::uniform_int_distribution<int> coin(0, 1);
-      for (int sample = 0; sample < 4; ++sample) {
-        qmatrix As(n);
-        qvector bs(n), xs(n);
-        for (int i = 0; i < n; ++i) {
-          mpfr_get_q(bs[i], &bI(i).backend().data()->left);  // b is thin
-          for (int j = 0; j < n; ++j) {
-            const mpfi_srcptr a = AI(i, j).backend().data();
-            mpfr_get_q(As(i, j), coin(rng) == 0 ? &a->left : &a->right);
-          }
-        }
-        BOOST_REQUIRE(exact_solve(As, bs, xs));
-        for (int i = 0; i < n; ++i) BOOST_REQUIRE_MESSAGE(encloses(x(i), xs[i]), "a point system of the box misses");
-        ++out.point_systems;
-      }
-    }
+    if (thick) out.point_systems += vertex_systems_enclosed(AI, bI, x);
     mpfr xk_norm = 0;
     for (int i = 0; i < n; ++i) {
       BOOST_REQUIRE_MESSAGE(encloses(x(i), xq[i]), "n " << n << " sa " << sa << " sb " << sb << " misses");
@@ -682,25 +691,7 @@ scaled_run scaled_arb_systems(int count, int max_shift, int n_max, bool thick) {
     const vector_t<mpfi> xm = solve(AM, bM);
     const bool residual_path = detail::arb_residual_solve(AI, bI).has_value();
     if (residual_path) ++out.residual_path;
-    if (thick) {  // vertex systems of the box [A] (as scaled_mpfi_systems)
-      std::uniform_int_distribution<int> coin(0, 1);
-      for (int sample = 0; sample < 4; ++sample) {
-        qmatrix As(n);
-        qvector bs(n), xs(n);
-        for (int i = 0; i < n; ++i) {
-          mpfr_value lo, hi;
-          scalar_traits<arb>::to_mpfr(bI(i), lo, hi);  // a point of b's ball (b is a point, or a
-          mpfr_get_q(bs[i], lo);                        // ball round it where it had more bits)
-          for (int j = 0; j < n; ++j) {
-            scalar_traits<arb>::to_mpfr(AI(i, j), lo, hi);
-            mpfr_get_q(As(i, j), coin(rng) == 0 ? lo.get() : hi.get());
-          }
-        }
-        BOOST_REQUIRE(exact_solve(As, bs, xs));
-        for (int i = 0; i < n; ++i) BOOST_REQUIRE_MESSAGE(encloses(x(i), xs[i]), "a point system of the box misses");
-        ++out.point_systems;
-      }
-    }
+    if (thick) out.point_systems += vertex_systems_enclosed(AI, bI, x);
     mpfr x_norm = 0;
     for (int i = 0; i < n; ++i) {
       BOOST_REQUIRE_MESSAGE(encloses(x(i), xq[i]), "n " << n << " sa " << sa << " sb " << sb << " misses");

@@ -50,21 +50,25 @@ std::string detail::component_name(const std::string& name, bool is_vector, std:
   return is_vector ? name + "[" + std::to_string(i) + "]" : name;
 }
 
+namespace {
+const model_entry* registered_model(const std::string& name) {
+  for (const model_entry* m : registered_models())
+    if (m->name == name) return m;
+  return nullptr;
+}
+}  // namespace
+
 const model_entry& find_model(const std::string& name) {
+  if (const model_entry* m = registered_model(name)) return *m;
   std::string known;
-  for (const model_entry* m : registered_models()) {
-    if (m->name == name) return *m;
-    known += (known.empty() ? "" : ", ") + m->name;
-  }
+  for (const model_entry* m : registered_models()) known += (known.empty() ? "" : ", ") + m->name;
   throw input_error("model: unknown model '" + name + "' (known: " + known + ")");
 }
 
 const model_entry* scene_model(const json_value& scene) {
   const json_value* model = scene.type == json_value::kind::object ? scene.find("model") : nullptr;
   if (!model || model->type != json_value::kind::string) return nullptr;
-  for (const model_entry* m : registered_models())
-    if (m->name == model->text) return m;
-  return nullptr;
+  return registered_model(model->text);
 }
 
 scene_input read_scene(const json_value& root) {
