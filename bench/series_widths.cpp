@@ -16,7 +16,7 @@
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR (CMakeLists.txt)
 #include "../tests/generated_chain.hpp"
 #include "appell/io/scene.hpp"
-#include "appell/models/system_motion.hpp"
+#include "appell/models/system.hpp"
 #include "appell/ode/taylor.hpp"
 
 using namespace appell;

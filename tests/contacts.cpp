@@ -45,7 +45,7 @@
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
 #include "built_scalars.hpp"
 #include "appell/models/rolling_sphere.hpp"
-#include "appell/models/system_motion.hpp"
+#include "appell/models/system.hpp"
 #include "appell/io/scene.hpp"
 #include "appell/io/urdf.hpp"
 #include "appell/motion/motion.hpp"

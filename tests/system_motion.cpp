@@ -1,5 +1,5 @@
 // The motion of systems of the user's own (issue 30): a `system` file moves
-// through the generic Gibbs-Appell/Cotton path (models/system_motion.hpp), as
+// through the generic Gibbs-Appell/Cotton path (models/system.hpp), as
 // simulate and enclose run it, against truth derived independently here:
 //   - the Chaplygin sleigh (a planar body on a knife edge at P, its centre G a
 //     distance a ahead of P along the blade): with u the speed of P along the
@@ -31,7 +31,7 @@
 #include <sstream>
 
 #include "program_paths.hpp"  // APPELL_SOURCE_DIR, APPELL_BINARY, ... (CMakeLists.txt)
-#include "appell/models/system_motion.hpp"
+#include "appell/models/system.hpp"
 #include "appell/io/scene.hpp"
 #include "appell/ode/enclose.hpp"
 #include "appell/ode/taylor.hpp"

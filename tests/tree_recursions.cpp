@@ -10,7 +10,7 @@
 //  * the robots shipped (dart-doc's WAM, KR5 and Atlas, appell's arm), at random states: the same;
 //  * deep chains (12 to 128 links) in balls at thin states, and over wide boxes (16 and 32 links,
 //    radii 1e-9 to 1e-5): every value at the boxes' corners and random points inside contained;
-//  * on Taylor series (jets: the motion's right-hand side, models/system_motion.hpp, runs the
+//  * on Taylor series (jets: the motion's right-hand side, models/system.hpp, runs the
 //    recursion on jets and slopes), every coefficient of M, b, Q by both paths agrees;
 //  * constrained trees (random trees with nonholonomic constraints in q, u and t; the block and
 //    arm on its sole and on a point; Atlas on both soles): Cotton's method on the recursion

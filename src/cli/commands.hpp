@@ -64,10 +64,12 @@ int tradeoff_command(int argc, char** argv, int first);   // tradeoff.cpp
 int extremes_command(int argc, char** argv, int first);   // extremes.cpp
 int reference_command(int argc, char** argv, int first);  // reference.cpp
 int score_command(int argc, char** argv, int first);      // score.cpp
-int simulate_command(int argc, char** argv, int first);   // motion_commands.cpp
-int enclose_command(int argc, char** argv, int first);    // motion_commands.cpp
-int validity_command(int argc, char** argv, int first);   // motion_commands.cpp
+int simulate_command(int argc, char** argv, int first);   // simulate.cpp
+int enclose_command(int argc, char** argv, int first);    // enclose.cpp
+int validity_command(int argc, char** argv, int first);   // validity.cpp
 int horizon_command(int argc, char** argv, int first);    // horizon.cpp
-int convert_command(int argc, char** argv, int first);    // eval.cpp
+int convert_command(int argc, char** argv, int first);    // convert.cpp
+/// What `appell convert` reads: each front end's words ("a URDF file or a \"urdf\" scene"), joined by "or".
+std::string what_converts();
 
 }  // namespace appell::cli

@@ -1,6 +1,6 @@
-// `appell eval SCENE [--scalar NAME] [--bits N] [--format json|text]`: a scene's results and
-// checks in one scalar (SCENES.md), and `appell convert`: a URDF robot as the system file appell
-// reads it as.  Output is assembled in full before anything is written to stdout.
+// `appell eval SCENE [--scalar NAME] [--bits N] [--format json|text] [--project TOL]`: a scene's
+// results and checks in one scalar (SCENES.md).  Output is assembled in full before anything is
+// written to stdout.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -8,7 +8,6 @@
 #include "appell/io/evaluation_text.hpp"
 #include "appell/io/files.hpp"
 #include "appell/io/scene.hpp"
-#include "appell/io/urdf.hpp"
 #include "commands.hpp"
 #include "flags.hpp"
 
@@ -47,11 +46,6 @@ int eval_command(int argc, char** argv, int first) {
     }
     return print_result(out);
   });
-}
-
-int convert_command(int argc, char** argv, int first) {
-  if (argc != first + 1) return usage_error("convert: expected one URDF file or \"urdf\" scene");
-  return guarded([&] { return print_result(convert_to_system(argv[first])); });
 }
 
 }  // namespace appell::cli

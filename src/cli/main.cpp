@@ -86,9 +86,10 @@ constexpr std::array<command, 11> commands{{
      "           horizon.png; --period P: the scene's period where its model knows none; --reference-order,\n"
      "           --reference-tol: the 256-bit reference's order and tolerance (default 60 and 2^-256)\n",
      appell::cli::horizon_command},
-    {"convert", "appell convert ROBOT.urdf | URDF_SCENE",
-     "  convert: a URDF robot as the `system` scene file appell reads it as (stdout): its links a tree,\n"
-     "           every number the URDF's decimal; from a \"urdf\" scene, with its state and torques\n",
+    {"convert", "appell convert FILE",
+     "  convert: a front end's file (a robot's description) or scene as the `system` scene file appell\n"
+     "           reads it as (stdout): a robot's links a tree, every number its file's decimal; from a\n"
+     "           scene, with its state and torques\n",
      appell::cli::convert_command},
 }};
 
@@ -110,6 +111,7 @@ std::string help_text() {
   s += general_text;
   for (const command& c : commands) s += c.about;
   s += "  simulate, enclose, horizon and reference --trajectory move the models: " + appell::motion::moving_model_names() + "\n";
+  s += "  convert reads " + appell::cli::what_converts() + "\n";
   return s;
 }
 

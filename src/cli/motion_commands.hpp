@@ -61,10 +61,22 @@ std::string parse_step_tolerance(const std::string& flag, const std::string& tex
 /// Parses argv[first..] into o; returns "" or the usage error (naming the flag).
 std::string parse_motion_arguments(int argc, char** argv, int first, motion_options& o);
 
-/// Validates the options' combinations, reads the scene, runs it; returns the exit status.  The
-/// options come from parse_motion_arguments, which has refused a missing scene, --t-end, --out
-/// (and validity's --vary): the one place the required flags are checked.
-int motion(const motion_options& o);
+/// The checks every motion command makes, after parse_motion_arguments (which has refused a
+/// missing scene, --t-end, --out, and validity's --vary): a flag of another motion command named
+/// and refused (input_error), the scalar's default set (double for simulate, interval
+/// otherwise).  Returns the horizon, --t-end's value.
+double checked_motion_flags(motion_options& o);
+
+/// A motion command's entry point: its command line parsed (a usage error: exit 2), then
+/// run(options) under the exit-status contract (commands.hpp, guarded).
+int motion_command(const char* name, int argc, char** argv, int first, int (*run)(const motion_options&));
+
+/// `appell simulate`, `enclose`, `validity` on parsed options (simulate.cpp, enclose.cpp,
+/// validity.cpp): each command's own checks, the scene read, the run, its files written and its
+/// summary printed; the exit status.  validity runs on `o.pieces` where given (appell-mpi).
+int simulate(const motion_options& o);
+int enclose(const motion_options& o);
+int validity(const motion_options& o);
 
 /// appell horizon SCENE --t-end T [--every DT] [--scalars LIST] --out DIR: the long-horizon study.
 struct horizon_options {

@@ -1,6 +1,7 @@
-// The motion commands' output layer: the library's reports (motion/motion.hpp) turned into the
-// command's files (CSV, summary.json, the plots) and its summary lines.  Scalar-free, compiled
-// once (motion_output.cpp).
+// What the motion commands' outputs share: the rows a run sends to its sink, kept as CSV text
+// per table, and the CSV header line.  Each command turns the library's report (motion/motion.hpp)
+// into its files and summary lines in its own file (simulate.cpp, enclose.cpp, validity.cpp).
+// Scalar-free, compiled once (motion_output.cpp).
 #pragma once
 
 #include <map>
@@ -24,14 +25,7 @@ class csv_rows final : public motion::row_sink {
   std::map<std::string, std::string> text_;
 };
 
-/// Writes DIR/trajectory.csv, summary.json and drift.png; the summary lines and exit status.
-motion_outcome write_simulate(const motion::simulate_report& r, const csv_rows& rows, const motion_options& o);
-
-/// Writes DIR/steps.csv, contacts.csv (with contacts), summary.json, widths.png and
-/// contacts.png; the summary lines and exit status.
-motion_outcome write_enclose(const motion::enclose_report& r, const csv_rows& rows, const motion_options& o);
-
-/// Writes DIR/validity.csv, summary.json and validity.png; the summary lines and exit status.
-motion_outcome write_validity(const motion::validity_report& r, const motion_options& o);
+/// A CSV header line: the names joined by commas, then a newline.
+std::string csv_header(const std::vector<std::string>& header);
 
 }  // namespace appell::cli

@@ -147,7 +147,7 @@ int validity(int argc, char** argv, boost::mpi::communicator& world) {
   // The other ranks print nothing: their summary is empty and rank 0 reports the errors.
   std::streambuf* const saved = root ? nullptr : std::cout.rdbuf(nullptr);
   try {
-    status = appell::cli::motion(o);
+    status = appell::cli::validity(o);
   } catch (...) {
     status = appell::cli::exit_status_of_current_exception(root);
   }

@@ -624,7 +624,11 @@ std::string urdf_scene_system_text(const json_value& scene) {
   return out;
 }
 
-std::string convert_to_system(const std::string& path) {
+namespace {
+
+// `appell convert PATH` for the urdf front end: the system file of a URDF file or of a "urdf"
+// scene; std::nullopt for a scene of another model, whose name goes to `other_model`.
+std::optional<std::string> convert_file(const std::string& path, std::string* other_model) {
   const std::string text = read_text_file(path, urdf_limits::bytes, "a URDF file or a \"urdf\" scene");
   const auto first = text.find_first_not_of(" \t\r\n");
   if (first != std::string::npos && text[first] == '<') {  // a URDF file: at rest, standard gravity
@@ -641,23 +645,33 @@ std::string convert_to_system(const std::string& path) {
                         "scene with \"base\": \"floating\" or \"fixed\" (SCENES.md)");
     if (std::none_of(robot.joints.begin(), robot.joints.end(), [](const urdf_robot::joint& j) { return j.type != "fixed"; }))
       throw input_error(path + ": no joint moves (revolute, continuous or prismatic): nothing to compute with the base fixed");
-    const std::string out = urdf_to_system(robot, urdf_scene_options{});
+    std::string out = urdf_to_system(robot, urdf_scene_options{});
     (void)read_as_system(out, path, &robot);
     return out;
   }
   const json_value doc = parse_json(text);
   object_reader scene(doc, "");
   const std::string model = scene.string("model");
-  if (model != "urdf")
-    throw input_error(scene.path("model") + ": convert reads a URDF file or a \"urdf\" scene, not a '" + printable(model) + "' scene");
+  if (model != "urdf") {
+    if (other_model) *other_model = model;
+    return std::nullopt;
+  }
   const scene_directory_scope scope(std::filesystem::path(path).parent_path().string());
   std::string file;
   urdf_scene_options o;
   const urdf_robot& robot = read_urdf_scene_options(scene, file, o).robot;
-  const std::string out = urdf_to_system(robot, o);
+  std::string out = urdf_to_system(robot, o);
   scene.finish();
   (void)read_as_system(out, file, &robot);
   return out;
+}
+
+}  // namespace
+
+std::string convert_to_system(const std::string& path) {
+  std::string model;
+  if (std::optional<std::string> out = convert_file(path, &model)) return std::move(*out);
+  throw input_error("model: convert reads a URDF file or a \"urdf\" scene, not a '" + printable(model) + "' scene");
 }
 
 const model_entry& urdf_model_entry() {
@@ -671,6 +685,8 @@ const model_entry& urdf_model_entry() {
           m.value.text = (std::filesystem::path(scene_directory) / m.value.text).string();
     };
     e.read_as_text = &urdf_scene_system_text;
+    e.convert = [](const std::string& path) { return convert_file(path, nullptr); };
+    e.converts = "a URDF file or a \"urdf\" scene";
     e.linearize = nullptr;  // a robot's scene names no steady motion (SCENES.md, "linearize")
     return e;
   }();

@@ -286,6 +286,13 @@ struct model_entry {
   /// prints), so that `reference --inputs binary64` rounds every number the model reads, the
   /// other file's included. nullptr: the scene's own numbers are all there is.
   std::string (*read_as_text)(const json_value& scene) = nullptr;
+  /// `appell convert PATH`: a file of the front end's own kind (a robot's description) or one of
+  /// its scenes, as the text of the scene appell reads it as; std::nullopt where the file is not
+  /// of its kind (another converter may take it); input_error where it is but cannot be read.
+  /// nullptr: the model's scenes are what they read as.
+  std::optional<std::string> (*convert)(const std::string& path) = nullptr;
+  /// What `convert` takes, for the usage line ("a URDF file or a \"urdf\" scene").
+  const char* converts = nullptr;
   /// `appell linearize`'s report (json or text) for a model that linearizes its scenes (the
   /// model's static `linearize`); nullptr: the model has no linearization.
   std::string (*linearize)(const model_input& in, const std::string& scalar, std::optional<unsigned> bits,

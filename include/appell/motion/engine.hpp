@@ -212,7 +212,7 @@ simulate_report simulate_problem(const P& prob, const vector_t<T>& x0, const sce
   return r;
 }
 
-/// A sole's half-lengths in I, where the problem has soles (models/system_motion.hpp).
+/// A sole's half-lengths in I, where the problem has soles (models/system.hpp).
 template <Scalar I, class P>
 std::optional<std::array<I, 2>> sole_of(const P& prob, const std::string& name) {
   if constexpr (requires { prob.sole_half_lengths(name); }) {
@@ -452,7 +452,7 @@ validity_report validity_problem(const P& prob, const vector_t<I>& x0, const sce
         // a model's parameter as it names them; a system file's also as parameters.NAME (its own lookup)
         bool known = false;
         if constexpr (requires { prob.can_vary(o.vary_field); }) {
-          known = prob.can_vary(o.vary_field);  // a system's parameters, efforts and soles (system_motion.hpp)
+          known = prob.can_vary(o.vary_field);  // a system's parameters, efforts and soles (models/system.hpp)
         } else {
           const std::vector<std::string> params = prob.parameter_names();
           known = std::find(params.begin(), params.end(), o.vary_field) != params.end();

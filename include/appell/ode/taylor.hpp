@@ -386,7 +386,7 @@ simulate_stats simulate(const P& prob, const vector_t<T>& x0, const T& t_end, co
 // ---------------------------------------------------------------------------
 // taylor_series and simulate of a problem P in scalar T, declared (EXTERN extern) or defined:
 // the built-in models' problems are compiled once by the library (each model's home: APPELL_EXTERN_MODEL_MOTION), the
-// system model's in models/system_motion.hpp.
+// system model's in models/system.hpp.
 /// taylor_series and simulate of problem P in T; EXTERN is `extern` (declared) or empty (defined).
 /// Expanded inside namespace appell::ode (an explicit instantiation names its template unqualified there).
 #define APPELL_ODE_SERIES_INSTANCE(EXTERN, P, T)                                                     \
