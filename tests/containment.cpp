@@ -17,8 +17,10 @@
 #include <functional>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include "appell/scalar/arb_access.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "appell/scalar/format.hpp"
 #include "appell/scalar/functions.hpp"
@@ -373,6 +375,85 @@ BOOST_AUTO_TEST_CASE(mpfi_64_results_contain_the_320_bit_values) {
 BOOST_AUTO_TEST_CASE(mpfi_200_results_contain_the_320_bit_values) {
   mp_precision_scope scope(200);
   run_all<mpfi>("mpfi at " + std::to_string(scope.bits()) + " bits", scope.bits());
+}
+
+// arb's pooled limbs (src/scalar/arb_backend.cpp: a value that dies leaves its midpoint's heap
+// limbs to its thread, and a result about to be written into a value that holds none takes them)
+// change no result: random operations at a precision drawn anew each time (limbs pooled at 4000
+// bits serve 64, and the reverse), each result the same ball, bit for bit, as Arb's own on
+// variables of its own; between them values kept alive and dropped at random, so that the pool
+// runs full and empty; and values made on one thread and dropped on another.
+BOOST_AUTO_TEST_CASE(arb_results_do_not_depend_on_the_pooled_limbs) {
+  std::mt19937_64 rng(20261206);
+  const long precisions[] = {64, 113, 128, 129, 200, 256, 1024, 4000};
+  std::uniform_real_distribution<double> u(0.1, 10);
+  std::vector<arb> alive;
+  auto same_as_arb = [](const arb& r, arb_srcptr expected) {
+    return arb_equal(mp::arb_of(r.backend()), expected) != 0;
+  };
+  int cases = 0, mismatches = 0;
+  for (int round = 0; round < 20000; ++round) {
+    const long p = precisions[rng() % 8];
+    const mp_precision_scope scope(static_cast<unsigned>(p));
+    // operands with every limb in use: square roots of random doubles (a ball of radius > 0)
+    arb a = sqrt(arb(u(rng))), b = sqrt(arb(u(rng)));
+    if (rng() % 2) a = -a;
+    arb_t x, y, want;
+    arb_init(x);
+    arb_init(y);
+    arb_init(want);
+    arb_set(x, mp::arb_of(a.backend()));
+    arb_set(y, mp::arb_of(b.backend()));
+    arb r;
+    arb_t three;  // a small exact value: its midpoint's limbs inline, none on the heap
+    arb_init(three);
+    arb_set_si(three, 3);
+    switch (const int op = static_cast<int>(rng() % 10)) {
+      case 0: r = a + b; arb_add(want, x, y, p); break;
+      case 1: r = a - b; arb_sub(want, x, y, p); break;
+      case 2: r = a * b; arb_mul(want, x, y, p); break;
+      case 3: r = a / b; arb_div(want, x, y, p); break;
+      case 4: r = sqrt(b); arb_sqrtpos(want, y, p); break;
+      case 5: r = sin(a); arb_sin(want, x, p); break;
+      case 6: r = cos(a); arb_cos(want, x, p); break;
+      case 7: r = 3; r *= a; arb_mul(want, three, x, p); break;  // r the result and an operand
+      case 8: r = 3; r /= b; arb_div(want, three, y, p); break;
+      default: r = arb(a); arb_set(want, x); (void)op; break;
+    }
+    arb_clear(three);
+    ++cases;
+    if (!same_as_arb(r, want)) {
+      ++mismatches;
+      BOOST_TEST_MESSAGE("at " << p << " bits: " << to_string(r) << " vs Arb's own");
+    }
+    arb_clear(x);
+    arb_clear(y);
+    arb_clear(want);
+    // keep some results alive (their limbs out of the pool) and drop others (into it)
+    if (rng() % 3 == 0 && alive.size() < 100) alive.push_back(r);
+    while (!alive.empty() && rng() % 4 == 0) {
+      const std::size_t k = rng() % alive.size();
+      alive[k] = std::move(alive.back());
+      alive.pop_back();
+    }
+  }
+  BOOST_TEST(mismatches == 0, mismatches << " of " << cases << " results differ from Arb's own");
+  // made on a worker thread (from its pool), dropped here (into this thread's); then the other way
+  std::vector<arb> made;
+  std::thread([&] {
+    const mp_precision_scope scope(256);
+    for (int k = 0; k < 200; ++k) made.push_back(sqrt(arb(k + 2)) * sqrt(arb(k + 3)));
+  }).join();
+  {
+    const mp_precision_scope scope(256);
+    for (int k = 0; k < 200; ++k) {  // (sqrt(k + 2) sqrt(k + 3))^2 encloses (k + 2)(k + 3)
+      const arb& m = made[static_cast<std::size_t>(k)];
+      const arb square = m * m;
+      BOOST_TEST_REQUIRE(arb_contains_si(mp::arb_of(square.backend()), (k + 2) * (k + 3)) != 0, to_string(square));
+    }
+  }
+  std::thread([moved = std::move(made)]() mutable { moved.clear(); }).join();
+  alive.clear();
 }
 
 BOOST_AUTO_TEST_CASE(arb_64_results_contain_the_320_bit_values) {

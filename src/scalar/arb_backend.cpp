@@ -24,6 +24,47 @@ namespace {
 arb_ptr A(arb_backend& x) { return arb_of(x); }
 arb_srcptr A(const arb_backend& x) { return arb_of(x); }
 
+// Midpoints' limbs kept for reuse, per thread.  Above 128 bits a midpoint's limbs are on the heap
+// and every temporary of an expression (Boost's number<>, expression templates off) would take
+// them from malloc and give them back: at 256 bits that is about a quarter of an addition and a
+// multiplication together (docs/benchmarks.md, "Ball arithmetic").  A value that dies with its
+// limbs on the heap leaves its struct here (clear(); its value no longer matters), and a result
+// about to be written into a value that holds no limbs of its own takes one (fresh()): Arb writes
+// into the limbs it finds when they are enough (arf.h, ARF_GET_MPN_WRITE) and reallocates
+// otherwise, so any struct serves any precision.  A struct is pooled only when nothing but its
+// midpoint's limbs is on the heap (no exponent of Arb's big-integer form), and the pool empties
+// itself when its thread ends.
+struct limb_pool {
+  static constexpr int capacity = 32;
+  arb_struct kept[capacity];
+  int n = 0;  // -1 once the thread's pool is gone: values that die later are cleared
+  ~limb_pool() {
+    while (n > 0) arb_clear(kept + --n);
+    n = -1;
+  }
+};
+thread_local limb_pool pool;
+
+bool only_limbs_on_heap(arb_srcptr x) {
+  return ARF_HAS_PTR(arb_midref(x)) && !COEFF_IS_MPZ(ARF_EXP(arb_midref(x))) && !COEFF_IS_MPZ(MAG_EXP(arb_radref(x)));
+}
+bool nothing_on_heap(arb_srcptr x) {
+  return !ARF_HAS_PTR(arb_midref(x)) && !COEFF_IS_MPZ(ARF_EXP(arb_midref(x))) && !COEFF_IS_MPZ(MAG_EXP(arb_radref(x)));
+}
+
+// r, about to receive a result that reads neither r nor anything r points to, given a pooled
+// struct's limbs where it holds none (its value is overwritten by the operation that follows).
+void fresh(arb_backend& r) {
+  limb_pool& p = pool;
+  if (p.n > 0 && nothing_on_heap(arb_of(r))) *arb_of(r) = p.kept[--p.n];
+}
+void fresh(arb_backend& r, const arb_backend& a) {
+  if (&r != &a) fresh(r);
+}
+void fresh(arb_backend& r, const arb_backend& a, const arb_backend& b) {
+  if (&r != &a && &r != &b) fresh(r);
+}
+
 // The whole line: Arb's answer where nothing better is known.
 void whole_line(arb_ptr r) {
   arf_zero(arb_midref(r));
@@ -56,12 +97,17 @@ void set_exact(arb_ptr r, mpfr_srcptr v) {
 void midpoint_to(mpfr_ptr out, const arb_backend& x) { arf_get_mpfr(out, arb_midref(A(x)), MPFR_RNDN); }
 }  // namespace
 
-void arb_backend::clear() noexcept {
-  arb_clear(A(*this));
+void arb_backend::clear() noexcept {  // the value dies (the destructor): its limbs pooled where they can be
+  limb_pool& p = pool;
+  if (p.n >= 0 && p.n < limb_pool::capacity && only_limbs_on_heap(A(*this))) p.kept[p.n++] = *A(*this);
+  else arb_clear(A(*this));
   v_ = arb_words{};
 }
 
-void arb_backend::set(const arb_backend& o) { arb_set(A(*this), A(o)); }
+void arb_backend::set(const arb_backend& o) {
+  fresh(*this, o);
+  arb_set(A(*this), A(o));
+}
 
 arb_backend& arb_backend::operator=(unsigned long i) {
   arb_set_ui(A(*this), i);
@@ -149,11 +195,18 @@ void arb_backend::round_prec(long p) {
 }
 
 // --- arithmetic ------------------------------------------------------------------------
-void eval_add(arb_backend& r, const arb_backend& a, const arb_backend& b) { arb_add(A(r), A(a), A(b), r.prec()); }
+void eval_add(arb_backend& r, const arb_backend& a, const arb_backend& b) {
+  fresh(r, a, b);
+  arb_add(A(r), A(a), A(b), r.prec());
+}
 void eval_add(arb_backend& r, const arb_backend& b) { arb_add(A(r), A(r), A(b), r.prec()); }
-void eval_subtract(arb_backend& r, const arb_backend& a, const arb_backend& b) { arb_sub(A(r), A(a), A(b), r.prec()); }
+void eval_subtract(arb_backend& r, const arb_backend& a, const arb_backend& b) {
+  fresh(r, a, b);
+  arb_sub(A(r), A(a), A(b), r.prec());
+}
 void eval_subtract(arb_backend& r, const arb_backend& b) { arb_sub(A(r), A(r), A(b), r.prec()); }
 void eval_multiply(arb_backend& r, const arb_backend& a, const arb_backend& b) {
+  fresh(r, a, b);
   if (&a == &b) {  // x * x >= 0: Arb's square of a ball that holds 0 reaches below 0, so its part >= 0
     arb_sqr(A(r), A(a), r.prec());
     if (!arb_is_nonnegative(A(r))) arb_nonnegative_part(A(r), A(r));
@@ -162,11 +215,20 @@ void eval_multiply(arb_backend& r, const arb_backend& a, const arb_backend& b) {
   }
 }
 void eval_multiply(arb_backend& r, const arb_backend& b) { eval_multiply(r, r, b); }
-void eval_divide(arb_backend& r, const arb_backend& a, const arb_backend& b) { arb_div(A(r), A(a), A(b), r.prec()); }
+void eval_divide(arb_backend& r, const arb_backend& a, const arb_backend& b) {
+  fresh(r, a, b);
+  arb_div(A(r), A(a), A(b), r.prec());
+}
 void eval_divide(arb_backend& r, const arb_backend& b) { arb_div(A(r), A(r), A(b), r.prec()); }
-void eval_multiply(arb_backend& r, const arb_backend& a, unsigned long b) { arb_mul_ui(A(r), A(a), b, r.prec()); }
+void eval_multiply(arb_backend& r, const arb_backend& a, unsigned long b) {
+  fresh(r, a);
+  arb_mul_ui(A(r), A(a), b, r.prec());
+}
 void eval_multiply(arb_backend& r, unsigned long b) { arb_mul_ui(A(r), A(r), b, r.prec()); }
-void eval_divide(arb_backend& r, const arb_backend& a, unsigned long b) { arb_div_ui(A(r), A(a), b, r.prec()); }
+void eval_divide(arb_backend& r, const arb_backend& a, unsigned long b) {
+  fresh(r, a);
+  arb_div_ui(A(r), A(a), b, r.prec());
+}
 void eval_divide(arb_backend& r, unsigned long b) { arb_div_ui(A(r), A(r), b, r.prec()); }
 void arb_add_product(arb_backend& s, const arb_backend& x, const arb_backend& y) {
   arb_addmul(A(s), A(x), A(y), s.prec());
@@ -277,6 +339,7 @@ void on_positive_part(arb_backend& r, const arb_backend& x, const char* what, F 
 
 void eval_sqrt(arb_backend& r, const arb_backend& x) {
   if (upper_sign(x) < 0) throw appell::domain_error("sqrt of a ball below 0");
+  fresh(r, x);
   arb_sqrtpos(A(r), A(x), r.prec());  // the part >= 0 (IEEE 1788's restriction)
 }
 void eval_log(arb_backend& r, const arb_backend& x) {
@@ -290,8 +353,14 @@ void eval_log10(arb_backend& r, const arb_backend& x) {
   on_positive_part(r, x, "log10 of a ball with no positive point",
                    [](arb_ptr z, arb_srcptr a, slong prec) { arb_log_base_ui(z, a, 10, prec); });
 }
-void eval_sin(arb_backend& r, const arb_backend& x) { arb_sin(A(r), A(x), r.prec()); }
-void eval_cos(arb_backend& r, const arb_backend& x) { arb_cos(A(r), A(x), r.prec()); }
+void eval_sin(arb_backend& r, const arb_backend& x) {
+  fresh(r, x);
+  arb_sin(A(r), A(x), r.prec());
+}
+void eval_cos(arb_backend& r, const arb_backend& x) {
+  fresh(r, x);
+  arb_cos(A(r), A(x), r.prec());
+}
 void eval_abs(arb_backend& r, const arb_backend& x) { arb_abs(A(r), A(x)); }
 void eval_fabs(arb_backend& r, const arb_backend& x) { arb_abs(A(r), A(x)); }
 void eval_exp(arb_backend& r, const arb_backend& x) { arb_exp(A(r), A(x), r.prec()); }
