@@ -3,7 +3,6 @@
 // DIR/steps.csv, contacts.csv (with contacts), summary.json, and the plots motion.png,
 // results.png, widths.png and contacts.png.
 #include <algorithm>
-
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>

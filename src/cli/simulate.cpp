@@ -2,7 +2,6 @@
 // a point scalar (the library's motion::simulate); DIR/trajectory.csv (the state, the results and
 // the invariants every DT), summary.json and drift.png (the invariants' relative drift).
 #include <algorithm>
-
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>

@@ -4,13 +4,12 @@
 // processes); DIR/validity.csv, summary.json and validity.png.
 #include <algorithm>
 #include <cstdio>
-#include <thread>
-
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "appell/errors.hpp"

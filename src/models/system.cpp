@@ -1412,7 +1412,7 @@ void check_bodies(const state_at_256_bits& at) {
 namespace {
 /// The system compiled in T (at the working precision, for mpfi) for a definition, kept on this
 /// thread for the next state of the same definition (a definition read once serves the states of
-/// `appell reference`: system.cpp): the same tapes and constants, compiled once.
+/// `appell reference`: system_model::read, above): the same tapes and constants, compiled once.
 template <class T>
 const compiled_system<T>& compiled_for(const std::shared_ptr<const system_definition>& def) {
   struct kept {

@@ -33,14 +33,18 @@ arb_srcptr A(const arb_backend& x) { return arb_of(x); }
 // into the limbs it finds when they are enough (arf.h, ARF_GET_MPN_WRITE) and reallocates
 // otherwise, so any struct serves any precision.  A struct is pooled only when nothing but its
 // midpoint's limbs is on the heap (no exponent of Arb's big-integer form), and the pool empties
-// itself when its thread ends.
+// itself when its thread ends.  Values that outlive their thread's pool (held in a thread_local
+// object destroyed after it, such as a scratch pool of linalg/scratch.hpp) are cleared as before:
+// limb_pool_gone says so, and is itself trivially destroyed (the pattern of derivatives/jet.hpp's
+// block pool; a mark inside the pool would be a store the compiler may drop).
+thread_local bool limb_pool_gone = false;
 struct limb_pool {
   static constexpr int capacity = 32;
   arb_struct kept[capacity];
-  int n = 0;  // -1 once the thread's pool is gone: values that die later are cleared
+  int n = 0;
   ~limb_pool() {
     while (n > 0) arb_clear(kept + --n);
-    n = -1;
+    limb_pool_gone = true;
   }
 };
 thread_local limb_pool pool;
@@ -55,6 +59,7 @@ bool nothing_on_heap(arb_srcptr x) {
 // r, about to receive a result that reads neither r nor anything r points to, given a pooled
 // struct's limbs where it holds none (its value is overwritten by the operation that follows).
 void fresh(arb_backend& r) {
+  if (limb_pool_gone) return;
   limb_pool& p = pool;
   if (p.n > 0 && nothing_on_heap(arb_of(r))) *arb_of(r) = p.kept[--p.n];
 }
@@ -98,9 +103,14 @@ void midpoint_to(mpfr_ptr out, const arb_backend& x) { arf_get_mpfr(out, arb_mid
 }  // namespace
 
 void arb_backend::clear() noexcept {  // the value dies (the destructor): its limbs pooled where they can be
-  limb_pool& p = pool;
-  if (p.n >= 0 && p.n < limb_pool::capacity && only_limbs_on_heap(A(*this))) p.kept[p.n++] = *A(*this);
-  else arb_clear(A(*this));
+  if (!limb_pool_gone && only_limbs_on_heap(A(*this))) {
+    if (limb_pool& p = pool; p.n < limb_pool::capacity) {
+      p.kept[p.n++] = *A(*this);
+      v_ = arb_words{};
+      return;
+    }
+  }
+  arb_clear(A(*this));
   v_ = arb_words{};
 }
 
