@@ -20,7 +20,7 @@
 // error against time with Brouwer's law as the goal line; DIR/horizon.csv,
 // DIR/summary.json, DIR/horizon.png.
 // The runs are the library's (motion/motion.hpp); these commands parse, check the flags'
-// combinations, call it and write its reports (motion_output.hpp).
+// combinations, call it and write its reports (simulate.cpp, enclose.cpp, validity.cpp).
 #pragma once
 
 #include <optional>
