@@ -408,7 +408,7 @@ BOOST_AUTO_TEST_CASE(arb_results_do_not_depend_on_the_pooled_limbs) {
     arb_t three;  // a small exact value: its midpoint's limbs inline, none on the heap
     arb_init(three);
     arb_set_si(three, 3);
-    switch (const int op = static_cast<int>(rng() % 10)) {
+    switch (const int op = static_cast<int>(rng() % 18)) {
       case 0: r = a + b; arb_add(want, x, y, p); break;
       case 1: r = a - b; arb_sub(want, x, y, p); break;
       case 2: r = a * b; arb_mul(want, x, y, p); break;
@@ -418,6 +418,36 @@ BOOST_AUTO_TEST_CASE(arb_results_do_not_depend_on_the_pooled_limbs) {
       case 6: r = cos(a); arb_cos(want, x, p); break;
       case 7: r = 3; r *= a; arb_mul(want, three, x, p); break;  // r the result and an operand
       case 8: r = 3; r /= b; arb_div(want, three, y, p); break;
+      case 9: r = exp(a); arb_exp(want, x, p); break;
+      case 10: r = abs(a); arb_abs(want, x); break;
+      case 11: r = atan(a); arb_atan(want, x, p); break;
+      case 12: r = log(b); arb_log(want, y, p); break;
+      case 13: {  // a b - b a through Arb's dot product (products.hpp), the subtracted term's sign flipped
+        r = difference_of_products(a, b, b, a);
+        arb_struct xs[2] = {*x, *y}, ys[2] = {*y, *x};
+        ARF_NEG(arb_midref(xs + 1));  // a copy's sign: the limbs are y's, read only
+        arb_dot(want, nullptr, 0, xs, 1, ys, 1, 2, p);
+        break;
+      }
+      case 14: {  // a sum begun at 0: the accumulator holds no limbs at first
+        r = 0;
+        r += a * b;
+        r -= b;
+        arb_t t;
+        arb_init(t);
+        arb_mul(t, x, y, p);
+        arb_add(want, want, t, p);
+        arb_sub(want, want, y, p);
+        arb_clear(t);
+        break;
+      }
+      case 15:  // s += a b in one rounding (Arb's arb_addmul), s small and exact
+        r = 3;
+        mp::arb_add_product(r.backend(), a.backend(), b.backend());
+        arb_set(want, three);
+        arb_addmul(want, x, y, p);
+        break;
+      case 16: r = 3; r *= r; arb_sqr(want, three, p); break;
       default: r = arb(a); arb_set(want, x); (void)op; break;
     }
     arb_clear(three);

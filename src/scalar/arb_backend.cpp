@@ -34,20 +34,30 @@ arb_srcptr A(const arb_backend& x) { return arb_of(x); }
 // otherwise, so any struct serves any precision.  A struct is pooled only when nothing but its
 // midpoint's limbs is on the heap (no exponent of Arb's big-integer form), and the pool empties
 // itself when its thread ends.  Values that outlive their thread's pool (held in a thread_local
-// object destroyed after it, such as a scratch pool of linalg/scratch.hpp) are cleared as before:
-// limb_pool_gone says so, and is itself trivially destroyed (the pattern of derivatives/jet.hpp's
-// block pool; a mark inside the pool would be a store the compiler may drop).
-thread_local bool limb_pool_gone = false;
+// object destroyed after it, such as a scratch pool of linalg/scratch.hpp) are cleared as before.
+// The pool is plain data (constant-initialized: no guard on the operations' path); the object
+// that empties it at the thread's end is made when the first struct is kept, and marks the pool
+// gone (a store into the pool, which outlives it).  At 128 bits and less a midpoint's limbs are
+// inline (two limbs), so results there skip the pool altogether.
 struct limb_pool {
-  static constexpr int capacity = 32;
+  static constexpr int capacity = 256;  // 12 KiB of structs a thread: a vector's values die in bursts
   arb_struct kept[capacity];
-  int n = 0;
-  ~limb_pool() {
-    while (n > 0) arb_clear(kept + --n);
-    limb_pool_gone = true;
+  int n;
+  bool armed, gone;
+};
+thread_local limb_pool pool;  // zero-initialized
+struct limb_pool_emptier {
+  ~limb_pool_emptier() {
+    while (pool.n > 0) arb_clear(pool.kept + --pool.n);
+    pool.gone = true;
   }
 };
-thread_local limb_pool pool;
+void arm_pool() {
+  static thread_local limb_pool_emptier emptier;  // made on this thread's first use, destroyed at its end
+  (void)emptier;
+  pool.armed = true;
+}
+constexpr long inline_bits = 128;  // ARF_NOPTR_LIMBS limbs of 64 bits
 
 bool only_limbs_on_heap(arb_srcptr x) {
   return ARF_HAS_PTR(arb_midref(x)) && !COEFF_IS_MPZ(ARF_EXP(arb_midref(x))) && !COEFF_IS_MPZ(MAG_EXP(arb_radref(x)));
@@ -59,15 +69,32 @@ bool nothing_on_heap(arb_srcptr x) {
 // r, about to receive a result that reads neither r nor anything r points to, given a pooled
 // struct's limbs where it holds none (its value is overwritten by the operation that follows).
 void fresh(arb_backend& r) {
-  if (limb_pool_gone) return;
+  if (r.prec() <= inline_bits) return;
   limb_pool& p = pool;
   if (p.n > 0 && nothing_on_heap(arb_of(r))) *arb_of(r) = p.kept[--p.n];
 }
+// Only where an operand's limbs are on the heap: a result of small exact operands (0, 1, an
+// integer) often fits inline, and a pooled struct handed to it would have its limbs freed by Arb.
+bool limbs_on_heap(const arb_backend& x) { return ARF_HAS_PTR(arb_midref(arb_of(x))); }
 void fresh(arb_backend& r, const arb_backend& a) {
-  if (&r != &a) fresh(r);
+  if (&r != &a && limbs_on_heap(a)) fresh(r);
 }
 void fresh(arb_backend& r, const arb_backend& a, const arb_backend& b) {
-  if (&r != &a && &r != &b) fresh(r);
+  if (&r != &a && &r != &b && (limbs_on_heap(a) || limbs_on_heap(b))) fresh(r);
+}
+
+// r = op(r, ...) (an accumulation: r is read), written into a pooled struct where r holds no
+// limbs (a sum begun at 0, a small exact value), which then replaces r's words: they hold nothing
+// on the heap.  op(dst) writes the result into dst, reading r's value through A(r);
+// operand_on_heap: whether the other operand's limbs are on the heap (as for fresh, above; a
+// quotient by an integer counts as such: it rarely fits inline).
+template <class Op>
+void in_place(arb_backend& r, bool operand_on_heap, Op op) {
+  limb_pool& p = pool;
+  if (!operand_on_heap || r.prec() <= inline_bits || p.n == 0 || !nothing_on_heap(arb_of(r))) return op(arb_of(r));
+  arb_struct t = p.kept[--p.n];
+  op(&t);
+  *arb_of(r) = t;
 }
 
 // The whole line: Arb's answer where nothing better is known.
@@ -103,12 +130,11 @@ void midpoint_to(mpfr_ptr out, const arb_backend& x) { arf_get_mpfr(out, arb_mid
 }  // namespace
 
 void arb_backend::clear() noexcept {  // the value dies (the destructor): its limbs pooled where they can be
-  if (!limb_pool_gone && only_limbs_on_heap(A(*this))) {
-    if (limb_pool& p = pool; p.n < limb_pool::capacity) {
-      p.kept[p.n++] = *A(*this);
-      v_ = arb_words{};
-      return;
-    }
+  if (limb_pool& p = pool; !p.gone && p.n < limb_pool::capacity && only_limbs_on_heap(A(*this))) {
+    if (!p.armed) arm_pool();
+    p.kept[p.n++] = *A(*this);
+    v_ = arb_words{};
+    return;
   }
   arb_clear(A(*this));
   v_ = arb_words{};
@@ -209,12 +235,16 @@ void eval_add(arb_backend& r, const arb_backend& a, const arb_backend& b) {
   fresh(r, a, b);
   arb_add(A(r), A(a), A(b), r.prec());
 }
-void eval_add(arb_backend& r, const arb_backend& b) { arb_add(A(r), A(r), A(b), r.prec()); }
+void eval_add(arb_backend& r, const arb_backend& b) {
+  in_place(r, limbs_on_heap(b), [&](arb_ptr d) { arb_add(d, A(r), A(b), r.prec()); });
+}
 void eval_subtract(arb_backend& r, const arb_backend& a, const arb_backend& b) {
   fresh(r, a, b);
   arb_sub(A(r), A(a), A(b), r.prec());
 }
-void eval_subtract(arb_backend& r, const arb_backend& b) { arb_sub(A(r), A(r), A(b), r.prec()); }
+void eval_subtract(arb_backend& r, const arb_backend& b) {
+  in_place(r, limbs_on_heap(b), [&](arb_ptr d) { arb_sub(d, A(r), A(b), r.prec()); });
+}
 void eval_multiply(arb_backend& r, const arb_backend& a, const arb_backend& b) {
   fresh(r, a, b);
   if (&a == &b) {  // x * x >= 0: Arb's square of a ball that holds 0 reaches below 0, so its part >= 0
@@ -224,27 +254,42 @@ void eval_multiply(arb_backend& r, const arb_backend& a, const arb_backend& b) {
     arb_mul(A(r), A(a), A(b), r.prec());
   }
 }
-void eval_multiply(arb_backend& r, const arb_backend& b) { eval_multiply(r, r, b); }
+void eval_multiply(arb_backend& r, const arb_backend& b) {
+  if (&r == &b) return eval_multiply(r, r, r);  // a square: its part >= 0 (above)
+  in_place(r, limbs_on_heap(b), [&](arb_ptr d) { arb_mul(d, A(r), A(b), r.prec()); });
+}
 void eval_divide(arb_backend& r, const arb_backend& a, const arb_backend& b) {
   fresh(r, a, b);
   arb_div(A(r), A(a), A(b), r.prec());
 }
-void eval_divide(arb_backend& r, const arb_backend& b) { arb_div(A(r), A(r), A(b), r.prec()); }
+void eval_divide(arb_backend& r, const arb_backend& b) {
+  in_place(r, limbs_on_heap(b), [&](arb_ptr d) { arb_div(d, A(r), A(b), r.prec()); });
+}
 void eval_multiply(arb_backend& r, const arb_backend& a, unsigned long b) {
   fresh(r, a);
   arb_mul_ui(A(r), A(a), b, r.prec());
 }
-void eval_multiply(arb_backend& r, unsigned long b) { arb_mul_ui(A(r), A(r), b, r.prec()); }
+void eval_multiply(arb_backend& r, unsigned long b) {
+  in_place(r, false, [&](arb_ptr d) { arb_mul_ui(d, A(r), b, r.prec()); });
+}
 void eval_divide(arb_backend& r, const arb_backend& a, unsigned long b) {
   fresh(r, a);
   arb_div_ui(A(r), A(a), b, r.prec());
 }
-void eval_divide(arb_backend& r, unsigned long b) { arb_div_ui(A(r), A(r), b, r.prec()); }
+void eval_divide(arb_backend& r, unsigned long b) {
+  in_place(r, true, [&](arb_ptr d) { arb_div_ui(d, A(r), b, r.prec()); });
+}
 void arb_add_product(arb_backend& s, const arb_backend& x, const arb_backend& y) {
-  arb_addmul(A(s), A(x), A(y), s.prec());
+  in_place(s, limbs_on_heap(x) || limbs_on_heap(y), [&](arb_ptr d) {
+    arb_set(d, A(s));  // arb_addmul accumulates into its result: s's value first
+    arb_addmul(d, A(x), A(y), s.prec());
+  });
 }
 void arb_subtract_product(arb_backend& s, const arb_backend& x, const arb_backend& y) {
-  arb_submul(A(s), A(x), A(y), s.prec());
+  in_place(s, limbs_on_heap(x) || limbs_on_heap(y), [&](arb_ptr d) {
+    arb_set(d, A(s));
+    arb_submul(d, A(x), A(y), s.prec());
+  });
 }
 void arb_sum_of_products(arb_backend& r, const arb_backend* const* x, const arb_backend* const* y, int n, unsigned subtract) {
   // arb_dot reads its operands as arrays of arb_struct with a stride; appell's values are not
@@ -276,6 +321,9 @@ void arb_sum_of_products(arb_backend& r, const arb_backend* const* x, const arb_
     ARF_NEG(arb_midref(xs + k));  // the sign bit of the copy's size word
   }
   r.set_prec_keep(prec);
+  if (std::none_of(x, x + n, [&](const arb_backend* v) { return v == &r; }) &&
+      std::none_of(y, y + n, [&](const arb_backend* v) { return v == &r; }))
+    fresh(r);
   arb_dot(A(r), nullptr, 0, xs, 1, ys, 1, n, prec);
 }
 
@@ -343,6 +391,7 @@ template <class F>
 void on_positive_part(arb_backend& r, const arb_backend& x, const char* what, F f) {
   if (upper_sign(x) <= 0) throw appell::domain_error(what);
   if (!arb_is_positive(A(x))) return whole_line(A(r));
+  fresh(r, x);
   f(A(r), A(x), r.prec());
 }
 }  // namespace
@@ -371,9 +420,18 @@ void eval_cos(arb_backend& r, const arb_backend& x) {
   fresh(r, x);
   arb_cos(A(r), A(x), r.prec());
 }
-void eval_abs(arb_backend& r, const arb_backend& x) { arb_abs(A(r), A(x)); }
-void eval_fabs(arb_backend& r, const arb_backend& x) { arb_abs(A(r), A(x)); }
-void eval_exp(arb_backend& r, const arb_backend& x) { arb_exp(A(r), A(x), r.prec()); }
+void eval_abs(arb_backend& r, const arb_backend& x) {
+  fresh(r, x);
+  arb_abs(A(r), A(x));
+}
+void eval_fabs(arb_backend& r, const arb_backend& x) {
+  fresh(r, x);
+  arb_abs(A(r), A(x));
+}
+void eval_exp(arb_backend& r, const arb_backend& x) {
+  fresh(r, x);
+  arb_exp(A(r), A(x), r.prec());
+}
 void eval_exp2(arb_backend& r, const arb_backend& x) {
   arb_t two;
   arb_init(two);
@@ -381,14 +439,24 @@ void eval_exp2(arb_backend& r, const arb_backend& x) {
   arb_pow(A(r), two, A(x), r.prec());
   arb_clear(two);
 }
-void eval_tan(arb_backend& r, const arb_backend& x) { arb_tan(A(r), A(x), r.prec()); }
+void eval_tan(arb_backend& r, const arb_backend& x) {
+  fresh(r, x);
+  arb_tan(A(r), A(x), r.prec());
+}
 void eval_asin(arb_backend& r, const arb_backend& x) { arb_asin(A(r), A(x), r.prec()); }
 void eval_acos(arb_backend& r, const arb_backend& x) { arb_acos(A(r), A(x), r.prec()); }
-void eval_atan(arb_backend& r, const arb_backend& x) { arb_atan(A(r), A(x), r.prec()); }
+void eval_atan(arb_backend& r, const arb_backend& x) {
+  fresh(r, x);
+  arb_atan(A(r), A(x), r.prec());
+}
 void eval_atan2(arb_backend& r, const arb_backend& y, const arb_backend& x) {
+  fresh(r, y, x);
   arb_atan2(A(r), A(y), A(x), r.prec());
 }
-void eval_hypot(arb_backend& r, const arb_backend& a, const arb_backend& b) { arb_hypot(A(r), A(a), A(b), r.prec()); }
+void eval_hypot(arb_backend& r, const arb_backend& a, const arb_backend& b) {
+  fresh(r, a, b);
+  arb_hypot(A(r), A(a), A(b), r.prec());
+}
 void eval_sinh(arb_backend& r, const arb_backend& x) { arb_sinh(A(r), A(x), r.prec()); }
 void eval_cosh(arb_backend& r, const arb_backend& x) { arb_cosh(A(r), A(x), r.prec()); }
 void eval_tanh(arb_backend& r, const arb_backend& x) { arb_tanh(A(r), A(x), r.prec()); }
