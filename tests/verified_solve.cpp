@@ -92,6 +92,13 @@ bool encloses(const T& box, const mpq_t q) {
   return mpfr_cmp_q(lo, q) <= 0 && mpfr_cmp_q(hi, q) >= 0;
 }
 
+// q = a 2^s, exactly.
+void set_scaled(mpq_t q, double a, long s) {
+  mpq_set_d(q, a);
+  if (s >= 0) mpq_mul_2exp(q, q, static_cast<mp_bitcnt_t>(s));
+  else mpq_div_2exp(q, q, static_cast<mp_bitcnt_t>(-s));
+}
+
 std::mt19937_64 rng(1788);
 
 // A random double in [-1, 1] with up to 21 significant bits.
@@ -569,9 +576,7 @@ scaled_run scaled_mpfi_systems(int count, int max_shift, bool thick) {
         const mpfr am = ldexp(mpfr(A(i, j)), static_cast<int>(sa));
         const mpfr r = abs(am) * eps_a;
         AI(i, j) = mpfi_from_bounds(mpfr(am - r), mpfr(am + r));
-        mpq_set_d(Aq(i, j), A(i, j));
-        if (sa >= 0) mpq_mul_2exp(Aq(i, j), Aq(i, j), static_cast<mp_bitcnt_t>(sa));
-        else mpq_div_2exp(Aq(i, j), Aq(i, j), static_cast<mp_bitcnt_t>(-sa));
+        set_scaled(Aq(i, j), A(i, j), sa);
       }
     }
     BOOST_REQUIRE(exact_solve(Aq, bq, xq));  // the midpoint system: its solution lies in every enclosure
@@ -681,9 +686,7 @@ scaled_run scaled_arb_systems(int count, int max_shift, int n_max, bool thick) {
         const mpfr r = abs(am) * eps_a;  // exact: a power of two times am
         AI(i, j) = ball_from_bounds(mpfr(am - r), mpfr(am + r));
         AM(i, j) = mpfi_from_bounds(mpfr(am - r), mpfr(am + r));
-        mpq_set_d(Aq(i, j), A(i, j));
-        if (sa >= 0) mpq_mul_2exp(Aq(i, j), Aq(i, j), static_cast<mp_bitcnt_t>(sa));
-        else mpq_div_2exp(Aq(i, j), Aq(i, j), static_cast<mp_bitcnt_t>(-sa));
+        set_scaled(Aq(i, j), A(i, j), sa);
       }
     }
     BOOST_REQUIRE(exact_solve(Aq, bq, xq));  // the midpoint system: its solution lies in every enclosure

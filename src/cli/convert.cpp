@@ -31,9 +31,8 @@ std::string what_converts(const std::vector<const model_entry*>& front_ends) {
 std::string scene_model_name(const std::string& path) {
   try {
     const json_value doc = parse_json(read_text_file(path, json_limits::bytes, "a scene file"));
-    if (doc.type == json_value::kind::object)
-      for (const auto& m : doc.members)
-        if (m.key == "model" && m.value.type == json_value::kind::string) return m.value.text;
+    const json_value* model = doc.type == json_value::kind::object ? doc.find("model") : nullptr;
+    if (model && model->type == json_value::kind::string) return model->text;
   } catch (const input_error&) {
   }
   return "";

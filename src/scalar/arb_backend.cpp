@@ -59,12 +59,11 @@ void arm_pool() {
 }
 constexpr long inline_bits = 128;  // ARF_NOPTR_LIMBS limbs of 64 bits
 
-bool only_limbs_on_heap(arb_srcptr x) {
-  return ARF_HAS_PTR(arb_midref(x)) && !COEFF_IS_MPZ(ARF_EXP(arb_midref(x))) && !COEFF_IS_MPZ(MAG_EXP(arb_radref(x)));
-}
-bool nothing_on_heap(arb_srcptr x) {
-  return !ARF_HAS_PTR(arb_midref(x)) && !COEFF_IS_MPZ(ARF_EXP(arb_midref(x))) && !COEFF_IS_MPZ(MAG_EXP(arb_radref(x)));
-}
+// Neither exponent in Arb's big-integer form (a pointer to an mpz): the midpoint's limbs are then
+// all the struct may hold on the heap.
+bool small_exponents(arb_srcptr x) { return !COEFF_IS_MPZ(ARF_EXP(arb_midref(x))) && !COEFF_IS_MPZ(MAG_EXP(arb_radref(x))); }
+bool only_limbs_on_heap(arb_srcptr x) { return ARF_HAS_PTR(arb_midref(x)) && small_exponents(x); }
+bool nothing_on_heap(arb_srcptr x) { return !ARF_HAS_PTR(arb_midref(x)) && small_exponents(x); }
 
 // r, about to receive a result that reads neither r nor anything r points to, given a pooled
 // struct's limbs where it holds none (its value is overwritten by the operation that follows).
@@ -281,13 +280,13 @@ void eval_divide(arb_backend& r, unsigned long b) {
 }
 void arb_add_product(arb_backend& s, const arb_backend& x, const arb_backend& y) {
   in_place(s, limbs_on_heap(x) || limbs_on_heap(y), [&](arb_ptr d) {
-    arb_set(d, A(s));  // arb_addmul accumulates into its result: s's value first
+    if (d != A(s)) arb_set(d, A(s));  // a pooled struct: arb_addmul accumulates into it, s's value first
     arb_addmul(d, A(x), A(y), s.prec());
   });
 }
 void arb_subtract_product(arb_backend& s, const arb_backend& x, const arb_backend& y) {
   in_place(s, limbs_on_heap(x) || limbs_on_heap(y), [&](arb_ptr d) {
-    arb_set(d, A(s));
+    if (d != A(s)) arb_set(d, A(s));
     arb_submul(d, A(x), A(y), s.prec());
   });
 }
