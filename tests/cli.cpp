@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <map>
 #include <random>
+#include <regex>
 #include <vector>
 #include <fstream>
 #include <iomanip>
@@ -1327,6 +1328,48 @@ BOOST_AUTO_TEST_CASE(a_tree_of_any_size_is_enclosed_around_its_motion, *appell::
     // 124 values
     check(APPELL_SOURCE_DIR + "/data/scenes/urdf_atlas_standing.json", "0.0005", 124, "atlas_standing");
   }
+}
+
+BOOST_AUTO_TEST_CASE(enclose_on_two_threads_writes_the_files_of_one) {
+  // --jobs 2: each step's slopes on a second thread while the first finds the step (interval;
+  // ode/enclose.hpp): the same operations on the same numbers, so the same files, byte for byte,
+  // as --jobs 1: a tree of links (slopes sized at run time), the heavy top (the generic path), a
+  // block pushed off its sole by a logged torque (a table's breakpoints, a contact's verdicts and
+  // its located failure), and a run stopped by --max-width (the same steps, the same reason).
+  struct case_ {
+    std::string scene, flags, tag;
+  };
+  std::vector<case_> cases = {
+      {appell::testing::generated_chain_scene(6, "appell_cli_jobs_chain"), "--t-end 0.003", "chain6"},
+      {APPELL_SOURCE_DIR + "/data/scenes/heavy_top.json", "--t-end 0.5", "top"},
+      {APPELL_SOURCE_DIR + "/data/scenes/urdf_block_arm_push_logged.json", "--t-end 0.2 --locate 1e-4", "logged"},
+      {APPELL_SOURCE_DIR + "/data/scenes/heavy_top.json", "--t-end 5 --max-width 1e-9", "stopped"}};
+  // Atlas (54 components): the slopes' columns split between the two threads (ode/enclose.hpp,
+  // detail::column_split), where Debian's dart-doc is installed
+  if (std::filesystem::exists("/usr/share/doc/dart/data/sdf/atlas/atlas_v3_no_head.urdf"))
+    cases.push_back({APPELL_SOURCE_DIR + "/data/scenes/urdf_atlas.json", "--t-end 0.001", "atlas"});
+  for (const auto& c : cases) {
+    const std::string one = (work / ("jobs1_" + c.tag)).string(), two = (work / ("jobs2_" + c.tag)).string();
+    const outcome a = run("enclose " + c.scene + " " + c.flags + " --jobs 1 --quiet --out " + one);
+    const outcome b = run("enclose " + c.scene + " " + c.flags + " --jobs 2 --quiet --out " + two);
+    BOOST_TEST(a.status == b.status, c.tag << ": " << a.err << " / " << b.err);
+    BOOST_TEST((a.status == 0 || a.status == 3), c.tag << ": " << a.err);
+    // the summary's lines but for the seconds taken
+    auto untimed = [](const std::string& t, const std::string& dir) {
+      const std::string u = std::regex_replace(t, std::regex(" in [0-9.e+-]+ s"), " in _ s");
+      const auto at = u.find(dir);
+      return at == std::string::npos ? u : u.substr(0, at) + "DIR" + u.substr(at + dir.size());
+    };
+    BOOST_TEST(untimed(a.out, one) == untimed(b.out, two), c.tag << ":\n" << a.out << "\n" << b.out);
+    BOOST_TEST(a.err == b.err, c.tag);
+    for (const char* file : {"/steps.csv", "/contacts.csv"}) {
+      BOOST_TEST(std::filesystem::exists(one + file) == std::filesystem::exists(two + file), c.tag << file);
+      if (std::filesystem::exists(one + file)) BOOST_TEST((slurp(one + file) == slurp(two + file)), c.tag << file);
+    }
+    BOOST_TEST(slurp(one + "/steps.csv").size() > 1000u, c.tag);
+  }
+  expect_bad_input("enclose " + good_scene + " --t-end 1 --jobs 0 --out " + (work / "jobs_bad").string(), "--jobs");
+  expect_bad_input("simulate " + good_scene + " --t-end 1 --jobs 2 --out " + (work / "jobs_bad").string(), "--jobs");
 }
 
 BOOST_AUTO_TEST_CASE(system_files_move_as_their_dedicated_models) {

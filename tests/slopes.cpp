@@ -265,3 +265,52 @@ BOOST_AUTO_TEST_CASE(slopes_of_a_tree_carried_at_run_time_equal_the_fixed_capaci
   report("generated chain of 5 links (run-time slopes)", t);
   BOOST_TEST(t.slope_width < t.jacobian_width);
 }
+
+BOOST_AUTO_TEST_CASE(the_memo_changes_no_digit_of_a_tree_s_series_or_slopes) {
+  // The memo (jet.hpp, detail::jet_memo) keeps each operation's operands and results between a
+  // series' passes and appends only what a pass adds; enclose's two evaluations on a tree (the
+  // series over a box, the slopes about a centre) with it and without it, on the KR5 and the WAM
+  // from data/scenes and a generated chain of 8 links, at random boxes about their states: every
+  // coefficient and every slope bit for bit.
+  std::mt19937_64 rng(20261206);
+  std::uniform_real_distribution<double> off(-0.3, 0.3), rad(0.0, 1e-6);
+  const std::string chain = testing::generated_chain_scene(8, "appell_test_slopes_memo_chain");
+  long compared = 0, differ = 0;
+  const std::string scenes = std::string(APPELL_SOURCE_DIR + "/data/scenes/");
+  for (const std::string& file : {scenes + "urdf_kr5.json", scenes + "urdf_wam.json", chain}) {
+    const scene_input scene = read_scene_file(file);
+    const auto prob = tree_problem<interval, runtime_slopes>(scene);
+    BOOST_REQUIRE(prob.recursion());
+    const vector_t<double> x0 = tree_problem<double, runtime_slopes>(scene).initial_state();
+    const int n = static_cast<int>(x0.size());
+    const evaluation_scope<interval> scope;
+    for (int trial = 0; trial < 3; ++trial) {
+      vector_t<interval> X(n), xh(n);
+      for (int i = 0; i < n; ++i) {
+        const double c = x0(i) + off(rng), r = rad(rng);
+        X(i) = interval(c - r, c + r);
+        xh(i) = interval(c);
+      }
+      const auto with = ode::taylor_series(prob, X, 12, true), without = ode::taylor_series(prob, X, 12, false);
+      std::vector<matrix_t<interval>> Sw, So;
+      ode::series<interval> cw, co;
+      ode::taylor_series_slopes(prob, xh, X, 6, Sw, true, &cw);
+      ode::taylor_series_slopes(prob, xh, X, 6, So, false, &co);
+      auto same = [&](const interval& a, const interval& b) {
+        ++compared;
+        differ += !detail::identical(a, b);
+      };
+      for (std::size_t k = 0; k < with.size(); ++k)
+        for (int i = 0; i < n; ++i) same(with[k](i), without[k](i));
+      for (std::size_t k = 0; k < Sw.size(); ++k) {
+        for (int i = 0; i < n; ++i) {
+          same(cw[k](i), co[k](i));
+          for (int j = 0; j < n; ++j) same(Sw[k](i, j), So[k](i, j));
+        }
+      }
+    }
+  }
+  BOOST_TEST_MESSAGE("memo on trees: " << compared << " coefficients and slopes compared");
+  BOOST_TEST(compared > 10000);
+  BOOST_TEST(differ == 0);
+}

@@ -8,11 +8,13 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "appell/errors.hpp"
 #include "appell/io/json_text.hpp"
 #include "appell/io/scene.hpp"
+#include "appell/ode/enclose_threads.hpp"
 #include "appell/scalar/decimal.hpp"
 #include "commands.hpp"
 #include "motion_commands.hpp"
@@ -194,6 +196,10 @@ int enclose(const motion_options& given) {
   progress line(o.command, o.quiet);  // "enclose: t = 3.1 of 10 (31%), about 2 min 5 s left"
   o.progress = [&](double fraction) { line.show_time(fraction, horizon); };
   csv_rows rows;
+  // --jobs: a step's slopes on a second thread (interval; the same files: ode/enclose.hpp),
+  // by default where the machine has a second core.
+  const int threads = o.jobs ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const ode::enclose_threads_scope steps_threads(std::min(threads, 2));
   const motion::enclose_report report = motion::enclose(scene, o, rows);
   line.done();
   const motion_outcome r = write_enclose(report, rows, o);

@@ -57,8 +57,8 @@ constexpr std::array<command, 11> commands{{
      appell::cli::simulate_command},
     {"enclose",
      "appell enclose SCENE --t-end T [--scalar interval|mpfi|arb] [--bits N] [--order N] [--tol E]\n"
-     "                      [--max-width W] [--max-seconds S] [--mu MU] [--locate TOL] [--until-contact-fails] [--quiet]\n"
-     "                      --out DIR",
+     "                      [--max-width W] [--max-seconds S] [--mu MU] [--locate TOL] [--until-contact-fails] [--jobs N]\n"
+     "                      [--quiet] --out DIR",
      "  enclose: a rigorous enclosure of the motion up to T; DIR/steps.csv (each step, the state at its end\n"
      "           and over it, the results and invariants over it), summary.json, widths.png; exit 3 if it\n"
      "           stops before T (what was enclosed is still written, marked incomplete); a scene with\n"

@@ -106,7 +106,8 @@ double checked_motion_flags(motion_options& o) {
   if (o.mu && o.command != "enclose" && o.command != "validity")
     throw input_error("--mu: applies to enclose and validity (every contact's friction coefficient)");
   if (o.command != "validity") {
-    if (o.jobs != 0) throw input_error("--jobs: applies to validity (its pieces run on that many threads)");
+    if (o.jobs != 0 && o.command != "enclose")
+      throw input_error("--jobs: applies to enclose (its steps' threads) and validity (its pieces' threads)");
     if (!o.vary_field.empty() || o.resolution)
       throw input_error(std::string(o.resolution ? "--resolution" : "--vary") + ": applies to validity");
   }

@@ -26,6 +26,7 @@
 #include <boost/container/small_vector.hpp>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <deque>
 #include <new>
 #include <utility>
@@ -104,12 +105,13 @@ template <class T>
 struct jet_memo {
   struct entry {
     int kind = -1;
-    int order = -1;               ///< the jet order of the pass that stored it
-    std::vector<T> in;            ///< the operands' coefficients as used, concatenated
-    std::vector<int> in_len;      ///< each operand's length in `in`
-    std::vector<T> out;           ///< the results' coefficients, concatenated
-    std::vector<int> out_len;
-    std::vector<T> extra;         ///< what an operation keeps besides (a solve: A_0^-1, enclosed)
+    int order = -1;  ///< the jet order of the pass that stored it
+    // Each operand's coefficients as used, each result's, one vector each: a pass that took
+    // the first k from the previous one appends only the new ones (the vectors in use are the
+    // first n_in and n_out; the others keep their capacity for a later operation of more).
+    boost::container::small_vector<std::vector<T>, 2> in, out;
+    std::size_t n_in = 0, n_out = 0;
+    std::vector<T> extra;  ///< what an operation keeps besides (a solve: A_0^-1, enclosed)
   };
   std::deque<entry> entries;  // a deque: an entry stays where it is while later ones are added
   std::size_t next = 0;
@@ -137,6 +139,26 @@ class jet_memo_scope {
   jet_memo<T>* saved_;
 };
 
+/// Whether coefficients 0..n-1 at a and b are identical (identical() on each): compared as
+/// bytes where equal bytes mean identical numbers and identical numbers equal bytes (double, and
+/// intervals of doubles: two doubles each; equal bytes also take two NaNs of the same bits as
+/// one, and the same operation on the same bits gives the same result, so the memo stays exact),
+/// one by one otherwise (long double's padding, the multiprecision types' limbs on the heap).
+template <class T>
+bool identical_prefix(const T* a, const T* b, int n) {
+  if (n <= 0) return true;
+  if constexpr (std::is_same_v<T, double> ||
+                (scalar_traits<T>::is_interval && std::is_trivially_copyable_v<T> &&
+                 std::is_same_v<std::remove_cv_t<decltype(scalar_traits<T>::lower(std::declval<T>()))>, double> &&
+                 sizeof(T) == 2 * sizeof(double))) {
+    return std::memcmp(a, b, static_cast<std::size_t>(n) * sizeof(T)) == 0;
+  } else {
+    for (int i = 0; i < n; ++i)
+      if (!identical(a[i], b[i])) return false;
+    return true;
+  }
+}
+
 /// One operation's dealings with the memo.  `operand(data, len)` for each operand (its
 /// coefficients as the operation uses them, len <= order + 1), then `reuse(i, ...)`: the stored
 /// result i's coefficients that may be taken; `store` (or `store_all`) after computing.
@@ -155,21 +177,12 @@ class memo_op {
   void operand(const T* data, int len) {
     if (!memo_) return;
     if (keep_ > 0) {
-      if (operands_.size() >= e_->in_len.size()) {
+      if (operands_.size() >= e_->n_in) {
         keep_ = 0;
       } else {
-        const int stored = e_->in_len[operands_.size()];
-        const int a = std::min(len, keep_), b = std::min(stored, keep_);
-        if (a != b) {
-          keep_ = 0;
-        } else {
-          for (int i = 0; i < a; ++i)
-            if (!identical(data[i], e_->in[offset_ + static_cast<std::size_t>(i)])) {
-              keep_ = 0;
-              break;
-            }
-        }
-        offset_ += static_cast<std::size_t>(stored);
+        const std::vector<T>& stored = e_->in[operands_.size()];
+        const int a = std::min(len, keep_), b = std::min(static_cast<int>(stored.size()), keep_);
+        if (a != b || !identical_prefix(data, stored.data(), a)) keep_ = 0;
       }
     }
     operands_.emplace_back(data, len);
@@ -177,68 +190,70 @@ class memo_op {
   /// Coefficients 0..usable()-1 of every result may be taken from the memo (0: none).
   int usable() {
     if (!memo_) return 0;
-    if (operands_.size() != e_->in_len.size()) keep_ = 0;
+    if (operands_.size() != e_->n_in) keep_ = 0;
     return keep_;
   }
   /// Copies into out[0..) the coefficients of stored result i that may be reused (at most
   /// len); returns their number (0: none).
   int reuse(std::size_t i, T* out, int len) {
     const int keep = usable();
-    if (keep == 0 || i >= e_->out_len.size()) return 0;
-    int stored = 0;
-    const T* r = result(i, stored);
-    const int n = std::min({keep, stored, len});
-    std::copy(r, r + n, out);
+    if (keep == 0 || i >= e_->n_out) return 0;
+    const std::vector<T>& r = e_->out[i];
+    const int n = std::min({keep, static_cast<int>(r.size()), len});
+    std::copy(r.data(), r.data() + n, out);
     return n;
   }
   std::vector<T>& extra() { return e_->extra; }
-  /// Records this pass's operands and results (call once, after computing).
+  /// Records this pass's operands and results (call once, after computing).  Where the
+  /// operands agreed on their first keep coefficients, those are kept and only the rest is
+  /// copied; the results' first keep coefficients are the stored ones (taken by reuse, or
+  /// computed again from identical operands: the same numbers).
   template <class... R>
   void store(const R&... results) {
     if (!memo_) return;
-    if (keep_ > 0) ++memo_->reused;
+    const int keep = usable();
+    if (keep > 0) ++memo_->reused;
     else ++memo_->computed;
     e_->order = order_;
-    e_->in.clear();
-    e_->in_len.clear();
-    for (const auto& [data, len] : operands_) {
-      e_->in.insert(e_->in.end(), data, data + len);
-      e_->in_len.push_back(len);
+    if (e_->in.size() < operands_.size()) e_->in.resize(operands_.size());
+    for (std::size_t j = 0; j < operands_.size(); ++j) {
+      const auto& [data, len] = operands_[j];
+      assign_after(e_->in[j], keep, data, len);
     }
-    e_->out.clear();
-    e_->out_len.clear();
-    (append(results), ...);
+    e_->n_in = operands_.size();
+    e_->n_out = 0;
+    (append(results, keep), ...);
   }
 
   /// store() for a number of results known at run time: fill(append) calls append(c) on each.
   template <class F>
   void store_all(F&& fill) {
     if (!memo_) return;
+    const int keep = usable();
     store();
-    fill([this](const auto& c) { append(c); });
+    fill([this, keep](const auto& c) { append(c, keep); });
   }
 
  private:
-  /// Stored result i's coefficients.
-  const T* result(std::size_t i, int& len) const {
-    std::size_t off = 0;
-    for (std::size_t r = 0; r < i; ++r) off += static_cast<std::size_t>(e_->out_len[r]);
-    len = e_->out_len[i];
-    return e_->out.data() + off;
+  /// v := data[0..len), where v's first `keep` entries (as far as both reach) already are
+  /// data's.
+  static void assign_after(std::vector<T>& v, int keep, const T* data, int len) {
+    const std::size_t same = static_cast<std::size_t>(std::max(0, std::min({keep, len, static_cast<int>(v.size())})));
+    v.resize(same);
+    v.insert(v.end(), data + same, data + len);
   }
   template <class C>
-  void append(const C& c) {
-    e_->out.insert(e_->out.end(), c.begin(), c.end());
-    e_->out_len.push_back(static_cast<int>(c.size()));
+  void append(const C& c, int keep) {
+    if (e_->out.size() <= e_->n_out) e_->out.resize(e_->n_out + 1);
+    assign_after(e_->out[e_->n_out], keep, c.data(), static_cast<int>(c.size()));
+    ++e_->n_out;
   }
   jet_memo<T>* memo_;
   typename jet_memo<T>::entry* e_ = nullptr;
   int order_;
   int keep_ = 0;
-  std::size_t offset_ = 0;
   boost::container::small_vector<std::pair<const T*, int>, 2> operands_;
 };
-
 enum memo_kind : int { memo_mul = 1, memo_div, memo_sin_cos, memo_sqrt, memo_exp, memo_log, memo_solve_spd, memo_solve };
 }  // namespace detail
 

@@ -47,7 +47,13 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
+#include <utility>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -58,6 +64,7 @@
 #include <Eigen/SVD>
 
 #include "appell/expr/time_segment.hpp"
+#include "appell/ode/enclose_threads.hpp"
 #include "appell/linalg/solve.hpp"
 #include "appell/ode/taylor.hpp"
 
@@ -363,6 +370,133 @@ struct affine_set {
 };
 }  // namespace detail
 
+namespace detail {
+/// A second thread for one enclose: one job at a time, run with upward rounding (the job's
+/// interval operations assume it, as the caller's do) and the caller's time segment; its
+/// thread-local pools (the memo, the jets' blocks, scratch) persist from step to step.
+class side_thread {
+ public:
+  side_thread() : thread_([this] { loop(); }) {}
+  ~side_thread() {
+    {
+      const std::lock_guard l(m_);
+      quit_ = true;
+    }
+    cv_.notify_all();
+    thread_.join();
+  }
+  side_thread(const side_thread&) = delete;
+  side_thread& operator=(const side_thread&) = delete;
+
+  /// Starts job on the thread (the previous one must have been waited for).
+  void start(std::function<void()> job) {
+    const time_segment* segment = ::appell::detail::active_time_segment;
+    {
+      const std::lock_guard l(m_);
+      job_ = [job = std::move(job), segment] {
+        const upward_rounding mode;
+        std::optional<time_segment_scope> in_segment;
+        if (segment) in_segment.emplace(*segment);
+        job();
+      };
+      done_ = false;
+      error_ = nullptr;
+    }
+    cv_.notify_all();
+  }
+  /// Waits for the job; returns what it threw (null if nothing).
+  std::exception_ptr wait() {
+    std::unique_lock l(m_);
+    cv_.wait(l, [&] { return done_; });
+    return std::exchange(error_, nullptr);
+  }
+
+ private:
+  void loop() {
+    std::unique_lock l(m_);
+    for (;;) {
+      cv_.wait(l, [&] { return quit_ || static_cast<bool>(job_); });
+      if (!job_) {
+        // MPFR keeps caches per thread (the interval functions' certified values); its manual
+        // asks a thread to free them before it ends.
+        mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE);
+        return;
+      }
+      std::function<void()> job = std::move(job_);
+      job_ = nullptr;
+      l.unlock();
+      std::exception_ptr error;
+      try {
+        job();
+      } catch (...) {
+        error = std::current_exception();
+      }
+      l.lock();
+      error_ = error;
+      done_ = true;
+      cv_.notify_all();
+    }
+  }
+  std::mutex m_;
+  std::condition_variable cv_;
+  std::function<void()> job_;
+  bool done_ = true, quit_ = false;
+  std::exception_ptr error_;
+  std::thread thread_;  // last: started once the members it reads are made
+};
+
+/// How many of a step's slope columns the side thread takes: k with its time (k + 2) c equal to
+/// this thread's, the search s and the other columns (n - k + 2) c (each part also computes the
+/// values over the box and at the centre, about two columns' work), c the time per column the
+/// side thread measured at the last step: k = (s / c + n) / 2, at least 1, at most n (n: no
+/// split).  Only the time is at stake: the columns are the same whatever the split.
+struct column_split {
+  int k = -1;  // -1: not measured yet (the first step: all on the side thread)
+  int columns(int n) const { return k < 0 ? n : std::clamp(k, 1, n); }
+  void learn(int n, int side_cols, double side_seconds, double search_seconds) {
+    if (!(side_seconds > 0)) return;
+    const double c = side_seconds / (side_cols + 2);
+    const double best = 0.5 * (search_seconds / c + n);
+    k = best >= n ? n : std::max(1, static_cast<int>(std::lround(best)));
+  }
+};
+
+/// A job on the side thread if there is one, else run at once; wait() rethrows what it threw.
+/// Leaving the scope waits (an exception of the caller's own goes on; the job's is dropped).
+class side_job {
+ public:
+  side_job(side_thread* side, std::function<void()> job) : side_(side) {
+    if (side_) {
+      side_->start(std::move(job));
+    } else {
+      try {
+        job();
+      } catch (...) {
+        error_ = std::current_exception();
+      }
+    }
+  }
+  ~side_job() {
+    if (side_ && pending_) (void)side_->wait();
+  }
+  side_job(const side_job&) = delete;
+  side_job& operator=(const side_job&) = delete;
+  /// What the job threw, null if nothing (waits for it first).
+  std::exception_ptr finish() {
+    if (side_ && pending_) {
+      pending_ = false;
+      error_ = side_->wait();
+    }
+    return error_;
+  }
+
+ private:
+  side_thread* side_;
+  bool pending_ = true;
+  std::exception_ptr error_;
+};
+}  // namespace detail
+
 /// How many affine symbols a step keeps, per state component (enclose's affine set): fewer
 /// widen long runs, more cost time (docs/motion.md, "The affine set", has the measurements).
 inline constexpr int affine_symbols_per_component = 3000;
@@ -401,6 +535,10 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
   detail::affine_set<I> affine = detail::affine_set<I>::from_box(X, xh);
   I t = I(0);
   const double horizon = approx_double(t_end);
+  std::optional<detail::side_thread> side;  // enclose_threads: the slopes' thread
+  detail::column_split split;
+  if constexpr (std::is_same_v<I, interval>)
+    if (enclose_threads > 1) side.emplace();
   double h_next = 0, h_factor = 1;
   const I zero_h = I(0);
   // Where the right-hand side is not smooth in t (a table's breakpoints: expr/expression.hpp):
@@ -460,14 +598,31 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     if constexpr (requires { prob.slope_order(p); }) q = prob.slope_order(p);
     std::vector<matrix_t<I>> DX;
     series<I> cc;  // the coefficients at the centre xh, to q: T_q(xh)
-    {
-      // The slopes about xh over X (hull with xh: the midpoint of the last step's enclosure
-      // need not lie in the intersection of its boxes).  Their evaluation carries the series at
-      // xh along (each slope's centre value), so it is not computed apart.
-      vector_t<I> Xs(n);
-      for (int i = 0; i < n; ++i) Xs(i) = detail::hull2(X(i), xh(i));
-      taylor_series_slopes(prob, xh, Xs, q, DX, true, &cc);
-    }
+    // The slopes about xh over X (hull with xh: the midpoint of the last step's enclosure need
+    // not lie in the intersection of its boxes).  Their evaluation carries the series at xh along
+    // (each slope's centre value), so it is not computed apart.  They are needed at the step's
+    // end only: on the side thread, if there is one, while this one finds the step below.
+    // A tree of many components (slopes sized at run time: their columns apart, bit for bit) splits
+    // them: the side thread the first side_cols columns, this one the rest after its search, the
+    // split moved step by step toward equal times (detail::column_split).
+    vector_t<I> Xs(n);
+    for (int i = 0; i < n; ++i) Xs(i) = detail::hull2(X(i), xh(i));
+    int side_cols = n;
+    if constexpr (P::dim == runtime_slopes)
+      if (side) side_cols = split.columns(n);
+    double side_seconds = 0, search_seconds = 0;
+    detail::side_job slopes(side ? &*side : nullptr, [&] {
+      const auto t0 = std::chrono::steady_clock::now();
+      taylor_series_slopes(prob, xh, Xs, q, DX, true, &cc, 0, side_cols);
+      side_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    });
+    const auto search_start = std::chrono::steady_clock::now();
+    // What the step's search throws is held until the slopes are done: their error, if any,
+    // goes first, as it did when they were computed before the search (the same outcome and
+    // reason either way).
+    std::exception_ptr search_error;
+    const long rejected_before = st.rejected;
+    if (std::exception_ptr e = side ? nullptr : slopes.finish()) std::rethrow_exception(e);
     // The step: from the last coefficients at the centre, times what the last steps learned
     // (h_factor), then shrunk until the a priori enclosure holds and the remainder x_p(B) h^p is
     // within the tolerance (over a wide B the interval coefficient x_p(B) is overestimated).
@@ -503,6 +658,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     series<I> cB;
     I h;
     bool last = false;
+    try {
     while (!accepted) {
       if (hd < h_floor) {
         st.complete = false;
@@ -590,6 +746,42 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
         ++st.rejected;
       }
     }
+    } catch (...) {
+      search_error = std::current_exception();
+    }
+    // This thread's columns of the slopes (where split), after a search that found the step (an
+    // error of the slopes comes from their values at the box and the centre, which the side
+    // thread's part computes too).
+    std::vector<matrix_t<I>> DXrest;
+    std::exception_ptr own_error;
+    if (side_cols < n && accepted && !search_error) {
+      const auto t0 = std::chrono::steady_clock::now();
+      search_seconds = std::chrono::duration<double>(t0 - search_start).count();
+      try {
+        taylor_series_slopes(prob, xh, Xs, q, DXrest, true, static_cast<series<I>*>(nullptr), side_cols, n - side_cols);
+      } catch (...) {
+        own_error = std::current_exception();
+      }
+    } else {
+      search_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - search_start).count();
+    }
+    if (std::exception_ptr e = slopes.finish()) {
+      st.rejected = rejected_before;
+      std::rethrow_exception(e);
+    }
+    if (own_error) {
+      st.rejected = rejected_before;
+      std::rethrow_exception(own_error);
+    }
+    if (search_error) std::rethrow_exception(search_error);
+    if (side) split.learn(n, side_cols, side_seconds, search_seconds);
+    if (!DXrest.empty())
+      for (std::size_t k = 0; k < DX.size(); ++k) {
+        matrix_t<I> whole(n, n);
+        whole.leftCols(side_cols) = DX[k];
+        whole.rightCols(n - side_cols) = DXrest[k];
+        DX[k] = std::move(whole);
+      }
     h_factor = shrunk ? h_factor * 0.7 : std::min(1.0, h_factor * 1.05);
     if (!accepted) break;
     h_next = approx_double(h);
@@ -742,7 +934,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
 #define APPELL_ODE_ENCLOSE_INSTANCE(EXTERN, P, I)                                                        \
   EXTERN template void taylor_series_slopes<P, I>(                                        \
       const P&, const vector_t<I>&, const vector_t<I>&, int,                         \
-      std::vector<matrix_t<I>>&, bool, series<I>*);                            \
+      std::vector<matrix_t<I>>&, bool, series<I>*, int, int);                  \
   EXTERN template enclose_stats enclose<P, I>(                             \
       const P&, const vector_t<I>&, const I&, int, double, double, int,                        \
       const std::function<void(const enclosed_step<I>&)>&, const std::function<void(double)>&);

@@ -21,6 +21,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <functional>
 #include <limits>
@@ -164,18 +165,26 @@ void taylor_series_jacobian(const P& prob, const vector_t<I>& X0, int p, series<
 /// D[k] lies inside the Jacobian d x_k / d x0 (X0) and has about half its width where the
 /// right-hand side is quadratic (Euler's equations).  `centre`, if given, receives the coefficients
 /// at xh, k = 0 .. p (the slopes' centre values: the evaluation computes them anyway).
+/// A problem of a run-time size may ask for the columns first_col .. first_col + cols - 1 only
+/// (D[k] then n x cols): a slope along one variable is computed apart from the others (each rule
+/// above acts on each variable's slope alone), so the columns are those of the whole matrix, bit
+/// for bit, and enclose computes them in two parts on two threads.
 template <class P, class I>
 void taylor_series_slopes(const P& prob, const vector_t<I>& xh, const vector_t<I>& X0, int p,
-                          std::vector<matrix_t<I>>& D, bool memo = true, series<I>* centre = nullptr) {
+                          std::vector<matrix_t<I>>& D, bool memo = true, series<I>* centre = nullptr,
+                          int first_col = 0, int cols = -1) {
   // a problem of a run-time size (P::dim == runtime_slopes) carries as many slopes as X0 has components
   const int n = P::dim == runtime_slopes ? static_cast<int>(X0.size()) : P::dim;
+  if (cols < 0) cols = n - first_col;
+  if (first_col < 0 || cols < 0 || first_col + cols > n || ((first_col != 0 || cols != n) && P::dim != runtime_slopes))
+    throw std::logic_error("taylor_series_slopes: columns outside the state, or a part of a fixed size's");
   using SL = slope<jet<I>, P::dim>;
   series<I> cv(static_cast<std::size_t>(p + 1), vector_t<I>(n)), cc(static_cast<std::size_t>(p + 1), vector_t<I>(n));
-  D.assign(static_cast<std::size_t>(p + 1), matrix_t<I>(n, n));
+  D.assign(static_cast<std::size_t>(p + 1), matrix_t<I>(n, cols));
   cv[0] = X0;
   cc[0] = xh;
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) D[0](i, j) = I(i == j ? 1 : 0);
+    for (int j = 0; j < cols; ++j) D[0](i, j) = I(i == first_col + j ? 1 : 0);
   vector_t<SL> X(n);
   fresh_memo<I> held;
   detail::jet_memo<I>& m = *held;
@@ -186,7 +195,7 @@ void taylor_series_slopes(const P& prob, const vector_t<I>& xh, const vector_t<I
     for (int i = 0; i < n; ++i) {
       X(i).v = component_jet(cv, i, k);
       X(i).c = component_jet(cc, i, k);
-      if constexpr (P::dim == runtime_slopes) X(i).d.resize(static_cast<std::size_t>(n));
+      if constexpr (P::dim == runtime_slopes) X(i).d.resize(static_cast<std::size_t>(cols));
       derivative_jets(D, i, k, X(i).d);
     }
     const vector_t<SL> F = prob.template rhs<SL>(X);
@@ -194,7 +203,7 @@ void taylor_series_slopes(const P& prob, const vector_t<I>& xh, const vector_t<I
     for (int i = 0; i < n; ++i) {
       cv[static_cast<std::size_t>(k + 1)](i) = F(i).v[k] / kp1;
       cc[static_cast<std::size_t>(k + 1)](i) = F(i).c[k] / kp1;
-      for (int j = 0; j < n; ++j) {
+      for (int j = 0; j < cols; ++j) {
         const auto sj = static_cast<std::size_t>(j);
         if constexpr (P::dim == runtime_slopes)
           D[static_cast<std::size_t>(k + 1)](i, j) = sj < F(i).d.size() ? I(F(i).d[sj][k] / kp1) : I(0);
