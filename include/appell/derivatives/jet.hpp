@@ -332,6 +332,35 @@ struct product_sum {
   void add(T& s, const T& x, const T& y) { s += x * y; }
   void subtract(T& s, const T& x, const T& y) { s -= x * y; }
 };
+/// interval<double> inside an upward-rounding scope (interval.hpp: every jet of enclose): x y as
+/// the pair (-lower, upper) of its bounds rounded up (product_pair, as `multiply` forms it) added
+/// to s's pair lane by lane: the same bounds, bit for bit, as s += x y, whose product and sum each
+/// check their operands and form an interval (the jets' products were 29% of the WAM's
+/// enclosure, perf).  Outside a scope, or where a bound is not finite, the expression itself.
+template <>
+struct product_sum<interval> {
+  void add(interval& s, const interval& x, const interval& y) {
+    if (!fast(s, x, y)) [[unlikely]] {
+      s += x * y;
+      return;
+    }
+    s = from_pair(_mm_add_pd(pair_of(s), product_pair(x, y)));
+  }
+  void subtract(interval& s, const interval& x, const interval& y) {
+    if (!fast(s, x, y)) [[unlikely]] {
+      s -= x * y;
+      return;
+    }
+    const __m128d q = product_pair(x, y);
+    s = from_pair(_mm_add_pd(pair_of(s), _mm_shuffle_pd(q, q, 1)));  // + (-upper, lower) of x y
+  }
+
+ private:
+  static bool fast(const interval& s, const interval& x, const interval& y) {
+    return ::appell::detail::upward_known && ordinary_pair(x, y) && s.lower() <= s.upper();
+  }
+  static __m128d pair_of(const interval& s) { return opaque_pd(_mm_set_pd(s.upper(), -s.lower())); }
+};
 /// arb: Arb's addmul and submul (one call, one rounding), into s at its own precision.
 template <>
 struct product_sum<arb> {
