@@ -147,10 +147,7 @@ class jet_memo_scope {
 template <class T>
 bool identical_prefix(const T* a, const T* b, int n) {
   if (n <= 0) return true;
-  if constexpr (std::is_same_v<T, double> ||
-                (scalar_traits<T>::is_interval && std::is_trivially_copyable_v<T> &&
-                 std::is_same_v<std::remove_cv_t<decltype(scalar_traits<T>::lower(std::declval<T>()))>, double> &&
-                 sizeof(T) == 2 * sizeof(double))) {
+  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, interval>) {
     return std::memcmp(a, b, static_cast<std::size_t>(n) * sizeof(T)) == 0;
   } else {
     for (int i = 0; i < n; ++i)
@@ -254,6 +251,7 @@ class memo_op {
   int keep_ = 0;
   boost::container::small_vector<std::pair<const T*, int>, 2> operands_;
 };
+
 enum memo_kind : int { memo_mul = 1, memo_div, memo_sin_cos, memo_sqrt, memo_exp, memo_log, memo_solve_spd, memo_solve };
 }  // namespace detail
 

@@ -408,10 +408,6 @@ struct system_problem {
   static constexpr int generic_capacity = 12;
   static constexpr bool generic_path_fits = Dim >= 0 && Dim <= generic_capacity;
   bool recursion() const { return tree_links_apply(model->sys); }
-  /// The order of the slopes enclose takes at series order p: 6 for a tree of links (the terms
-  /// past it over the step's thin box are far below the state's width: the robots' enclosures
-  /// are as wide with 6 as with 12, at half the time), enclose's default otherwise.
-  int slope_order(int p) const { return recursion() ? std::min(p - 1, 6) : ode::default_slope_order(p); }
 
   /// The same motion carried in D components.
   template <int D>

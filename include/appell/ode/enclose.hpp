@@ -501,9 +501,44 @@ class side_job {
 /// widen long runs, more cost time (docs/motion.md, "The affine set", has the measurements).
 inline constexpr int affine_symbols_per_component = 3000;
 
-/// The order of the slopes a step takes at series order p, unless the problem gives its own
-/// (slope_order): half the series' order, at least 6.
-inline int default_slope_order(int p) { return std::min(p - 1, std::max(6, p / 2)); }
+namespace detail {
+/// The order q of a step's slopes (see the step end): the least, from 6 (or p - 1), whose
+/// neglected terms over a step of length h, sum_{q<k<p} x_k(X) h^k taken over the box X as they
+/// stand, are within 10^-3 of the state's largest width in every component (or, where X is
+/// thinner, a tenth of the least remainder tolerance): the terms a step leaves out of the slope
+/// form widen the state by at most that share a step.  A motion that moves fast for its steps (the standing
+/// humanoid's, a step of 3 ms) needs 13 to 15 where a robot arm's needs 6 (docs/motion.md, "The
+/// slopes' order").
+template <class I>
+int slope_order(const series<I>& cX, const vector_t<I>& X, const std::vector<double>& remainder_tol, double h, int p) {
+  const int lowest = std::min(6, p - 1);
+  double least_tol = std::numeric_limits<double>::infinity();
+  for (double r : remainder_tol) least_tol = std::min(least_tol, r);
+  const double allowed = std::max(1e-3 * max_width(X), 0.1 * least_tol);
+  // tail[q]: the largest over the components of sum_{q<k<p} width(x_k(X)) h^k
+  std::vector<double> tail(static_cast<std::size_t>(p), 0.0);
+  for (Eigen::Index i = 0; i < X.size(); ++i) {
+    double sum = 0;
+    for (int k = p - 1; k > lowest; --k) {
+      const double w = approx_double(I(scalar_traits<I>::width(cX[static_cast<std::size_t>(k)](i))));
+      if (w != 0) sum += w * std::pow(h, k);  // (an exact 0 times an overflowing h^k is no term)
+      tail[static_cast<std::size_t>(k - 1)] = std::max(tail[static_cast<std::size_t>(k - 1)], sum);
+    }
+  }
+  int q = p - 1;
+  while (q > lowest && tail[static_cast<std::size_t>(q - 1)] <= allowed) --q;  // (NaN: no lower)
+  return q;
+}
+
+/// The next step's length relative to the last whole step's, from the share `used` of its
+/// remainder's tolerance that step took (its largest over the components): the remainder grows
+/// about as h^(p + 6) (x_p over the step's box widens with the box, which grows with h), so the
+/// next step aims at 0.3 of the tolerance, within half and twice the last step.
+inline double step_growth(double used, int p) {
+  if (!(used > 0)) return 2.0;
+  return std::clamp(std::pow(0.3 / used, 1.0 / (p + 6)), 0.5, 2.0);
+}
+}  // namespace detail
 
 /// A horizon (time elapsed from the start) that may lie on either side of the breakpoint b
 /// (elapsed from the start too): the two overlap and are not the same one number.  enclose
@@ -539,7 +574,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
   detail::column_split split;
   if constexpr (std::is_same_v<I, interval>)
     if (enclose_threads > 1) side.emplace();
-  double h_next = 0, h_factor = 1;
+  double h_last = 0, used_last = 0;  // the last whole step's length and share of the remainder's tolerance
   const I zero_h = I(0);
   // Where the right-hand side is not smooth in t (a table's breakpoints: expr/expression.hpp):
   // a step ends at the next one, and its evaluations take the piece between the last one passed
@@ -592,10 +627,33 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // dependent) or a quantity of the step may not be finite.
     try {
     const series<I> cX = taylor_series(prob, X, p);
-    // The slopes' order: default_slope_order, or the problem's own (a tree of links takes 6:
-    // docs/benchmarks.md, "Motion of any size").
-    int q = default_slope_order(p);
-    if constexpr (requires { prob.slope_order(p); }) q = prob.slope_order(p);
+    // The step: from the last coefficients at the centre, at most what the last whole step's
+    // remainder allows (detail::step_growth), then shrunk until the a priori enclosure holds and
+    // the remainder x_p(B) h^p is within the tolerance (over a wide B the interval coefficient
+    // x_p(B) is overestimated far beyond the centre's: the last step's share, not the
+    // coefficients, sets the length; docs/motion.md, "The step's length").
+    // The remainder's width is added to the state at every step and carried to T: half the
+    // tolerance, component by component, as the step size: tol max(1, |x_i|) (one scale for the
+    // whole state would let a growing angle loosen every other component; docs/motion.md, "The
+    // remainder tolerance").
+    std::vector<double> remainder_tol(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+      remainder_tol[static_cast<std::size_t>(i)] = 0.5 * tol * std::max(1.0, std::fabs(approx_double(xh(i))));
+    // The step from the last coefficients over X (X is thin: they are the centre's to a few ulps,
+    // and give the steps a separate series at xh would).
+    double hd = step_from_coefficients(cX, tol);
+    if (h_last > 0) hd = std::min(hd, h_last * detail::step_growth(used_last, p));
+    // Where the series ends (constant acceleration: the coefficients vanish past order 2) the
+    // tolerance allows any step: no step grows a component more than 2^10 times its size, and
+    // none is longer than the horizon (the sphere on a plane to t = 1e300 tried one step of
+    // infinite length, and its matrices overflowed).
+    hd = std::min({hd, step_within_growth(cX, 1024.0), horizon});
+    // The slopes' order (detail::slope_order), from the coefficients over X and the length of the
+    // last whole step (the steps change slowly; the proposal may be up to twice it).  Before a
+    // step is known the proposal is the coefficients' alone, often ten times what the remainder
+    // allows: the order then comes from the step found, the slopes computed after the search.
+    const bool step_known = h_last > 0;
+    int q = step_known ? detail::slope_order(cX, X, remainder_tol, std::min(hd, h_last), p) : 0;
     std::vector<matrix_t<I>> DX;
     series<I> cc;  // the coefficients at the centre xh, to q: T_q(xh)
     // The slopes about xh over X (hull with xh: the midpoint of the last step's enclosure need
@@ -611,37 +669,22 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     if constexpr (P::dim == runtime_slopes)
       if (side) side_cols = split.columns(n);
     double side_seconds = 0, search_seconds = 0;
-    detail::side_job slopes(side ? &*side : nullptr, [&] {
-      const auto t0 = std::chrono::steady_clock::now();
-      taylor_series_slopes(prob, xh, Xs, q, DX, true, &cc, 0, side_cols);
-      side_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    });
+    std::optional<detail::side_job> slopes;
+    auto start_slopes = [&] {
+      slopes.emplace(side ? &*side : nullptr, [&] {
+        const auto t0 = std::chrono::steady_clock::now();
+        taylor_series_slopes(prob, xh, Xs, q, DX, true, &cc, 0, side_cols);
+        side_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      });
+    };
+    if (step_known) start_slopes();
     const auto search_start = std::chrono::steady_clock::now();
     // What the step's search throws is held until the slopes are done: their error, if any,
     // goes first, as it did when they were computed before the search (the same outcome and
     // reason either way).
     std::exception_ptr search_error;
     const long rejected_before = st.rejected;
-    if (std::exception_ptr e = side ? nullptr : slopes.finish()) std::rethrow_exception(e);
-    // The step: from the last coefficients at the centre, times what the last steps learned
-    // (h_factor), then shrunk until the a priori enclosure holds and the remainder x_p(B) h^p is
-    // within the tolerance (over a wide B the interval coefficient x_p(B) is overestimated).
-    // The remainder's width is added to the state at every step and carried to T: half the
-    // tolerance, component by component, as the step size: tol max(1, |x_i|) (one scale for the
-    // whole state would let a growing angle loosen every other component; docs/motion.md, "The
-    // remainder tolerance").
-    std::vector<double> remainder_tol(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i)
-      remainder_tol[static_cast<std::size_t>(i)] = 0.5 * tol * std::max(1.0, std::fabs(approx_double(xh(i))));
-    // The step from the last coefficients over X (X is thin: they are the centre's to a few ulps,
-    // and give the steps a separate series at xh would).
-    double hd = step_from_coefficients(cX, tol) * h_factor;
-    if (h_next > 0) hd = std::min(hd, 2 * h_next);
-    // Where the series ends (constant acceleration: the coefficients vanish past order 2) the
-    // tolerance allows any step: no step grows a component more than 2^10 times its size, and
-    // none is longer than the horizon (the sphere on a plane to t = 1e300 tried one step of
-    // infinite length, and its matrices overflowed).
-    hd = std::min({hd, step_within_growth(cX, 1024.0), horizon});
+    if (std::exception_ptr e = step_known && !side ? slopes->finish() : nullptr) std::rethrow_exception(e);
     // The smallest step: relative to the time reached (a floor relative to the horizon would
     // stop a long run, to t = 1e300, before its first step), 1e-9 max(1, |t|), or less where the
     // scalar's precision allows: a step of 20 significant bits at 2^(24 - bits) max(1, |t|) still
@@ -652,7 +695,8 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     const double h_floor =
         std::max(1.0, std::fabs(approx_double(t))) *
         std::min(1e-9, std::ldexp(1.0, std::max(24 - static_cast<int>(scalar_traits<I>::precision_bits()), -120)));
-    bool accepted = false, shrunk = false;
+    bool accepted = false;
+    double used = 0;  // the accepted step's largest share of a remainder tolerance
     std::string refusal;  // why the last a priori enclosure was refused, if a solve or a domain refused it
     vector_t<I> Y(n), cpB(n), B(n);
     series<I> cB;
@@ -740,9 +784,12 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
       }
       if (ok) {
         accepted = true;
+        used = 0;
+        for (int i = 0; i < n; ++i)
+          used = std::max(used, approx_double(I(scalar_traits<I>::width(I(cpB(i) * pown(h, p))))) /
+                                    remainder_tol[static_cast<std::size_t>(i)]);
       } else {
         hd *= 0.7;
-        shrunk = true;
         ++st.rejected;
       }
     }
@@ -752,26 +799,26 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // This thread's columns of the slopes (where split), after a search that found the step (an
     // error of the slopes comes from their values at the box and the centre, which the side
     // thread's part computes too).
+    search_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - search_start).count();
+    if (!step_known) {  // the order from the step found (none found: half the series' order)
+      q = accepted && !search_error ? detail::slope_order(cX, X, remainder_tol, approx_double(h), p)
+                                    : std::max(std::min(6, p - 1), p / 2);
+      start_slopes();
+    }
     std::vector<matrix_t<I>> DXrest;
     std::exception_ptr own_error;
     if (side_cols < n && accepted && !search_error) {
-      const auto t0 = std::chrono::steady_clock::now();
-      search_seconds = std::chrono::duration<double>(t0 - search_start).count();
       try {
         taylor_series_slopes(prob, xh, Xs, q, DXrest, true, static_cast<series<I>*>(nullptr), side_cols, n - side_cols);
       } catch (...) {
         own_error = std::current_exception();
       }
-    } else {
-      search_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - search_start).count();
     }
-    if (std::exception_ptr e = slopes.finish()) {
+    std::exception_ptr slopes_error = slopes->finish();  // the side thread's part first
+    if (!slopes_error) slopes_error = own_error;
+    if (slopes_error) {  // as if the slopes had been computed before the search
       st.rejected = rejected_before;
-      std::rethrow_exception(e);
-    }
-    if (own_error) {
-      st.rejected = rejected_before;
-      std::rethrow_exception(own_error);
+      std::rethrow_exception(slopes_error);
     }
     if (search_error) std::rethrow_exception(search_error);
     if (side) split.learn(n, side_cols, side_seconds, search_seconds);
@@ -782,9 +829,11 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
         whole.rightCols(n - side_cols) = DXrest[k];
         DX[k] = std::move(whole);
       }
-    h_factor = shrunk ? h_factor * 0.7 : std::min(1.0, h_factor * 1.05);
     if (!accepted) break;
-    h_next = approx_double(h);
+    if (!last && (!at_break || h_last == 0)) {  // a step cut short at a breakpoint says little of the next
+      h_last = approx_double(h);
+      used_last = used;
+    }
     // Step end (Lohner, QR).
     const I hp = pown(h, p);
     vector_t<I> R(n);

@@ -11,8 +11,9 @@ namespace appell::ode {
 /// centre) are computed on a second thread while this one finds the a priori enclosure: the same
 /// operations on the same numbers, so the same enclosure bit for bit (tests/cli.cpp compares the
 /// files of the two).  1 unless set: `appell enclose` sets it from --jobs (by default 2 where the
-/// machine has two cores); validity's pieces, which fill the cores with whole runs, leave it at 1.  Other scalars run on one thread (mpfr's and
-/// mpfi's values re-aim their limbs' pointer on every read, also of a constant both would share).
+/// machine has two cores); validity's pieces, which fill the cores with whole runs, leave it at 1.
+/// Other scalars run on one thread (mpfr's and mpfi's values re-aim their limbs' pointer on every
+/// read, also of a constant both would share).
 inline thread_local int enclose_threads = 1;
 
 /// Sets enclose_threads for a scope.
