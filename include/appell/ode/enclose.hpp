@@ -502,16 +502,19 @@ class side_job {
 inline constexpr int affine_symbols_per_component = 3000;
 
 namespace detail {
-/// The order q of a step's slopes (see the step end): the least, from 6 (or p - 1), whose
-/// neglected terms over a step of length h, sum_{q<k<p} x_k(X) h^k taken over the box X as they
-/// stand, are within 10^-3 of the state's largest width in every component (or, where X is
+/// The least order of a step's slopes at series order p: 6, or p - 1 below it.
+inline int lowest_slope_order(int p) { return std::min(6, p - 1); }
+
+/// The order q of a step's slopes (see the step end): the least, from lowest_slope_order(p),
+/// whose neglected terms over a step of length h, sum_{q<k<p} x_k(X) h^k taken over the box X as
+/// they stand, are within 10^-3 of the state's largest width in every component (or, where X is
 /// thinner, a tenth of the least remainder tolerance): the terms a step leaves out of the slope
-/// form widen the state by at most that share a step.  A motion that moves fast for its steps (the standing
-/// humanoid's, a step of 3 ms) needs 13 to 15 where a robot arm's needs 6 (docs/motion.md, "The
-/// slopes' order").
+/// form widen the state by at most that share a step.  A motion that moves fast for its steps
+/// (the standing humanoid's, a step of 3 ms) needs 13 to 15 where a robot arm's needs 6
+/// (docs/motion.md, "The slopes' order").
 template <class I>
 int slope_order(const series<I>& cX, const vector_t<I>& X, const std::vector<double>& remainder_tol, double h, int p) {
-  const int lowest = std::min(6, p - 1);
+  const int lowest = lowest_slope_order(p);
   double least_tol = std::numeric_limits<double>::infinity();
   for (double r : remainder_tol) least_tol = std::min(least_tol, r);
   const double allowed = std::max(1e-3 * max_width(X), 0.1 * least_tol);
@@ -755,10 +758,10 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
         // [tau_i, tau_i+1] stays in B_i = sum_k x_k(X) [tau_i, tau_i+1]^k + x_p(B) [tau_i, tau_i+1]^p
         // (within B), so x_p over the hull of the B_i's coefficients holds it, far tighter.
         const I hp = pown(h, p);
+        auto remainder_width = [&](int i) { return approx_double(I(scalar_traits<I>::width(I(cpB(i) * hp)))); };
         auto remainder_within = [&] {  // every component's remainder within its tolerance
           for (int i = 0; i < n; ++i)
-            if (!(approx_double(I(scalar_traits<I>::width(I(cpB(i) * hp)))) <= remainder_tol[static_cast<std::size_t>(i)]))
-              return false;
+            if (!(remainder_width(i) <= remainder_tol[static_cast<std::size_t>(i)])) return false;
           return true;
         };
         if (!remainder_within() && pieces > 1) {
@@ -783,13 +786,14 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
             for (int i = 0; i < n; ++i) cpB(i) = appell::detail::intersect(cpB(i), tight(i));
         }
         ok = remainder_within();
+        if (ok) {
+          used = 0;
+          for (int i = 0; i < n; ++i)
+            used = std::max(used, remainder_width(i) / remainder_tol[static_cast<std::size_t>(i)]);
+        }
       }
       if (ok) {
         accepted = true;
-        used = 0;
-        for (int i = 0; i < n; ++i)
-          used = std::max(used, approx_double(I(scalar_traits<I>::width(I(cpB(i) * pown(h, p))))) /
-                                    remainder_tol[static_cast<std::size_t>(i)]);
       } else {
         hd *= 0.7;
         ++st.rejected;
@@ -798,15 +802,15 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     } catch (...) {
       search_error = std::current_exception();
     }
-    // This thread's columns of the slopes (where split), after a search that found the step (an
-    // error of the slopes comes from their values at the box and the centre, which the side
-    // thread's part computes too).
     search_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - search_start).count();
     if (!step_known) {  // the order from the step found (none found: half the series' order)
       q = accepted && !search_error ? detail::slope_order(cX, X, remainder_tol, approx_double(h), p)
-                                    : std::max(std::min(6, p - 1), p / 2);
+                                    : std::max(detail::lowest_slope_order(p), p / 2);
       start_slopes();
     }
+    // This thread's columns of the slopes (where split), after a search that found the step (an
+    // error of the slopes comes from their values at the box and the centre, which the side
+    // thread's part computes too).
     std::vector<matrix_t<I>> DXrest;
     std::exception_ptr own_error;
     if (side_cols < n && accepted && !search_error) {
