@@ -507,17 +507,18 @@ inline int lowest_slope_order(int p) { return std::min(6, p - 1); }
 
 /// The order q of a step's slopes (see the step end): the least, from lowest_slope_order(p),
 /// whose neglected terms over a step of length h, sum_{q<k<p} x_k(X) h^k taken over the box X as
-/// they stand, are within 10^-3 of the state's largest width in every component (or, where X is
-/// thinner, a tenth of the least remainder tolerance): the terms a step leaves out of the slope
-/// form widen the state by at most that share a step.  A motion that moves fast for its steps
+/// they stand, are within `share` of the state's largest width in every component (or, where X
+/// is thinner, a tenth of the least remainder tolerance): the terms a step leaves out of the
+/// slope form widen the state by at most that share a step.  A motion that moves fast for its steps
 /// (the standing humanoid's, a step of 3 ms) needs 13 to 15 where a robot arm's needs 6
 /// (docs/motion.md, "The slopes' order").
 template <class I>
-int slope_order(const series<I>& cX, const vector_t<I>& X, const std::vector<double>& remainder_tol, double h, int p) {
+int slope_order(const series<I>& cX, const vector_t<I>& X, const std::vector<double>& remainder_tol, double h, int p,
+                double share) {
   const int lowest = lowest_slope_order(p);
   double least_tol = std::numeric_limits<double>::infinity();
   for (double r : remainder_tol) least_tol = std::min(least_tol, r);
-  const double allowed = std::max(1e-3 * max_width(X), 0.1 * least_tol);
+  const double allowed = std::max(share * max_width(X), 0.1 * least_tol);
   // tail[q]: the largest over the components of sum_{q<k<p} width(x_k(X)) h^k
   std::vector<double> tail(static_cast<std::size_t>(p), 0.0);
   for (Eigen::Index i = 0; i < X.size(); ++i) {
@@ -657,8 +658,13 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // last whole step (the steps change slowly; the proposal may be up to twice it).  Before a
     // step is known the proposal is the coefficients' alone, often ten times what the remainder
     // allows: the order then comes from the step found, the slopes computed after the search.
+    // The share they may add a step: 10^-3 of the state's width on a tree of links, whose width the
+    // motion's own growth sets (10^-7 gave the WAM the same width in 44% more time), 10^-7
+    // elsewhere: a share that compounds over thousands of steps (Euler's body to T = 1000 ended
+    // 500 times wider at 10^-3; docs/motion.md, "The slopes' order").
+    const double slope_share = P::dim == runtime_slopes ? 1e-3 : 1e-7;
     const bool step_known = h_last > 0;
-    int q = step_known ? detail::slope_order(cX, X, remainder_tol, std::min(hd, h_last), p) : 0;
+    int q = step_known ? detail::slope_order(cX, X, remainder_tol, std::min(hd, h_last), p, slope_share) : 0;
     std::vector<matrix_t<I>> DX;
     series<I> cc;  // the coefficients at the centre xh, to q: T_q(xh)
     // The slopes about xh over X (hull with xh: the midpoint of the last step's enclosure need
@@ -804,7 +810,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     }
     search_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - search_start).count();
     if (!step_known) {  // the order from the step found (none found: half the series' order)
-      q = accepted && !search_error ? detail::slope_order(cX, X, remainder_tol, approx_double(h), p)
+      q = accepted && !search_error ? detail::slope_order(cX, X, remainder_tol, approx_double(h), p, slope_share)
                                     : std::max(detail::lowest_slope_order(p), p / 2);
       start_slopes();
     }
