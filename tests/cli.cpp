@@ -432,6 +432,58 @@ std::vector<std::vector<std::string>> csv_rows(const std::string& path) {
   return rows;
 }
 
+/// The last row of an enclose's steps.csv, by column name.
+std::map<std::string, std::string> last_step(const std::string& dir) {
+  const auto rows = csv_rows(dir + "/steps.csv");
+  std::map<std::string, std::string> m;
+  if (rows.size() < 2) return m;
+  for (std::size_t i = 0; i < rows[0].size() && i < rows.back().size(); ++i) m[rows[0][i]] = rows.back()[i];
+  return m;
+}
+/// Whether [lo1, hi1] and [lo2, hi2] (decimals) meet, compared exactly (as rationals in MPFR at 400 bits).
+bool meet(const std::string& lo1, const std::string& hi1, const std::string& lo2, const std::string& hi2) {
+  auto less_eq = [](const std::string& a, const std::string& b) {
+    mpfr_t x, y;
+    mpfr_init2(x, 400);
+    mpfr_init2(y, 400);
+    mpfr_set_str(x, a.c_str(), 10, MPFR_RNDN);
+    mpfr_set_str(y, b.c_str(), 10, MPFR_RNDN);
+    const bool r = mpfr_lessequal_p(x, y);
+    mpfr_clear(x);
+    mpfr_clear(y);
+    return r;
+  };
+  return less_eq(lo1, hi2) && less_eq(lo2, hi1);
+}
+
+/// Encloses `scene` to T and simulates it in MPFR at 200 bits: each value the simulation writes
+/// at T that the enclosure's last step writes too (the state, the results; the second
+/// derivatives only `with_second_derivatives`) must meet (contain, to the decimals printed) the
+/// simulation's. Returns how many were compared.
+int enclosed_around_mpfr(const std::string& scene, const std::string& T, const std::string& tag, bool with_second_derivatives) {
+  const std::string enc = (work / (tag + "_enclose")).string(), sim = (work / (tag + "_simulate")).string();
+  const outcome e = run("enclose " + scene + " --t-end " + T + " --quiet --out " + enc);
+  BOOST_TEST_REQUIRE(e.status == 0, tag << ": " << e.err);
+  const outcome m =
+      run("simulate " + scene + " --t-end " + T + " --every " + T + " --scalar mpfr --bits 200 --quiet --out " + sim);
+  BOOST_TEST_REQUIRE(m.status == 0, tag << ": " << m.err);
+  const auto rows = csv_rows(sim + "/trajectory.csv");
+  BOOST_TEST_REQUIRE(rows.size() == 3u);  // header, t = 0, t = T
+  const auto last = last_step(enc);
+  BOOST_TEST_REQUIRE(!last.empty());
+  int compared = 0;
+  for (std::size_t c = 1; c < rows[0].size(); ++c) {
+    const std::string& name = rows[0][c];
+    if (!with_second_derivatives && name.find("_ddot") != std::string::npos) continue;
+    if (!last.count(name + "_lo")) continue;
+    const std::string& v = rows[2][c];
+    BOOST_TEST(meet(last.at(name + "_lo"), last.at(name + "_hi"), v, v),
+               tag << ": " << name << ": " << v << " outside [" << last.at(name + "_lo") << ", " << last.at(name + "_hi") << "]");
+    ++compared;
+  }
+  return compared;
+}
+
 // Euler's equations written out, in MPFR at 320 bits from the exact decimals:
 // A w1' = (B - C) w2 w3, ... (torque 0): the independent truth for the dataset.
 void euler_truth(const std::string (&w)[3], mpfr_value (&out)[3]) {
@@ -1039,8 +1091,9 @@ BOOST_AUTO_TEST_CASE(simulate_and_enclose_refuse_bad_input_naming_the_flag) {
   expect_bad_input("enclose " + good_scene + " --t-end 1 --bits 113 --out " + out, "--bits");
   expect_bad_input("simulate " + good_scene + " --t-end 1 --tol 1000000 --out " + out, "--tol");
   expect_bad_input("enclose " + good_scene + " --t-end 1 --tol 1 --out " + out, "--tol");
-  // A system whose motion's state is too large for enclose (14 components: seven coordinates and
-  // their rates) is refused naming enclose; simulate runs it.
+  // A system of 14 state components outside a tree of links (seven free particles, each moving
+  // at 1: q = t), refused by enclose up to 2026-12-07 (at most 12 then), is enclosed (its slopes
+  // sized at run time) around q = 1 at t = 1, and simulate runs it.
   std::string big = "{\"model\": \"system\", \"coordinates\": [\"q1\", \"q2\", \"q3\", \"q4\", \"q5\", \"q6\", \"q7\"], "
                     "\"bodies\": {";
   for (int i = 1; i <= 7; ++i)
@@ -1051,7 +1104,16 @@ BOOST_AUTO_TEST_CASE(simulate_and_enclose_refuse_bad_input_naming_the_flag) {
     big += std::string(i > 1 ? ", " : "") + "\"q" + std::to_string(i) + "\": \"0\", \"q" + std::to_string(i) + "_dot\": \"1\"";
   big += "}}";
   const std::string big_scene = scene_file("fourteen", big);
-  expect_bad_input("enclose " + big_scene + " --t-end 1 --out " + out, "enclose");
+  {
+    const outcome e = run("enclose " + big_scene + " --t-end 1 --quiet --out " + out + "_big_enclose");
+    BOOST_TEST_REQUIRE(e.status == 0, e.err);
+    const auto last = last_step(out + "_big_enclose");
+    for (int i = 1; i <= 7; ++i) {
+      const std::string q = "q" + std::to_string(i);
+      BOOST_TEST_REQUIRE(last.count(q + "_lo") == 1u, q);
+      BOOST_TEST(meet(last.at(q + "_lo"), last.at(q + "_hi"), "1", "1"), q << " [" << last.at(q + "_lo") << ", " << last.at(q + "_hi") << "]");
+    }
+  }
   BOOST_TEST(run("simulate " + big_scene + " --t-end 1 --quiet --out " + out + "_big").status == 0);
   // (A tree of links is carried in any size: a_tree_of_any_size_is_enclosed_around_its_motion.)
   // A state the scene refuses is refused as by eval (theta = 0: the Euler angles are singular).
@@ -1265,31 +1327,6 @@ BOOST_AUTO_TEST_CASE(reference_along_a_trajectory_takes_the_states_of_the_motion
   expect_bad_input("reference " + scene + " --trajectory -2 --every 1 --out " + out, "--trajectory");
 }
 
-namespace {
-/// The last row of an enclose's steps.csv, by column name.
-std::map<std::string, std::string> last_step(const std::string& dir) {
-  const auto rows = csv_rows(dir + "/steps.csv");
-  std::map<std::string, std::string> m;
-  if (rows.size() < 2) return m;
-  for (std::size_t i = 0; i < rows[0].size() && i < rows.back().size(); ++i) m[rows[0][i]] = rows.back()[i];
-  return m;
-}
-/// Whether [lo1, hi1] and [lo2, hi2] (decimals) meet, compared exactly (as rationals in MPFR at 400 bits).
-bool meet(const std::string& lo1, const std::string& hi1, const std::string& lo2, const std::string& hi2) {
-  auto less_eq = [](const std::string& a, const std::string& b) {
-    mpfr_t x, y;
-    mpfr_init2(x, 400);
-    mpfr_init2(y, 400);
-    mpfr_set_str(x, a.c_str(), 10, MPFR_RNDN);
-    mpfr_set_str(y, b.c_str(), 10, MPFR_RNDN);
-    const bool r = mpfr_lessequal_p(x, y);
-    mpfr_clear(x);
-    mpfr_clear(y);
-    return r;
-  };
-  return less_eq(lo1, hi2) && less_eq(lo2, hi1);
-}
-}  // namespace
 
 BOOST_AUTO_TEST_CASE(a_tree_of_any_size_is_enclosed_around_its_motion, *appell::test::needs_scalars({"mpfr"})) {
   // A tree of links is enclosed with its slopes sized at run time (the fixed capacities stop at
@@ -1297,27 +1334,7 @@ BOOST_AUTO_TEST_CASE(a_tree_of_any_size_is_enclosed_around_its_motion, *appell::
   // where Debian's dart-doc is installed), each to a short T, every coordinate and rate of the
   // last step meeting (containing, to the decimals printed) MPFR's simulation at 200 bits.
   auto check = [&](const std::string& scene, const std::string& T, int components, const std::string& tag) {
-    const std::string enc = (work / (tag + "_enclose")).string(), sim = (work / (tag + "_simulate")).string();
-    const outcome e = run("enclose " + scene + " --t-end " + T + " --quiet --out " + enc);
-    BOOST_TEST_REQUIRE(e.status == 0, tag << ": " << e.err);
-    const outcome m =
-        run("simulate " + scene + " --t-end " + T + " --every " + T + " --scalar mpfr --bits 200 --quiet --out " + sim);
-    BOOST_TEST_REQUIRE(m.status == 0, tag << ": " << m.err);
-    const auto rows = csv_rows(sim + "/trajectory.csv");
-    BOOST_TEST_REQUIRE(rows.size() == 3u);  // header, t = 0, t = T
-    const auto last = last_step(enc);
-    BOOST_TEST_REQUIRE(!last.empty());
-    int compared = 0;
-    for (std::size_t c = 1; c < rows[0].size(); ++c) {
-      const std::string& name = rows[0][c];
-      if (name.find("_ddot") != std::string::npos) continue;  // results, not the state
-      BOOST_TEST_REQUIRE(last.count(name + "_lo") == 1u, tag << ": " << name);
-      const std::string& v = rows[2][c];
-      BOOST_TEST(meet(last.at(name + "_lo"), last.at(name + "_hi"), v, v),
-                 tag << ": " << name << ": " << v << " outside [" << last.at(name + "_lo") << ", " << last.at(name + "_hi") << "]");
-      ++compared;
-    }
-    BOOST_TEST(compared == components, tag << ": " << compared << " compared");
+    BOOST_TEST(enclosed_around_mpfr(scene, T, tag, false) == components, tag);
   };
   check(appell::testing::generated_chain_scene(7, "appell_cli_chain"), "0.002", 14, "chain7");
   if (std::filesystem::exists("/usr/share/doc/dart/data/sdf/atlas/atlas_v3_no_head.urdf")) {
@@ -1328,6 +1345,103 @@ BOOST_AUTO_TEST_CASE(a_tree_of_any_size_is_enclosed_around_its_motion, *appell::
     // 124 values
     check(APPELL_SOURCE_DIR + "/data/scenes/urdf_atlas_standing.json", "0.0005", 124, "atlas_standing");
   }
+}
+
+namespace {
+/// A system file of `count` copies of one system: every '#' of each section's text (names,
+/// expressions, values) becomes the copy's number, and the copies' sections are joined.
+struct system_copy {
+  std::string parameters, gravity, coordinates, speeds, kinematics, bodies, constraints, wrenches, contacts, state;
+};
+std::string system_copies(const system_copy& c, int count) {
+  auto numbered = [](std::string text, int i) {
+    for (std::size_t at = text.find('#'); at != std::string::npos; at = text.find('#', at))
+      text.replace(at, 1, std::to_string(i));
+    return text;
+  };
+  auto joined = [&](const std::string& part) {
+    std::string all;
+    for (int i = 0; i < count && !part.empty(); ++i) all += (i ? ", " : "") + numbered(part, i);
+    return all;
+  };
+  std::string text = "{\"model\": \"system\", \"parameters\": {" + c.parameters + "}";
+  if (!c.gravity.empty()) text += ", \"gravity\": [" + c.gravity + "]";
+  text += ", \"coordinates\": [" + joined(c.coordinates) + "]";
+  if (!c.speeds.empty()) text += ", \"speeds\": [" + joined(c.speeds) + "], \"kinematics\": {" + joined(c.kinematics) + "}";
+  text += ", \"bodies\": {" + joined(c.bodies) + "}";
+  if (!c.constraints.empty()) text += ", \"constraints\": {" + joined(c.constraints) + "}";
+  if (!c.wrenches.empty()) text += ", \"wrenches\": {" + joined(c.wrenches) + "}";
+  if (!c.contacts.empty()) text += ", \"contacts\": {" + joined(c.contacts) + "}";
+  return text + ", \"state\": {" + joined(c.state) + "}}";
+}
+/// `count` Chaplygin sleighs (data/scenes/system_chaplygin_sleigh.json), each knife edge coupled
+/// to the sleigh before it (v_i = c w_(i-1)): 5 state components a sleigh, the generic path.
+std::string coupled_sleighs(int count) {
+  const system_copy sleigh{"\"m\": \"2\", \"I\": \"0.3\", \"a\": \"0.4\", \"c\": \"0.1\"", "", "\"x#\", \"y#\", \"th#\"",
+                           "\"u#\", \"v#\", \"w#\"",
+                           "\"x#\": \"u#*cos(th#) - v#*sin(th#)\", \"y#\": \"u#*sin(th#) + v#*cos(th#)\", \"th#\": \"w#\"",
+                           "\"sleigh#\": {\"mass\": \"m\", \"inertia\": [\"I/2\", \"I/2\", \"I\"], \"center\": [\"x# + a*cos(th#)\","
+                           " \"y# + a*sin(th#)\", \"0\"], \"orientation\": \"rz(th#)\"}",
+                           "", "", "", "\"x#\": \"0\", \"y#\": \"#\", \"th#\": \"0.#\", \"u#\": \"1.#\", \"w#\": \"2.#\""};
+  std::string text = system_copies(sleigh, count), constraints, solve;
+  for (int i = 0; i < count; ++i) {
+    const std::string k = std::to_string(i);
+    constraints += (i ? ", " : "") + ("\"knife" + k + "\": {\"nonholonomic\": \"v" + k) +
+                   (i ? " - c*w" + std::to_string(i - 1) : std::string()) + "\"}";
+    solve += (i ? ", " : "") + ("\"v" + k + "\"");
+  }
+  text.replace(text.find("\"coordinates\""), 0,
+               "\"constraints\": {" + constraints + "}, \"solve_speeds\": [" + solve + "], ");
+  return text;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(a_system_of_any_size_is_enclosed_around_its_motion, *appell::test::needs_scalars({"mpfr"})) {
+  // Beyond 12 state components a system file outside a tree of links (the generic path: Cotton's
+  // method on the expressions) is carried with its slopes sized at run time, as a tree is:
+  // three coupled Chaplygin sleighs (15 components: nonholonomic constraints, the speeds solved),
+  // three free bodies in Euler's angles (18: no constraint), and two disks rolling with a
+  // friction contact each (18: a holonomic and two nonholonomic constraints, a wrench and a
+  // contact's verdicts). Each to a short T, every value of the last step that the simulation
+  // writes (the state and the results) meeting MPFR's simulation at 200 bits; and validity
+  // varies the disks' mu over the same 18 components.
+  auto check = [&](const std::string& scene, const std::string& T, int compared_values, const std::string& tag) {
+    BOOST_TEST(enclosed_around_mpfr(scene, T, tag, true) == compared_values, tag);
+  };
+  check(scene_file("sleighs3", coupled_sleighs(3)), "0.5", 31, "sleighs3");
+  const system_copy body{"\"A\": \"2\", \"B\": \"3\", \"C\": \"4\"", "", "\"psi#\", \"theta#\", \"phi#\"", "\"p#\", \"q#\", \"r#\"",
+                         "\"psi#\": \"(p#*sin(phi#) + q#*cos(phi#))/sin(theta#)\", \"theta#\": \"p#*cos(phi#) - q#*sin(phi#)\","
+                         " \"phi#\": \"r# - cos(theta#)*(p#*sin(phi#) + q#*cos(phi#))/sin(theta#)\"",
+                         "\"body#\": {\"mass\": \"1\", \"inertia\": [\"A\", \"B\", \"C\"], \"center\": [\"0\", \"0\", \"0\"],"
+                         " \"orientation\": \"rz(psi#) rx(theta#) rz(phi#)\"}",
+                         "", "", "", "\"psi#\": \"0.3\", \"theta#\": \"1.#\", \"phi#\": \"0.5\", \"p#\": \"0.1#\", \"q#\": \"1.#\", \"r#\": \"0.2\""};
+  check(scene_file("bodies3", system_copies(body, 3)), "1", 3 * 6 + 3 * 3 + 1, "bodies3");
+  const std::string disk_point = "[\"x# - a*sin(psi#)*sin(theta#)\", \"y# + a*cos(psi#)*sin(theta#)\", \"z# - a*cos(theta#)\"]";
+  const system_copy disk{
+      "\"m\": \"2\", \"a\": \"0.3\", \"g\": \"9.81\"", "\"0\", \"0\", \"-g\"", "\"x#\", \"y#\", \"z#\", \"psi#\", \"theta#\", \"phi#\"",
+      "", "",
+      "\"disk#\": {\"mass\": \"m\", \"inertia\": [\"m*a^2/4\", \"m*a^2/2\", \"m*a^2/4\"], \"center\": [\"x#\", \"y#\", \"z#\"],"
+      " \"orientation\": \"rz(psi#) rx(theta#) ry(phi#)\"}",
+      "\"ground#\": {\"holonomic\": \"z# - a*cos(theta#)\"}, \"roll_x#\": {\"nonholonomic\": \"x#_dot - a*(psi#_dot*cos(psi#)*sin(theta#)"
+      " + theta#_dot*sin(psi#)*cos(theta#) + phi#_dot*cos(psi#))\"}, \"roll_y#\": {\"nonholonomic\": \"y#_dot -"
+      " a*(psi#_dot*sin(psi#)*sin(theta#) - theta#_dot*cos(psi#)*cos(theta#) + phi#_dot*sin(psi#))\"}",
+      "\"contact#\": {\"body\": \"disk#\", \"constraints\": [\"ground#\", \"roll_x#\", \"roll_y#\"], \"point\": " + disk_point + "}",
+      "\"floor#\": {\"constraints\": [\"ground#\", \"roll_x#\", \"roll_y#\"], \"normal\": \"ground#\", \"mu\": \"0.4\", \"body\": \"disk#\","
+      " \"point\": " + disk_point + "}",
+      // upright-ish, rolling at 10 rad/s about its axis, turning at 1 rad/s; z on the ground
+      // (cos 0.3 a) and x_dot from the rolling constraints, to 90 digits
+      "\"x#\": \"#\", \"y#\": \"0\", \"z#\": \"0.286600946737681805892693068270414969473264224789611302355284083668274477357534861351580585\","
+      " \"psi#\": \"0\", \"theta#\": \"0.3\", \"phi#\": \"0\", \"x#_dot\": "
+      "\"3.08865606199840187253159622370550821210334963352278553455045931085197858018792389198279494\", \"y#_dot\": \"0\","
+      " \"z#_dot\": \"0\", \"psi#_dot\": \"1\", \"theta#_dot\": \"0\", \"phi#_dot\": \"10\""};
+  const std::string disks = scene_file("disks2", system_copies(disk, 2));
+  // per disk: 9 state components, 6 second derivatives, 3 solved speeds, 3 reactions, the
+  // wrench's 6, the contact's normal and friction forces 4, the ground's residual; the energy
+  check(disks, "0.2", 2 * (9 + 6 + 3 + 3 + 6 + 4 + 1) + 1, "disks2");
+  const std::string v = (work / "disks2_validity").string();
+  const outcome r = run("validity " + disks + " --vary mu=0.2:0.5 --t-end 0.05 --resolution 0.1 --quiet --out " + v);
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  BOOST_TEST(std::filesystem::exists(v + "/validity.csv"));
 }
 
 BOOST_AUTO_TEST_CASE(enclose_on_two_threads_writes_the_files_of_one) {
@@ -1348,6 +1462,9 @@ BOOST_AUTO_TEST_CASE(enclose_on_two_threads_writes_the_files_of_one) {
   // detail::column_split), where Debian's dart-doc is installed
   if (std::filesystem::exists("/usr/share/doc/dart/data/sdf/atlas/atlas_v3_no_head.urdf"))
     cases.push_back({APPELL_SOURCE_DIR + "/data/scenes/urdf_atlas.json", "--t-end 0.001", "atlas"});
+  // the generic path beyond 12 components (20: four coupled sleighs), its slopes sized at run
+  // time and their columns split as a tree's are
+  cases.push_back({scene_file("jobs_sleighs4", coupled_sleighs(4)), "--t-end 0.5", "sleighs4"});
   for (const auto& c : cases) {
     const std::string one = (work / ("jobs1_" + c.tag)).string(), two = (work / ("jobs2_" + c.tag)).string();
     const outcome a = run("enclose " + c.scene + " " + c.flags + " --jobs 1 --quiet --out " + one);

@@ -402,11 +402,11 @@ struct system_problem {
   int size() const { return coordinates() + static_cast<int>(free_columns.size()) + (timed ? 1 : 0); }
   const std::vector<std::string>& state_names() const { return names; }
 
-  /// The most components the generic path's right-hand side is carried in (its kinematics on
-  /// multi_dual numbers of slopes: 3 x 3 matrices of them outgrow Eigen's fixed-size storage
-  /// beyond); a tree of links (tree_recursions_apply) takes the recursion, in any size.
+  /// The most components the generic path is carried in at a size fixed at compile time (its
+  /// 3 x 3 matrices of multi_dual slopes outgrow Eigen's fixed-size storage beyond); a larger
+  /// state takes the slopes sized at run time (runtime_slopes), the generic path or the tree's.
   static constexpr int generic_capacity = 12;
-  static constexpr bool generic_path_fits = Dim >= 0 && Dim <= generic_capacity;
+  static constexpr bool generic_path_fits = Dim == runtime_slopes || (Dim >= 0 && Dim <= generic_capacity);
   bool recursion() const { return tree_links_apply(model->sys); }
 
   /// The same motion carried in D components.
@@ -497,12 +497,12 @@ struct system_problem {
         tree_equations_into<T, S>(model->sys, a.q, a.v_a, a.t, e);
         acc = e.accelerations();
       } else if constexpr (!generic_path_fits) {
-        throw std::logic_error("system_problem: the generic path carried in more than 12 components, or at run time");
+        throw std::logic_error("system_problem: the generic path carried in more than 12 components fixed at compile time");
       } else {
         acc = cotton_free_accelerations<4>(sys, a.q, a.v_a, a.t, 0);
       }
     } else if constexpr (!generic_path_fits) {
-      throw std::logic_error("system_problem: the generic path carried in more than 12 components, or at run time");
+      throw std::logic_error("system_problem: the generic path carried in more than 12 components fixed at compile time");
     } else {
       const auto adapted = change_speeds(sys, change(), speeds());
       vector_t<S> v = vector_t<S>::Zero(speeds());

@@ -652,11 +652,8 @@ void run_problem(const P& prob, const vector_t<T>& x0, const scene_input& scene,
       };
       if (n <= 6) return run(prob.template with_capacity<6>(), padded(6));
       if (n <= 12) return run(prob.template with_capacity<12>(), padded(12));
-      // a tree of links: its slopes in vectors, of the state's own size (any size)
-      if (prob.recursion()) return run(prob.template with_capacity<runtime_slopes>(), vector_t<T>(x0.head(n)));
-      throw input_error("enclose: the motion's state has " + std::to_string(n) +
-                        " components; enclose carries at most 12 (the coordinates, the free speeds and t) for a"
-                        " system with constraints or bodies outside a tree of links; a tree of links, any number");
+      // beyond: its slopes in vectors, of the state's own size (any size, any system)
+      return run(prob.template with_capacity<runtime_slopes>(), vector_t<T>(x0.head(n)));
     } else {
       run(prob, x0);
     }

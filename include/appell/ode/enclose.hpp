@@ -534,6 +534,18 @@ int slope_order(const series<I>& cX, const vector_t<I>& X, const std::vector<dou
   return q;
 }
 
+/// The share of the state's width the terms a step leaves out of its slopes may add a step
+/// (slope_order): 10^-3 on a tree of links (a problem whose recursion() says so), whose width
+/// the motion's own growth sets (10^-7 gave the WAM the same width in 44% more time), 10^-7
+/// elsewhere: a share that compounds over thousands of steps (Euler's body to T = 1000 ended
+/// 500 times wider at 10^-3; docs/motion.md, "The slopes' order").
+template <class P>
+double slope_share(const P& prob) {
+  if constexpr (requires { bool(prob.recursion()); })
+    if (prob.recursion()) return 1e-3;
+  return 1e-7;
+}
+
 /// The next step's length relative to the last whole step's, from the share `used` of its
 /// remainder's tolerance that step took (its largest over the components): the remainder grows
 /// about as h^(p + 6) (x_p over the step's box widens with the box, which grows with h), so the
@@ -658,11 +670,8 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // last whole step (the steps change slowly; the proposal may be up to twice it).  Before a
     // step is known the proposal is the coefficients' alone, often ten times what the remainder
     // allows: the order then comes from the step found, the slopes computed after the search.
-    // The share they may add a step: 10^-3 of the state's width on a tree of links, whose width the
-    // motion's own growth sets (10^-7 gave the WAM the same width in 44% more time), 10^-7
-    // elsewhere: a share that compounds over thousands of steps (Euler's body to T = 1000 ended
-    // 500 times wider at 10^-3; docs/motion.md, "The slopes' order").
-    const double slope_share = P::dim == runtime_slopes ? 1e-3 : 1e-7;
+    // The share they may add a step (detail::slope_share).
+    const double slope_share = detail::slope_share(prob);
     const bool step_known = h_last > 0;
     int q = step_known ? detail::slope_order(cX, X, remainder_tol, std::min(hd, h_last), p, slope_share) : 0;
     std::vector<matrix_t<I>> DX;
