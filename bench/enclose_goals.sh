@@ -5,6 +5,7 @@
 #   each capped at MAX seconds (default 120), and the Whipple bicycle at 5 m/s to T = 10, capped at
 #   2 MAX; per run: the time, how far it got, its steps (rejected) and its final width.
 #   bench/enclose_goals.sh BUILD_DIR [OTHER_APPELL] [MAX]
+# ONLY="urdf_kr5 urdf_wam" in the environment runs those scenes alone.
 # OTHER_APPELL: an `appell` built from another commit, inside a build folder (its data paths are
 # its folder's); leave it out to run this build's alone.  The binary this one is compared with in
 # docs/benchmarks.md is d4ccc66's: `git worktree add /tmp/old d4ccc66` and build it there, or
@@ -16,6 +17,7 @@ trap 'rm -rf "$work"' EXIT
 field() { sed -n "s/^  \"$2\": \"\\{0,1\\}\\([^,\"]*\\)\"\\{0,1\\},\$/\\1/p" "$1"; }
 printf "%-34s %-6s %5s | %8s %10s %14s %9s\n" scene binary T seconds reached "steps (rej.)" width
 while read -r scene T cap; do
+  if [ -n "${ONLY:-}" ] && [[ " $ONLY " != *" $scene "* ]]; then continue; fi
   for which in this other; do
     bin="$build/appell"
     if [ "$which" = other ]; then

@@ -1336,14 +1336,57 @@ BOOST_AUTO_TEST_CASE(a_tree_of_any_size_is_enclosed_around_its_motion, *appell::
   auto check = [&](const std::string& scene, const std::string& T, int components, const std::string& tag) {
     BOOST_TEST(enclosed_around_mpfr(scene, T, tag, false) == components, tag);
   };
-  check(appell::testing::generated_chain_scene(7, "appell_cli_chain"), "0.002", 14, "chain7");
+  check(appell::testing::generated_chain_scene(7, "appell_cli_chain"), "0.002", 14 + 7 * 6, "chain7");
+  // The joints' wrenches along the motion (system_problem::results: joint_wrenches_along, in the
+  // step's jets) are eval's: at the initial state, simulate's first row in MPFR at 200 bits and
+  // `eval` in the same scalar (its own path: joint_wrenches_into) agree to 1e-50 of the wrench's
+  // scale, every component of every joint of the WAM (8 joints, 48 values).
+  {
+    const std::string scene = APPELL_SOURCE_DIR + "/data/scenes/urdf_wam.json", sim = (work / "wam_wrenches").string();
+    const outcome s = run("simulate " + scene + " --t-end 0.001 --every 0.001 --scalar mpfr --bits 200 --quiet --out " + sim);
+    BOOST_TEST_REQUIRE(s.status == 0, s.err);
+    const outcome e = run("eval " + scene + " --scalar mpfr --bits 200");
+    BOOST_TEST_REQUIRE(e.status == 0, e.err);
+    const appell::json_value doc = appell::parse_json(e.out);
+    const appell::json_value* results = doc.find("results");
+    BOOST_TEST_REQUIRE(results != nullptr);
+    const auto rows = csv_rows(sim + "/trajectory.csv");
+    BOOST_TEST_REQUIRE(rows.size() >= 2u);
+    int compared = 0;
+    for (const auto& m : results->members) {
+      const bool wrench = m.key.size() > 6 && (m.key.ends_with("_force") || m.key.ends_with("_moment"));
+      if (!wrench) continue;
+      for (std::size_t i = 0; i < 3; ++i) {
+        const std::string column = m.key + "_" + "xyz"[i];
+        const auto at = std::find(rows[0].begin(), rows[0].end(), column);
+        BOOST_TEST_REQUIRE((at != rows[0].end()), column << " not in trajectory.csv");
+        const std::string& from_motion = rows[1][static_cast<std::size_t>(at - rows[0].begin())];
+        const appell::json_value* v = m.value.items[i].find("value");
+        BOOST_TEST_REQUIRE(v != nullptr);
+        const double b = std::stod(v->text);
+        // the decimals subtracted in MPFR
+        mpfr_t x, y;
+        mpfr_inits2(400, x, y, static_cast<mpfr_ptr>(nullptr));
+        mpfr_set_str(x, from_motion.c_str(), 10, MPFR_RNDN);
+        mpfr_set_str(y, v->text.c_str(), 10, MPFR_RNDN);
+        mpfr_sub(x, x, y, MPFR_RNDN);
+        mpfr_abs(x, x, MPFR_RNDN);
+        BOOST_TEST(mpfr_get_d(x, MPFR_RNDU) <= 1e-50 * std::max(1.0, std::fabs(b)), column << ": " << from_motion << " vs eval " << v->text);
+        mpfr_clears(x, y, static_cast<mpfr_ptr>(nullptr));
+        ++compared;
+      }
+    }
+    BOOST_TEST(compared == 48);
+  }
   if (std::filesystem::exists("/usr/share/doc/dart/data/sdf/atlas/atlas_v3_no_head.urdf")) {
-    check(APPELL_SOURCE_DIR + "/data/scenes/urdf_atlas.json", "0.0005", 54, "atlas");
+    // 54 components and its 33 links' joint wrenches (6 values each)
+    check(APPELL_SOURCE_DIR + "/data/scenes/urdf_atlas.json", "0.0005", 54 + 33 * 6, "atlas");
     // on its feet: 33 coordinates and 21 free speeds (54 components), Cotton's method on the
     // recursion (system/tree_constraints.hpp) on the run-time slopes; the results both write
     // (the solved speeds, the reactions, the soles' forces, couples and margins) compared too:
-    // 124 values
-    check(APPELL_SOURCE_DIR + "/data/scenes/urdf_atlas_standing.json", "0.0005", 124, "atlas_standing");
+    // 124 values; and the joint wrenches of its 39 links (the floating base's 6 among them), the
+    // soles' forces carried
+    check(APPELL_SOURCE_DIR + "/data/scenes/urdf_atlas_standing.json", "0.0005", 124 + 39 * 6, "atlas_standing");
   }
 }
 
@@ -1442,6 +1485,73 @@ BOOST_AUTO_TEST_CASE(a_system_of_any_size_is_enclosed_around_its_motion, *appell
   const outcome r = run("validity " + disks + " --vary mu=0.2:0.5 --t-end 0.05 --resolution 0.1 --quiet --out " + v);
   BOOST_TEST_REQUIRE(r.status == 0, r.err);
   BOOST_TEST(std::filesystem::exists(v + "/validity.csv"));
+}
+
+BOOST_AUTO_TEST_CASE(arb_runs_reference_enclose_and_validity_beside_mpfi, *appell::test::needs_scalars({"mpfi", "arb"})) {
+  // The ball scalar through the commands (issue 57, point 4), each beside MPFI at the same bits:
+  // reference's certified values at 20 drawn states meet MPFI's, quantity by quantity; enclose's
+  // state of Euler's body at T = 2 meets MPFI's in every component; validity of the sphere in
+  // the bowl decides its contact over the same pieces with both.
+  const std::string euler = APPELL_SOURCE_DIR + "/data/scenes/euler_body.json";
+  std::map<std::string, std::vector<std::string>> ref[2];
+  const char* scalars[2] = {"arb", "mpfi"};
+  for (int k = 0; k < 2; ++k) {
+    const std::string out = (work / (std::string("scalar_ref_") + scalars[k])).string();
+    const outcome r = run("reference " + euler + " --box 'omega[0]=0.1:0.9,omega[2]=-1:1' --n 20 --scalar " + scalars[k] +
+                          " --bits 113 --quiet --out " + out);
+    BOOST_TEST_REQUIRE(r.status == 0, scalars[k] << ": " << r.err);
+    const auto rows = csv_rows(out + "/reference.csv");
+    BOOST_TEST_REQUIRE(rows.size() == 1u + 20u * 3u, scalars[k]);  // omega_dot's three components a state
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      BOOST_TEST(rows[i][2] == "certified", scalars[k] << " " << rows[i][0] << " " << rows[i][1]);
+      ref[k][rows[i][0] + " " + rows[i][1]] = {rows[i][3], rows[i][4]};
+    }
+  }
+  BOOST_TEST(ref[0].size() == ref[1].size());
+  for (const auto& [key, bounds] : ref[0]) {
+    BOOST_TEST_REQUIRE(ref[1].count(key) == 1u, key);
+    const auto& other = ref[1].at(key);
+    BOOST_TEST(meet(bounds[0], bounds[1], other[0], other[1]), key << ": arb [" << bounds[0] << ", " << bounds[1] << "], mpfi ["
+                                                                  << other[0] << ", " << other[1] << "]");
+  }
+  std::map<std::string, std::string> last[2];
+  for (int k = 0; k < 2; ++k) {
+    const std::string out = (work / (std::string("scalar_enclose_") + scalars[k])).string();
+    const outcome r = run("enclose " + euler + " --scalar " + scalars[k] + " --bits 113 --t-end 2 --quiet --out " + out);
+    BOOST_TEST_REQUIRE(r.status == 0, scalars[k] << ": " << r.err);
+    last[k] = last_step(out);
+  }
+  int compared = 0;
+  for (const std::string c : {"p", "q", "r"}) {  // omega on the body's axes
+    BOOST_TEST_REQUIRE(last[0].count(c + "_lo") == 1u, c);
+    BOOST_TEST(meet(last[0].at(c + "_lo"), last[0].at(c + "_hi"), last[1].at(c + "_lo"), last[1].at(c + "_hi")), c);
+    ++compared;
+  }
+  BOOST_TEST(compared == 3);
+  const std::string bowl = APPELL_SOURCE_DIR + "/data/scenes/system_sphere_in_bowl_lift_off.json";
+  // the pieces (lo, hi, verdict) of each; where an arb piece and an MPFI piece overlap, one
+  // holding and the other failing would contradict a proof
+  std::vector<std::vector<std::string>> pieces[2];
+  for (int k = 0; k < 2; ++k) {
+    const std::string out = (work / (std::string("scalar_validity_") + scalars[k])).string();
+    const outcome r = run("validity " + bowl + " --vary mu=0.1:0.5 --t-end 0.2 --resolution 0.2 --scalar " + scalars[k] +
+                          " --bits 113 --jobs 1 --quiet --out " + out);
+    BOOST_TEST_REQUIRE(r.status == 0, scalars[k] << ": " << r.err);
+    const auto rows = csv_rows(out + "/validity.csv");
+    BOOST_TEST_REQUIRE(rows.size() > 1u, scalars[k]);
+    BOOST_TEST_REQUIRE(rows[0][2] == "verdict");
+    pieces[k].assign(rows.begin() + 1, rows.end());
+  }
+  int decided = 0;
+  for (const auto& a : pieces[0]) {
+    decided += a[2] != "undecided";
+    for (const auto& b : pieces[1]) {
+      const bool overlap = std::stod(a[0]) < std::stod(b[1]) && std::stod(b[0]) < std::stod(a[1]);
+      BOOST_TEST(!(overlap && ((a[2] == "holds" && b[2] == "fails") || (a[2] == "fails" && b[2] == "holds"))),
+                 "arb " << a[2] << " on [" << a[0] << ", " << a[1] << "], mpfi " << b[2] << " on [" << b[0] << ", " << b[1] << "]");
+    }
+  }
+  BOOST_TEST(decided > 0);
 }
 
 BOOST_AUTO_TEST_CASE(enclose_on_two_threads_writes_the_files_of_one) {

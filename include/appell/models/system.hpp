@@ -571,6 +571,17 @@ struct system_problem {
         out.push_back({d.contacts[k].name + "_margins", margins});
       }
     }
+    // each joint's wrench, as eval gives it, where the tree's recursion gives the bodies'
+    // accelerations (the speeds the coordinates' rates: every urdf scene)
+    if (!model->sys.links.empty() && tree_accelerations_apply(model->sys)) {
+      std::vector<joint_wrench_result<S>> w;
+      joint_wrenches_along<T, S>(model->sys, a.q, u, a.t, acc, constraints() > 0 ? &reactions : nullptr, w);
+      for (std::size_t k = 0; k < w.size(); ++k) {
+        const std::string& joint = d.bodies[static_cast<std::size_t>(model->sys.links[k].body)].joint.name;
+        out.push_back({joint + "_force", {w[k].force(0), w[k].force(1), w[k].force(2)}});
+        out.push_back({joint + "_moment", {w[k].moment(0), w[k].moment(1), w[k].moment(2)}});
+      }
+    }
   }
 
   /// Whether state component i is a coordinate that a holonomic constraint involves (so that a

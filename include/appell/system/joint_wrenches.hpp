@@ -38,19 +38,20 @@ struct joint_wrench_result {
 
 namespace detail {
 /// The wrenches from each link's subtree sums (F, M: the inertia forces minus the applied ones,
-/// about the link's origin, on its axes) and its joint's own actuator.
-template <Scalar T>
-void joint_wrenches_from_sums(const compiled_system<T>& c, const std::vector<vec3<T>>& F, const std::vector<vec3<T>>& M,
-                              const std::vector<T>& values, const vector_t<T>* efforts,
-                              std::vector<joint_wrench_result<T>>& out) {
+/// about the link's origin, on its axes) and its joint's own actuator; in S (T itself, or the
+/// jets of a motion: joint_wrenches_along), the system's constants in T.
+template <Scalar T, class S = T>
+void joint_wrenches_from_sums(const compiled_system<T>& c, const std::vector<vec3<S>>& F, const std::vector<vec3<S>>& M,
+                              const std::vector<S>& values, const vector_t<S>* efforts,
+                              std::vector<joint_wrench_result<S>>& out) {
   using K = system_joint_definition::kind;
   const std::size_t n = c.links.size();
-  out.assign(n, joint_wrench_result<T>{});
+  out.assign(n, joint_wrench_result<S>{});
   for (std::size_t k = 0; k < n; ++k) {
     const auto& L = c.links[k];
     // The wrench: the subtree's sums and this joint's own actuator (not in the sums: its other half
     // acts on the parent).
-    joint_wrench_result<T>& w = out[k];
+    joint_wrench_result<S>& w = out[k];
     w.force = F[k];
     w.moment = M[k];
     if (L.type == K::fixed) continue;
@@ -58,15 +59,15 @@ void joint_wrenches_from_sums(const compiled_system<T>& c, const std::vector<vec
       w.effort = (*efforts)(L.coordinate);
     } else if (L.actuated()) {
       w.effort = L.effort_at(values.data());
-      const vec3<T> e = compiled_system<T>::scaled(L.axis, w.effort);
+      const vec3<S> e = compiled_system<T>::scaled(L.axis, w.effort);
       if (L.type == K::revolute) {
         w.moment += e;
       } else {
         w.force += e;
-        w.moment += cross(L.com, e);
+        w.moment += cross(base_vector<T, S>(L.com), e);
       }
     }
-    w.residual = dot(L.axis, L.type == K::revolute ? w.moment : w.force) - w.effort;
+    w.residual = dot(base_vector<T, S>(L.axis), L.type == K::revolute ? w.moment : w.force) - w.effort;
   }
 }
 /// The links' contacts with the ground (system_contact_definition::link) as applied wrenches:
@@ -76,17 +77,17 @@ void joint_wrenches_from_sums(const compiled_system<T>& c, const std::vector<vec
 /// subtracted from the subtree sums (inertia minus applied) of the link and of every ancestor,
 /// carried to each one's origin.  Without this the joints' wrenches would be those of feet in the
 /// air.
-template <Scalar T>
-void subtract_contact_wrenches(const compiled_system<T>& c, const vector_t<T>& q, const vector_t<T>& reactions,
-                               std::vector<vec3<T>>& F, std::vector<vec3<T>>& M) {
+template <Scalar T, class S = T>
+void subtract_contact_wrenches(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& reactions,
+                               std::vector<vec3<S>>& F, std::vector<vec3<S>>& M) {
   using K = system_joint_definition::kind;
   using std::cos, std::sin;
   const system_definition& d = *c.def;
   auto state_of = [&](const typename compiled_system<T>::link& L) {
-    typename compiled_system<T>::template link_state<T> st;
-    const T qk = L.coordinate >= 0 ? q(L.coordinate) : T(0);
+    typename compiled_system<T>::template link_state<S> st;
+    const S qk = L.coordinate >= 0 ? q(L.coordinate) : S(0);
     if (L.type == K::revolute) st.c = cos(qk), st.s = sin(qk);
-    st.offset = L.origin;
+    st.offset = base_vector<T, S>(L.origin);
     if (L.type == K::prismatic) st.offset += compiled_system<T>::times(L.R0, compiled_system<T>::scaled(L.axis, qk));
     return st;
   };
@@ -94,14 +95,15 @@ void subtract_contact_wrenches(const compiled_system<T>& c, const vector_t<T>& q
     const auto& ck = c.contacts[k];
     if (ck.link < 0) continue;
     const system_contact_definition& dk = d.contacts[k];
-    vec3<T> ff, mf = zero_matrix<vec3<T>>();
+    vec3<S> ff, mf = zero_matrix<vec3<S>>();
     for (int i = 0; i < 3; ++i) ff(i) = reactions(dk.constraints[static_cast<std::size_t>(i)]);
     if (ck.surface)
       for (int i = 0; i < 3; ++i) mf(i) = reactions(dk.constraints[static_cast<std::size_t>(3 + i)]);
     // the frame's axes on the link's
-    mat3<T> Fr;
+    mat3<S> Fr;
     if (ck.surface) {
-      Fr = ck.sole_axes;
+      for (int x = 0; x < 3; ++x)
+        for (int i = 0; i < 3; ++i) Fr(x, i) = from_base<S>(ck.sole_axes(x, i));
     } else {  // the fixed axes on the link's: each fixed axis carried down the path to the link
       std::vector<int> path;
       for (int body = ck.link; body >= 0;) {
@@ -110,8 +112,8 @@ void subtract_contact_wrenches(const compiled_system<T>& c, const vector_t<T>& q
         body = c.links[static_cast<std::size_t>(l)].parent;
       }
       for (int i = 0; i < 3; ++i) {
-        vec3<T> e = zero_matrix<vec3<T>>();
-        e(i) = T(1);
+        vec3<S> e = zero_matrix<vec3<S>>();
+        e(i) = S(1);
         for (auto it = path.rbegin(); it != path.rend(); ++it) {
           const auto& L = c.links[static_cast<std::size_t>(*it)];
           e = c.to_link(L, state_of(L), e);
@@ -119,12 +121,12 @@ void subtract_contact_wrenches(const compiled_system<T>& c, const vector_t<T>& q
         for (int x = 0; x < 3; ++x) Fr(x, i) = e(x);
       }
     }
-    vec3<T> f, m;
+    vec3<S> f, m;
     for (int x = 0; x < 3; ++x) {
       f(x) = Fr(x, 0) * ff(0) + Fr(x, 1) * ff(1) + Fr(x, 2) * ff(2);
       m(x) = Fr(x, 0) * mf(0) + Fr(x, 1) * mf(1) + Fr(x, 2) * mf(2);
     }
-    m = vec3<T>(m + cross(ck.origin, f));
+    m = vec3<S>(m + cross(base_vector<T, S>(ck.origin), f));
     // up the tree from the link: each ancestor's sums lose the contact's wrench about its origin
     for (int body = ck.link; body >= 0;) {
       const auto l = static_cast<std::size_t>(c.link_of[static_cast<std::size_t>(body)]);
@@ -133,8 +135,8 @@ void subtract_contact_wrenches(const compiled_system<T>& c, const vector_t<T>& q
       M[l] -= m;
       if (L.parent < 0) break;
       const auto st = state_of(L);
-      const vec3<T> fp = c.to_parent(L, st, f);
-      m = vec3<T>(c.to_parent(L, st, m) + cross(st.offset, fp));
+      const vec3<S> fp = c.to_parent(L, st, f);
+      m = vec3<S>(c.to_parent(L, st, m) + cross(st.offset, fp));
       f = fp;
       body = L.parent;
     }
@@ -230,6 +232,20 @@ void joint_wrenches_into(const compiled_system<T>& c, const vector_t<T>& q, cons
   if (reactions) detail::subtract_contact_wrenches(c, q, *reactions, *F_held, *M_held);
   detail::joint_wrenches_from_sums(c, *F_held, *M_held, *values_held, efforts, out);
 }
+/// Every link's joint wrench along a motion, in S (the jets or the intervals of a step, a
+/// point's T), by the recursion along the tree: forward dynamics (each joint's own effort), the
+/// accelerations udot of every speed, `reactions` those of the constraints (the links' contacts
+/// with the ground act on their links) or null.  Only where tree_accelerations_apply(c).
+template <Scalar T, class S>
+void joint_wrenches_along(const compiled_system<T>& c, const vector_t<S>& q, const vector_t<S>& u, const S& t,
+                          const vector_t<S>& udot, const vector_t<S>* reactions, std::vector<joint_wrench_result<S>>& out) {
+  std::vector<S> values;
+  std::vector<vec3<S>> F, M;
+  tree_subtree_wrenches_into<T, S>(c, q, u, t, udot, F, M, values);
+  if (reactions) detail::subtract_contact_wrenches<T, S>(c, q, *reactions, F, M);
+  detail::joint_wrenches_from_sums<T, S>(c, F, M, values, nullptr, out);
+}
+
 template <Scalar T>
 std::vector<joint_wrench_result<T>> joint_wrenches(const compiled_system<T>& c, const vector_t<T>& q,
                                                    const vector_t<T>& u, const T& t, const vector_t<T>& udot,
