@@ -307,9 +307,9 @@ int main(int argc, char** argv) {
       benchmark::RegisterBenchmark((std::string("chain-") + s + "/" + std::to_string(n)).c_str(), bench_chain, std::string(s), b, n);
     for (const auto& [s, b] : scalars)
       for (const bool balls : {false, true}) {
-        // the rigorous scalars only: a point scalar's dynamics carries no width (mpfr's run would
+        // the rigorous scalars only: a point scalar's dynamics carries no width (its run would
         // return before its loop, which google-benchmark aborts on)
-        if (std::string(s) == "double" || std::string(s) == "mpfr") continue;
+        if (!with_scalar(s, b, []<class T>(std::type_identity<T>) { return scalar_traits<T>::is_interval; })) continue;
         const std::string name = std::string("chain-dynamics-") + s + (balls ? "-balls/" : "-componentwise/") + std::to_string(n);
         benchmark::RegisterBenchmark(name.c_str(), bench_chain_dynamics, std::string(s), b, n, balls, name);
       }

@@ -406,7 +406,8 @@ struct system_problem {
   /// 3 x 3 matrices of multi_dual slopes outgrow Eigen's fixed-size storage beyond); a larger
   /// state takes the slopes sized at run time (runtime_slopes), the generic path or the tree's.
   static constexpr int generic_capacity = 12;
-  static constexpr bool generic_path_fits = Dim == runtime_slopes || (Dim >= 0 && Dim <= generic_capacity);
+  static_assert(Dim == runtime_slopes || (Dim >= 0 && Dim <= generic_capacity),
+                "system_problem: a compile-time capacity above 12; a larger state takes runtime_slopes");
   bool recursion() const { return tree_links_apply(model->sys); }
 
   /// The same motion carried in D components.
@@ -496,13 +497,9 @@ struct system_problem {
         appell_equations<S> e;
         tree_equations_into<T, S>(model->sys, a.q, a.v_a, a.t, e);
         acc = e.accelerations();
-      } else if constexpr (!generic_path_fits) {
-        throw std::logic_error("system_problem: the generic path carried in more than 12 components fixed at compile time");
       } else {
         acc = cotton_free_accelerations<4>(sys, a.q, a.v_a, a.t, 0);
       }
-    } else if constexpr (!generic_path_fits) {
-      throw std::logic_error("system_problem: the generic path carried in more than 12 components fixed at compile time");
     } else {
       const auto adapted = change_speeds(sys, change(), speeds());
       vector_t<S> v = vector_t<S>::Zero(speeds());
