@@ -325,6 +325,7 @@ nlohmann::json summary(const enclose_report& r, const settings& s, const std::st
             {"t_reached", r.t_reached},
             {"steps", r.steps},
             {"rejected_steps", r.rejected},
+            {"variational_steps", r.variational_steps},
             {"seconds", r.seconds},
             {"final_state", state_object(r.final_state)},
             {"final_largest_width", r.final_width},

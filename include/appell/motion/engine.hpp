@@ -422,6 +422,7 @@ enclose_report enclose_problem(const P& prob, const vector_t<I>& x0, const scene
   r.t_reached = t_reached;
   r.steps = st.steps;
   r.rejected = st.rejected;
+  r.variational_steps = st.variational;
   r.seconds = st.seconds;
   return r;
 }

@@ -136,6 +136,7 @@ struct enclose_report {
   std::string reason;
   std::string t_reached = "0";  ///< the last step's end, a decimal rounded down: enclosed over [0, t_reached]
   long steps = 0, rejected = 0;
+  long variational_steps = 0;  ///< steps whose linear part came from the variational equation
   double seconds = 0;
 };
 
