@@ -581,6 +581,10 @@ inline double step_growth(double used, int p) {
 template <class I>
 bool flow_jacobian(const matrix_t<I>& A, const I& h, matrix_t<I>& J) {
   const Eigen::Index n = A.rows();
+  auto finite = [](const I& x) { return std::isfinite(approx_double(I(lower(x)))) && std::isfinite(approx_double(I(upper(x)))) && !(upper(x) < lower(x)); };
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j)
+      if (!finite(A(i, j))) return false;  // an empty or unbounded entry: refused, never carried
   I alpha(0);
   for (Eigen::Index i = 0; i < n; ++i) {
     I row(0);
@@ -608,7 +612,10 @@ bool flow_jacobian(const matrix_t<I>& A, const I& h, matrix_t<I>& J) {
   }
   const I rho = from_bounds_sym<I>(thin_of<I>(upper(bound)));
   for (Eigen::Index i = 0; i < n; ++i)
-    for (Eigen::Index j = 0; j < n; ++j) J(i, j) += rho;
+    for (Eigen::Index j = 0; j < n; ++j) {
+      J(i, j) += rho;
+      if (!finite(J(i, j))) return false;
+    }
   return true;
 }
 
@@ -621,6 +628,7 @@ double jacobian_spread(const matrix_t<I>& J, const vector_t<I>& X, const vector_
     double row = 0;
     for (Eigen::Index j = 0; j < J.cols(); ++j)
       row += approx_double(I(scalar_traits<I>::width(J(i, j)))) * approx_double(thin_of<I>(mag<I>(I(X(j) - xh(j)))));
+    if (std::isnan(row)) return row;  // a NaN spread: the variational part refused
     e = std::max(e, row);
   }
   return e;
@@ -953,7 +961,17 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
           variational = false;
         }
       }
-      linear_part.step_taken(true, variational);  // (a centre that failed: the slopes compute it, or say why not)
+      linear_part.step_taken(true, variational);
+      // A centre that failed as the motion may (a domain, a solve, an expression's branch point):
+      // the slopes compute it again and say why; anything else is a bug and leaves the run.
+      if (centre_error) {
+        try {
+          std::rethrow_exception(centre_error);
+        } catch (const certification_error&) {
+        } catch (const domain_error&) {
+        } catch (const std::invalid_argument&) {
+        }
+      }
     } else if (P::dim == runtime_slopes) {
       linear_part.step_taken(false, false);
     }
@@ -992,7 +1010,6 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
         DX[k] = std::move(whole);
       }
     if (!accepted) break;
-    if (variational) ++st.variational;
     if (!last && (!at_break || h_last == 0)) {  // a step cut short at a breakpoint says little of the next
       h_last = approx_double(h);
       used_last = used;
@@ -1111,6 +1128,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     verify_upward_rounding("enclose");  // the right-hand side's own code may have switched it
     emit(step);
     ++st.steps;
+    if (variational) ++st.variational;
     t = step.t1;
     if (at_break) segment_start = breaks[next_break++];
     X = Xn;
