@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Issue 57's and 58's goals for the motion, each run against the binary of another version in the
 # same run, one after the other (never side by side: --jobs 2 takes both cores):
-#   the KR5 to T = 1, the WAM to T = 1, Atlas (pelvis fixed) to T = 0.1, Atlas standing to T = 1,
+#   the KR5 to T = 1, the WAM to T = 1, Atlas (pelvis fixed) to T = 0.1, Atlas standing to T = 1
+#   (on its torques, and held by joint stiffness: scripts/standing_gains.py),
 #   each capped at MAX seconds (default 120), and the Whipple bicycle at 5 m/s to T = 10, capped at
 #   2 MAX; per run: the time, how far it got, its steps (rejected) and its final width.
 #   bench/enclose_goals.sh BUILD_DIR [OTHER_APPELL] [MAX]
@@ -37,5 +38,6 @@ urdf_kr5 1 $max
 urdf_wam 1 $max
 urdf_atlas 0.1 $max
 urdf_atlas_standing 1 $max
+urdf_atlas_standing_held 1 $max
 system_whipple_bicycle_weave_5 10 $((2 * max))
 LIST

@@ -343,81 +343,153 @@ BOOST_AUTO_TEST_CASE(the_flow_jacobian_holds_the_variational_equation_s_solution
   // (k + 1) Phi_(k+1) = A0 Phi_k + E Phi_(k-1), summed until the terms are below 1e-80.  The
   // interval input is A0 + [0, h] E, which holds A(t) over the step; 400 random systems of 2 to
   // 7 components, h from 1e-4 to 0.3, entries of A0 up to 20 and of E up to 5 (h |A| up to
-  // about 40, in practice below 30; the refusals, h |A| >= 30 and an unbounded entry, at the end).  Every entry inside, and
-  // with E = 0 (a point A) the enclosure is thin: its width below 1e-12 e^(h ||A||) (not a wide
-  // one that holds anything).
+  // about 40, in practice below 30; the refusals, h |A| >= 30 and an unbounded entry, at the end).
+  // Then the same 400 systems badly scaled, D A D^-1 with d_i = 10^(+-3) at random (not powers of
+  // 2: the truth is computed from the scaled entries): the remainder is bounded in a balanced norm
+  // and spread over the entries by d_j / d_i, each of which must still hold the truth; most of
+  // them have h ||A||_inf far above 30 and are taken only because of the balancing.  Every entry
+  // inside, and with E = 0 (a point A) the enclosure is thin: its width below 1e-12 e^(h ||A||)
+  // (unscaled; times d_i / d_j when scaled), not a wide one that holds anything.
   const evaluation_scope<interval> scope;
   std::mt19937_64 gen(20261207u);
   std::uniform_real_distribution<double> u(-1.0, 1.0), lh(std::log(1e-4), std::log(0.3));
   std::uniform_int_distribution<int> dim(2, 7);
-  int checked = 0, refused = 0, thin_cases = 0;
-  double widest_thin = 0;
-  for (int c = 0; c < 400; ++c) {
-    const int n = dim(gen);
-    const double h = std::exp(lh(gen));
-    const double a_scale = 20 * std::abs(u(gen)), e_scale = c % 4 == 0 ? 0.0 : 5 * std::abs(u(gen));
-    Eigen::MatrixXd A0(n, n), E(n, n);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        A0(i, j) = a_scale * u(gen);
-        E(i, j) = e_scale * u(gen);
+  for (const bool scaled : {false, true}) {
+    int checked = 0, refused = 0, thin_cases = 0, beyond_plain_norm = 0;
+    double widest_thin = 0;
+    for (int c = 0; c < 400; ++c) {
+      const int n = dim(gen);
+      const double h = std::exp(lh(gen));
+      const double a_scale = 20 * std::abs(u(gen)), e_scale = c % 4 == 0 ? 0.0 : 5 * std::abs(u(gen));
+      Eigen::MatrixXd A0(n, n), E(n, n);
+      Eigen::VectorXd d = Eigen::VectorXd::Ones(n);
+      if (scaled)
+        for (int i = 0; i < n; ++i) d(i) = std::pow(10.0, 3 * u(gen));
+      double row_max = 0;  // the scale of Phi's terms: e^(h ||A0||), unscaled
+      for (int i = 0; i < n; ++i) {
+        double row = 0;
+        for (int j = 0; j < n; ++j) {
+          const double a = a_scale * u(gen), e = e_scale * u(gen);
+          row += std::abs(a);
+          A0(i, j) = a * d(i) / d(j);
+          E(i, j) = e * d(i) / d(j);
+        }
+        row_max = std::max(row_max, row);
       }
-    matrix_t<interval> A(n, n);
-    const interval tau(0.0, h);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) A(i, j) = interval(A0(i, j)) + tau * interval(E(i, j));
-    matrix_t<interval> J;
-    if (!ode::detail::flow_jacobian(A, interval(h), J)) {
-      ++refused;
-      continue;
-    }
-    // the truth, in plain loops (row-major n x n)
-    using M = std::vector<truth_t>;
-    const auto at = [n](int i, int j) { return static_cast<std::size_t>(i * n + j); };
-    M a0(static_cast<std::size_t>(n * n)), e(a0.size()), prev(a0.size(), truth_t(0)), cur(a0.size(), truth_t(0));
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        a0[at(i, j)] = truth_t(A0(i, j));
-        e[at(i, j)] = truth_t(E(i, j));
-        cur[at(i, j)] = truth_t(i == j ? 1 : 0);
+      matrix_t<interval> A(n, n);
+      const interval tau(0.0, h);
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) A(i, j) = interval(A0(i, j)) + tau * interval(E(i, j));
+      matrix_t<interval> J;
+      if (!ode::detail::flow_jacobian(A, interval(h), J)) {
+        ++refused;
+        continue;
       }
-    M phi = cur;
-    truth_t hk(1);
-    const truth_t th(h);
-    for (int k = 0; k < 4000; ++k) {
-      M next(a0.size(), truth_t(0));
-      truth_t big(0);
-      hk *= th;
+      double plain_norm = 0;
+      for (int i = 0; i < n; ++i) {
+        double row = 0;
+        for (int j = 0; j < n; ++j) row += std::max(std::abs(A(i, j).lower()), std::abs(A(i, j).upper()));
+        plain_norm = std::max(plain_norm, row);
+      }
+      if (h * plain_norm >= 30) ++beyond_plain_norm;
+      // the truth, in plain loops (row-major n x n)
+      using M = std::vector<truth_t>;
+      const auto at = [n](int i, int j) { return static_cast<std::size_t>(i * n + j); };
+      M a0(static_cast<std::size_t>(n * n)), e(a0.size()), prev(a0.size(), truth_t(0)), cur(a0.size(), truth_t(0));
       for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
-          truth_t s(0);
-          for (int l = 0; l < n; ++l) s += a0[at(i, l)] * cur[at(l, j)] + e[at(i, l)] * prev[at(l, j)];
-          next[at(i, j)] = s / (k + 1);
-          const truth_t term = next[at(i, j)] * hk;
-          phi[at(i, j)] += term;
-          if (abs(term) > big) big = abs(term);
+          a0[at(i, j)] = truth_t(A0(i, j));
+          e[at(i, j)] = truth_t(E(i, j));
+          cur[at(i, j)] = truth_t(i == j ? 1 : 0);
         }
-      prev = std::move(cur);
-      cur = std::move(next);
-      if (k > 5 && big < truth_t("1e-80")) break;
-    }
-    double row_max = 0;  // the scale of Phi's terms: e^(h ||A0||)
-    for (int i = 0; i < n; ++i) row_max = std::max(row_max, A0.row(i).cwiseAbs().sum());
-    const double scale = std::exp(h * row_max);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        BOOST_TEST(truth_t(J(i, j).lower()) <= phi[at(i, j)]);
-        BOOST_TEST(phi[at(i, j)] <= truth_t(J(i, j).upper()));
-        if (e_scale == 0) widest_thin = std::max(widest_thin, (J(i, j).upper() - J(i, j).lower()) / scale);
+      M phi = cur;
+      truth_t hk(1);
+      const truth_t th(h);
+      for (int k = 0; k < 4000; ++k) {
+        M next(a0.size(), truth_t(0));
+        truth_t big(0);
+        hk *= th;
+        for (int i = 0; i < n; ++i)
+          for (int j = 0; j < n; ++j) {
+            truth_t s(0);
+            for (int l = 0; l < n; ++l) s += a0[at(i, l)] * cur[at(l, j)] + e[at(i, l)] * prev[at(l, j)];
+            next[at(i, j)] = s / (k + 1);
+            const truth_t term = next[at(i, j)] * hk;
+            phi[at(i, j)] += term;
+            if (abs(term) > big) big = abs(term);
+          }
+        prev = std::move(cur);
+        cur = std::move(next);
+        if (k > 5 && big < truth_t("1e-80")) break;
       }
-    ++checked;
-    if (e_scale == 0) ++thin_cases;
+      const double scale = std::exp(h * row_max);
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          BOOST_TEST(truth_t(J(i, j).lower()) <= phi[at(i, j)]);
+          BOOST_TEST(phi[at(i, j)] <= truth_t(J(i, j).upper()));
+          if (e_scale == 0) widest_thin = std::max(widest_thin, (J(i, j).upper() - J(i, j).lower()) / (scale * d(i) / d(j)));
+        }
+      ++checked;
+      if (e_scale == 0) ++thin_cases;
+    }
+    BOOST_TEST_MESSAGE("flow_jacobian" << (scaled ? " (scaled)" : "") << ": " << checked << " systems checked, " << refused
+                                       << " refused (h |A| >= 30 balanced), " << beyond_plain_norm
+                                       << " with h ||A||_inf >= 30 taken, " << thin_cases << " with a point A, widest entry there "
+                                       << widest_thin << " e^(h ||A||)");
+    BOOST_TEST(checked >= 300);
+    BOOST_TEST(thin_cases >= 60);
+    BOOST_TEST(widest_thin < 1e-12);
+    if (scaled) BOOST_TEST(beyond_plain_norm >= 100);
   }
-  BOOST_TEST_MESSAGE("flow_jacobian: " << checked << " systems checked, " << refused << " refused (h |A| >= 30), "
-                                       << thin_cases << " with a point A, widest entry there " << widest_thin << " e^(h ||A||)");
-  BOOST_TEST(checked >= 300);
-  BOOST_TEST(thin_cases >= 60);
-  BOOST_TEST(widest_thin < 1e-12);
+  // A stiff second-order system, x'' = -K x with K = diag(10^4, 1) (two pairs, not coupled), as a
+  // state's rates: A = [[0, 1], [-K, 0]], ||A||_inf = 10^4 but spectral radius 100: h = 0.01 has
+  // h ||A||_inf = 100, refused by the plain norm, and h a about 1.3 balanced, taken; the truth
+  // Phi(h) = [[cos(w h), sin(w h) / w], [-w sin(w h), cos(w h)]] of each pair.
+  {
+    matrix_t<interval> A = matrix_t<interval>::Zero(4, 4), J;
+    A(0, 2) = A(1, 3) = interval(1.0);
+    A(2, 0) = interval(-1e4);
+    A(3, 1) = interval(-1.0);
+    BOOST_TEST_REQUIRE(ode::detail::flow_jacobian(A, interval(0.01), J));
+    const truth_t w(100), th(0.01);  // the double h, exactly
+    BOOST_TEST(truth_t(J(0, 0).lower()) <= cos(w * th));
+    BOOST_TEST(cos(w * th) <= truth_t(J(0, 0).upper()));
+    BOOST_TEST(truth_t(J(0, 2).lower()) <= sin(w * th) / w);
+    BOOST_TEST(sin(w * th) / w <= truth_t(J(0, 2).upper()));
+    BOOST_TEST(truth_t(J(2, 0).lower()) <= -w * sin(w * th));
+    BOOST_TEST(-w * sin(w * th) <= truth_t(J(2, 0).upper()));
+    BOOST_TEST(truth_t(J(3, 1).lower()) <= -sin(th));
+    BOOST_TEST(-sin(th) <= truth_t(J(3, 1).upper()));
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) BOOST_TEST(J(i, j).upper() - J(i, j).lower() < 1e-12 * std::max(1.0, std::abs(J(i, j).upper())));
+  }
+  // The remainder itself: in mpfi at 1200 bits the series stops at 2^-(1000 + 16 + range) (the
+  // target's precision is capped at 1000 bits), far above the rounding, so only the remainder makes
+  // J hold the truth: left out, or spread over the entries the wrong way (rho d_i / d_j for
+  // rho d_j / d_i), it leaves the truth outside.  x'' = -2^14 x, A = [[0, 1], [-2^14, 0]]: |A|'s
+  // Perron root 128, balanced exactly by d = (2^7, 1) (both rows of D |A| D^-1 sum to 128); at
+  // h = 2^-8, Phi(h) = [[cos 0.5, sin 0.5 / 128], [-128 sin 0.5, cos 0.5]], the truth at 1500 bits.
+  {
+    const mp_precision_scope bits(1200);
+    const evaluation_scope<mpfi> mp_scope;
+    matrix_t<mpfi> A = matrix_t<mpfi>::Zero(2, 2), J;
+    A(0, 1) = mpfi(1);
+    A(1, 0) = mpfi(-16384);
+    BOOST_TEST_REQUIRE(ode::detail::flow_jacobian(A, mpfi(std::ldexp(1.0, -8)), J));
+    std::array<mpfr, 4> truth;
+    {
+      const mp_precision_scope truth_bits(1500);
+      const mpfr w(128), th(std::ldexp(1.0, -8));
+      truth = {cos(w * th), sin(w * th) / w, -w * sin(w * th), cos(w * th)};
+    }
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        const mpfr& t = truth[static_cast<std::size_t>(2 * i + j)];
+        BOOST_TEST((lower(J(i, j)) <= t && t <= upper(J(i, j))), "entry " << i << j);
+        // and thin: within 2^-990 times the entry's scale (the remainder, not a wide interval)
+        BOOST_TEST(mpfr(upper(J(i, j)) - lower(J(i, j))) < mpfr(std::ldexp(1.0, -990)) * (i == 1 && j == 0 ? 128 : 1));
+      }
+  }
   // refused, never carried: an unbounded entry, and h |A| >= 30
   matrix_t<interval> A = matrix_t<interval>::Identity(2, 2), J;
   A(0, 1) = interval(0.0, std::numeric_limits<double>::infinity());

@@ -66,6 +66,15 @@ namespace ode {
 struct run_stopped : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+/// An error the motion itself may raise, which ends a run where it stands (what was computed
+/// kept): a solve or an enclosure not certified, a value outside a function's domain, or an
+/// expression refusing its arguments (std::invalid_argument: a derivative at a branch point).
+/// Any other error is a bug, and leaves the run.
+inline bool motion_refusal(const std::exception& e) {
+  return dynamic_cast<const certification_error*>(&e) != nullptr || dynamic_cast<const domain_error*>(&e) != nullptr ||
+         dynamic_cast<const std::invalid_argument*>(&e) != nullptr;
+}
 }  // namespace ode
 
 }  // namespace appell

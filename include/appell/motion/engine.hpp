@@ -186,8 +186,7 @@ simulate_report simulate_problem(const P& prob, const vector_t<T>& x0, const sce
     // the motion failed on its way (the state no longer finite, a step collapse near a
     // singularity, an expression refusing its arguments) or was stopped (max_seconds): what was
     // computed stands
-    const bool motion_failure = dynamic_cast<const certification_error*>(&e) || dynamic_cast<const domain_error*>(&e) ||
-                                dynamic_cast<const std::invalid_argument*>(&e) || dynamic_cast<const ode::run_stopped*>(&e);
+    const bool motion_failure = ode::motion_refusal(e) || dynamic_cast<const ode::run_stopped*>(&e);
     if (!motion_failure || !first) throw;  // a bug, or not even the initial state
     failure = e.what();
     // the integrator's counts went with its exception: the time is measured here, the steps

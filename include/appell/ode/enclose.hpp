@@ -515,6 +515,16 @@ namespace detail {
 /// The least order of a step's slopes at series order p: 6, or p - 1 below it.
 inline int lowest_slope_order(int p) { return std::min(6, p - 1); }
 
+/// The width a step's linear part may add beyond the exact one's: `share` of the state's largest
+/// width, or, where X is thinner, a tenth of the least remainder tolerance.  The slopes' omitted
+/// terms (slope_order) and the variational part's spread (enclose's step end) are held to it.
+template <class I>
+double slope_allowance(const vector_t<I>& X, const std::vector<double>& remainder_tol, double share) {
+  double least_tol = std::numeric_limits<double>::infinity();
+  for (double r : remainder_tol) least_tol = std::min(least_tol, r);
+  return std::max(share * max_width(X), 0.1 * least_tol);
+}
+
 /// The order q of a step's slopes (see the step end): the least, from lowest_slope_order(p),
 /// whose neglected terms over a step of length h, sum_{q<k<p} x_k(X) h^k taken over the box X as
 /// they stand, are within `share` of the state's largest width in every component (or, where X
@@ -526,9 +536,7 @@ template <class I>
 int slope_order(const series<I>& cX, const vector_t<I>& X, const std::vector<double>& remainder_tol, double h, int p,
                 double share) {
   const int lowest = lowest_slope_order(p);
-  double least_tol = std::numeric_limits<double>::infinity();
-  for (double r : remainder_tol) least_tol = std::min(least_tol, r);
-  const double allowed = std::max(share * max_width(X), 0.1 * least_tol);
+  const double allowed = slope_allowance(X, remainder_tol, share);
   // tail[q]: the largest over the components of sum_{q<k<p} width(x_k(X)) h^k
   std::vector<double> tail(static_cast<std::size_t>(p), 0.0);
   for (Eigen::Index i = 0; i < X.size(); ++i) {
@@ -567,34 +575,78 @@ inline double step_growth(double used, int p) {
   return std::clamp(std::pow(0.1 / used, 1.0 / (p + 6)), 0.5, 2.0);
 }
 
+/// Exponents e_i of a diagonal scaling D = diag(2^e_i) that balances |A| in the infinity norm:
+/// the row sums of D |A| D^-1, |A_ij| 2^(e_i - e_j), near |A|'s Perron root, the least any
+/// scaling gives.  Found in double (any scaling is sound: it only chooses the norm the remainder
+/// is bounded in) from |A|'s Perron vector v, 2^-20 added to it at each iteration (every v_i >=
+/// 2^-20, the exponents from 0 to 20), d_i = 1 / v_i rounded to a power of 2 (exact in every
+/// interval type); all 0 where the iteration does not give finite numbers.  A state's derivative that depends on the others at very different scales (a
+/// speed whose rate is a stiffness times an angle: rows of |A| of 10^4 where its eigenvalues are
+/// 10^2) has an unbalanced norm far above its spectral radius; balanced, the norm comes near it.
+template <class I>
+std::vector<int> balancing_exponents(const matrix_t<I>& A) {
+  const Eigen::Index n = A.rows();
+  Eigen::MatrixXd M(n, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) M(i, j) = approx_double(thin_of<I>(mag<I>(A(i, j))));
+  std::vector<int> e(static_cast<std::size_t>(n), 0);
+  if (!M.allFinite()) return e;
+  // Power iteration on |A| + r 1 (r the Collatz-Wielandt bound max_i (|A| v)_i / v_i, which
+  // tends to the root): a state's rates and second derivatives make |A| cyclic (eigenvalues +-
+  // the root), on which the plain iteration would not settle.
+  Eigen::VectorXd v = Eigen::VectorXd::Ones(n);
+  for (int it = 0; it < 100; ++it) {
+    const Eigen::VectorXd w = M * v;
+    const double r = (w.array() / v.array()).maxCoeff();
+    if (!(r > 0) || !std::isfinite(r)) return e;  // A = 0: no scaling
+    v = w + r * v;
+    v = (v / v.maxCoeff()).array() + std::ldexp(1.0, -20);
+  }
+  if (!v.allFinite()) return e;
+  for (Eigen::Index i = 0; i < n; ++i)
+    e[static_cast<std::size_t>(i)] = std::clamp(-static_cast<int>(std::lround(std::log2(v(i)))), 0, 20);
+  return e;
+}
+
 /// The flow's Jacobian over a step from the right-hand side's Jacobian over the step's a priori
 /// box B (the variational equation's own enclosure): with A(t) = f'(x(t)) in A for t in [0, h]
 /// (x(t) stays in B), Phi' = A(t) Phi, Phi(0) = 1, and Picard's iterates give
 ///     Phi(h) = sum_{k<=m} (iterated integral of A(s_1) ... A(s_k) over the simplex) + R_m,
 /// each iterated integral h^k / k! times a mean of products of k members of A, so inside
 /// h^k / k! A^k (interval products: each term from the last, T_k = (h / k) A T_(k-1), never a
-/// Horner form, whose shared factor would not enclose the independent means), and
-/// ||R_m||_inf <= (h a)^(m+1) / (m+1)! e^(h a), a = ||A||_inf (|Phi(s)| <= e^(s a), Gronwall).
-/// Terms are added until that bound is below 2^-(bits + 16); it is added to every entry.  Refused
-/// (false) where h a >= 30 (the terms would wrap, and the series would need too many).
+/// Horner form, whose shared factor would not enclose the independent means).  The remainder in
+/// a balanced norm (balancing_exponents): D Phi D^-1 solves the same equation with D A(t) D^-1,
+/// so ||D R_m D^-1||_inf <= (h a)^(m+1) / (m+1)! e^(h a), a = ||D A D^-1||_inf (Gronwall), and
+/// |R_m,ij| <= that bound times d_j / d_i.  Terms are added until the bound times the largest
+/// d_j / d_i is below 2^-(bits + 16); entry (i, j) gets the bound times its own d_j / d_i.
+/// Refused (false) where h a >= 30 (the terms would wrap, and the series would need too many).
 /// docs/motion.md, "The linear part from the variational equation".
 template <class I>
 bool flow_jacobian(const matrix_t<I>& A, const I& h, matrix_t<I>& J) {
   const Eigen::Index n = A.rows();
-  auto finite = [](const I& x) { return std::isfinite(approx_double(I(lower(x)))) && std::isfinite(approx_double(I(upper(x)))) && !(upper(x) < lower(x)); };
+  if (n == 0) {  // no state: Phi is 0 x 0
+    J.resize(0, 0);
+    return true;
+  }
+  auto bounded = [](const I& x) { return is_finite(x) && !(upper(x) < lower(x)); };
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j)
-      if (!finite(A(i, j))) return false;  // an empty or unbounded entry: refused, never carried
+      if (!bounded(A(i, j))) return false;  // an empty or unbounded entry: refused, never carried
+  const std::vector<int> e = balancing_exponents(A);
+  auto scale = [&](Eigen::Index i, Eigen::Index j) {  // d_i / d_j = 2^(e_i - e_j), exact
+    return I(std::ldexp(1.0, e[static_cast<std::size_t>(i)] - e[static_cast<std::size_t>(j)]));
+  };
   I alpha(0);
   for (Eigen::Index i = 0; i < n; ++i) {
     I row(0);
-    for (Eigen::Index j = 0; j < n; ++j) row += thin_of<I>(mag<I>(A(i, j)));
+    for (Eigen::Index j = 0; j < n; ++j) row += thin_of<I>(mag<I>(A(i, j))) * scale(i, j);
     alpha = thin_of<I>(upper(hull2(alpha, row)));
   }
   const I ha = thin_of<I>(upper(I(h * alpha)));
   if (!(upper(ha) < 30)) return false;
+  const int range = *std::max_element(e.begin(), e.end()) - *std::min_element(e.begin(), e.end());
   const int bits = static_cast<int>(std::min(1000u, scalar_traits<I>::precision_bits()));
-  const double target = std::ldexp(1.0, -(bits + 16));
+  const double target = std::ldexp(1.0, -(bits + 16 + range));
   matrix_t<I> T = matrix_t<I>::Identity(n, n);
   J = T;
   I bound = ha * exp(ha);  // (h a)^(k+1) / (k+1)! e^(h a) at k = 0
@@ -610,11 +662,11 @@ bool flow_jacobian(const matrix_t<I>& A, const I& h, matrix_t<I>& J) {
       }
     bound = bound * ha / I(k + 1);
   }
-  const I rho = from_bounds_sym<I>(thin_of<I>(upper(bound)));
+  const I rho = thin_of<I>(upper(bound));
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j) {
-      J(i, j) += rho;
-      if (!finite(J(i, j))) return false;
+      J(i, j) += from_bounds_sym<I>(thin_of<I>(upper(I(rho * scale(j, i)))));
+      if (!bounded(J(i, j))) return false;
     }
   return true;
 }
@@ -949,15 +1001,11 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
           matrix_t<I> A(n, n);
           A.leftCols(half) = DA[1];
           if (half < n) A.rightCols(n - half) = DB[1];
-          double least_tol = std::numeric_limits<double>::infinity();
-          for (double r : remainder_tol) least_tol = std::min(least_tol, r);
-          const double allowed = std::max(slope_share * detail::max_width(X), 0.1 * least_tol);
+          const double allowed = detail::slope_allowance(X, remainder_tol, slope_share);
           variational = detail::flow_jacobian(A, h, Jv) && detail::jacobian_spread(Jv, Xs, xh) <= allowed;
-        } catch (const certification_error&) {
-          variational = false;  // the Jacobian over B not enclosed: the slopes, which are over Xs
-        } catch (const domain_error&) {
-          variational = false;
-        } catch (const std::invalid_argument&) {  // an expression's derivative at a branch point
+        } catch (const std::exception& e) {
+          // the Jacobian over B not enclosed, or outside a domain: the slopes, which are over Xs
+          if (!motion_refusal(e)) throw;
           variational = false;
         }
       }
@@ -967,9 +1015,8 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
       if (centre_error) {
         try {
           std::rethrow_exception(centre_error);
-        } catch (const certification_error&) {
-        } catch (const domain_error&) {
-        } catch (const std::invalid_argument&) {
+        } catch (const std::exception& e) {
+          if (!motion_refusal(e)) throw;
         }
       }
     } else if (P::dim == runtime_slopes) {
@@ -1152,9 +1199,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
         st.reason = e.what();
         break;
       }
-      if (!dynamic_cast<const certification_error*>(&e) && !dynamic_cast<const domain_error*>(&e) &&
-          !dynamic_cast<const std::invalid_argument*>(&e))
-        throw;
+      if (!motion_refusal(e)) throw;
       st.complete = false;
       st.reason = "the motion cannot be continued at t = " + number_text(approx_double(t)) + ": " + e.what();
       break;
