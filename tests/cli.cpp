@@ -1391,8 +1391,9 @@ BOOST_AUTO_TEST_CASE(a_tree_of_any_size_is_enclosed_around_its_motion, *appell::
     // detail::flow_jacobian), not the slopes': summary.json counts them.  A robot that moves
     // (Atlas with its pelvis fixed, its arms falling) keeps the slopes: the Jacobian over the box
     // a step sweeps is too wide.
-    auto variational = [&](const std::string& tag) {  // (the summary's widths: more keys than parse_json takes)
-      const std::string s = slurp((work / (tag + "_enclose")).string() + "/summary.json");
+    auto summary = [&](const std::string& tag) { return slurp((work / (tag + "_enclose")).string() + "/summary.json"); };
+    // (variational steps, steps) of a summary.json (its widths: more keys than parse_json takes)
+    auto variational = [](const std::string& s) {
       auto field = [&](const std::string& key) {
         const std::size_t at = s.find("\"" + key + "\": ");
         BOOST_TEST_REQUIRE(at != std::string::npos, key);
@@ -1400,21 +1401,21 @@ BOOST_AUTO_TEST_CASE(a_tree_of_any_size_is_enclosed_around_its_motion, *appell::
       };
       return std::pair<long, long>(field("variational_steps"), field("steps"));
     };
-    const auto [standing_var, standing_steps] = variational("atlas_standing");
+    const auto [standing_var, standing_steps] = variational(summary("atlas_standing"));
     BOOST_TEST(standing_steps >= 1);
     BOOST_TEST(standing_var == standing_steps);
-    BOOST_TEST(variational("atlas").first == 0);
+    BOOST_TEST(variational(summary("atlas")).first == 0);
     // Held by joint stiffness (scripts/standing_gains.py): the gains make the right-hand side's
     // Jacobian badly scaled (||A||_inf about 2e4 where its balanced norm is about 160), and its
     // steps take the variational part only because flow_jacobian bounds the remainder in a
     // balanced norm (the plain norm refused every one: h ||A||_inf about 68); both soles hold.
     {
-      const std::string held = (work / "atlas_held_enclose").string();
-      const outcome r = run("enclose " + APPELL_SOURCE_DIR + "/data/scenes/urdf_atlas_standing_held.json --t-end 0.01 --quiet --out " + held);
+      const outcome r = run("enclose " + APPELL_SOURCE_DIR + "/data/scenes/urdf_atlas_standing_held.json --t-end 0.01 --quiet --out " +
+                            (work / "atlas_held_enclose").string());
       BOOST_TEST_REQUIRE(r.status == 0, r.err);
-      const std::string s = slurp(held + "/summary.json");
+      const std::string s = summary("atlas_held");
       BOOST_TEST(s.find("\"complete\": true") != std::string::npos);
-      const auto [held_var, held_steps] = variational("atlas_held");
+      const auto [held_var, held_steps] = variational(s);
       BOOST_TEST(held_steps >= 2);
       BOOST_TEST(held_var == held_steps);
       int holds = 0;

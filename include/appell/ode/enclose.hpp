@@ -580,9 +580,10 @@ inline double step_growth(double used, int p) {
 /// scaling gives.  Found in double (any scaling is sound: it only chooses the norm the remainder
 /// is bounded in) from |A|'s Perron vector v, 2^-20 added to it at each iteration (every v_i >=
 /// 2^-20, the exponents from 0 to 20), d_i = 1 / v_i rounded to a power of 2 (exact in every
-/// interval type); all 0 where the iteration does not give finite numbers.  A state's derivative that depends on the others at very different scales (a
-/// speed whose rate is a stiffness times an angle: rows of |A| of 10^4 where its eigenvalues are
-/// 10^2) has an unbalanced norm far above its spectral radius; balanced, the norm comes near it.
+/// interval type); all 0 where the iteration does not give finite numbers.  A state's derivative
+/// that depends on the others at very different scales (a speed whose rate is a stiffness times
+/// an angle: rows of |A| of 10^4 where its eigenvalues are 10^2) has an unbalanced norm far above
+/// its spectral radius; balanced, the norm comes near it.
 template <class I>
 std::vector<int> balancing_exponents(const matrix_t<I>& A) {
   const Eigen::Index n = A.rows();
