@@ -9,8 +9,10 @@ stable: kp_j = w^2 I_j, I_j = 1 / (d q''_j / d tau_j) the joint's effective iner
 contacts held (the accelerations are affine in the torques, so one evaluation with the torque
 moved by 1 N m gives the derivative up to rounding).  No damping term: a rate term with gains
 from the effective inertias makes the rates' equations stiff (its largest rate about n 2 zeta w
-over n joints), and the steps of `enclose` shrink with it (docs/motion.md); without it the rest
-is a stable centre, the enclosure's width grows slowly.
+over n joints), and the steps of `enclose` shrink with it (docs/motion.md).  Without it the
+buckling is gone, but at w = 30 one slow mode of the torso's and hips' pitch still leaves the rest,
+at 3.3 per second (scripts/standing_modes.py measures it: 2.5 at w = 40, 1.5 at w = 50, and
+every mode held at w = 60, up to 146 rad/s).
 
 usage: standing_gains.py APPELL STANDING_SCENE OUT_SCENE [W]    (W in rad/s, default 30)
 """
