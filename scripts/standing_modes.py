@@ -34,14 +34,13 @@ prints them.
 import json
 import os
 import re
+import subprocess
 import sys
 import tempfile
 
 import numpy as np
 
-import subprocess
-
-STEP = 1e-6  # the central differences' step in every coordinate and rate (rad, m, rad/s, m/s)
+STEP = 1e-6  # the central differences' step along each direction of T (rad, m)
 
 
 def accelerations(appell, scene, path, names):
@@ -90,9 +89,9 @@ def tangent_basis(G):
 
 
 def modes(appell, scene, path, coords, U):
-    """The eigenvalues of the rest's first-order system on T (per second).  B = 0: at rest the
-    rates enter the accelerations in products of two (load_scene refuses torques that name a
-    rate)."""
+    """The eigenvalues of the rest's first-order system on T (per second).  d q''/d q' is 0 at
+    rest: the rates enter the accelerations in products of two (load_scene refuses torques that
+    name a rate)."""
     A_T = U.T @ state_jacobian(appell, scene, path, coords, "q", U)
     m = U.shape[1]
     B_T = np.zeros((m, m))
