@@ -4,8 +4,8 @@
 (docs/contacts.md, "A humanoid held by joint stiffness").
 
 The torques that hold the robot at rest (scripts/standing_torques.py) leave an unstable rest:
-Atlas on its bent knees buckles at about 31 per second.  Stiffness about the pose makes the rest
-stable: kp_j = w^2 I_j, I_j = 1 / (d q''_j / d tau_j) the joint's effective inertia with the
+Atlas on its bent knees buckles at about 31 per second.  Stiffness about the pose removes the
+buckling: kp_j = w^2 I_j, I_j = 1 / (d q''_j / d tau_j) the joint's effective inertia with the
 contacts held (the accelerations are affine in the torques, so one evaluation with the torque
 moved by 1 N m gives the derivative up to rounding).  No damping term: a rate term with gains
 from the effective inertias makes the rates' equations stiff (its largest rate about n 2 zeta w
@@ -21,7 +21,7 @@ import os
 import sys
 import tempfile
 
-from standing_torques import evaluate  # appell eval in double: (accelerations, reactions)
+from standing_torques import evaluate, read_scene  # appell eval in double: (accelerations, reactions)
 
 
 def accelerations(appell, scene, path):
@@ -35,12 +35,8 @@ def main():
     w = float(sys.argv[4]) if len(sys.argv) == 5 else 30.0
     if not w > 0:
         sys.exit("standing_gains.py: W must be positive")
-    with open(source) as f:
-        scene = json.load(f)
+    scene = read_scene(source)
     torques = scene.get("torques", {})
-    # the file's path made absolute: the scene written elsewhere still finds its robot
-    if "file" in scene and not os.path.isabs(scene["file"]):
-        scene["file"] = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(source)), scene["file"]))
     joints = [j for j in scene["state"] if not j.startswith("base_")]
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "scene.json")

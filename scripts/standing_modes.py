@@ -34,22 +34,20 @@ prints them.
 import json
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
 
+from standing_torques import evaluate, read_scene  # appell eval in double; a scene, its robot's path absolute
+
 STEP = 1e-6  # the central differences' step along each direction of T (rad, m)
 
 
 def accelerations(appell, scene, path, names):
-    """appell eval in double: the accelerations of names."""
-    with open(path, "w") as f:
-        json.dump(scene, f)
-    args = [appell, "eval", path, "--scalar", "double", "--format", "json"]
-    results = json.loads(subprocess.run(args, check=True, capture_output=True, text=True).stdout)["results"]
-    return np.array([float(results[c + "_ddot"]["value"]) for c in names])
+    """appell eval in double: the accelerations of names, in their order."""
+    acc = evaluate(appell, scene, path)[0]
+    return np.array([acc[c] for c in names])
 
 
 def state_jacobian(appell, scene, path, coords, field, D):
@@ -112,11 +110,8 @@ def describe(name, lam):
 
 
 def load_scene(source):
-    with open(source) as f:
-        scene = json.load(f)
-    # the file's path made absolute: the scene written elsewhere still finds its robot
-    if "file" in scene and not os.path.isabs(scene["file"]):
-        scene["file"] = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(source)), scene["file"]))
+    """The scene (read_scene), refused unless at rest and with torques that name no rate."""
+    scene = read_scene(source)
     for c, s in scene["state"].items():
         if float(s.get("q_dot", "0")) != 0:
             sys.exit("standing_modes.py: %s's rate is %s: the scene is not at rest" % (c, s["q_dot"]))
@@ -162,7 +157,7 @@ def main():
             except ValueError:
                 sys.exit("standing_modes.py: the torque of %s is not a number (%s): give the standing scene "
                          "of scripts/standing_torques.py" % (j, tau))
-        G, a0 = torque_matrix(appell, scene, path, coords, joints)
+        G, _ = torque_matrix(appell, scene, path, coords, joints)
         U, s = tangent_basis(G)
         rows = [coords.index(j) for j in joints]
         U_j = U[rows, :]

@@ -30,6 +30,16 @@ def evaluate(appell, scene, path):
     return acc, reactions
 
 
+def read_scene(source):
+    """The scene at source, its robot's file made absolute: the scene written elsewhere still
+    finds its robot."""
+    with open(source) as f:
+        scene = json.load(f)
+    if "file" in scene and not os.path.isabs(scene["file"]):
+        scene["file"] = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(source)), scene["file"]))
+    return scene
+
+
 def eliminate(A, b):
     """Reduced row echelon form of [A | b]: (rows, pivots as (row, column), free columns)."""
     n, m = len(A), len(A[0])

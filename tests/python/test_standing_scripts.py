@@ -21,12 +21,17 @@ URDF = pathlib.Path("/usr/share/doc/dart/data/sdf/atlas/atlas_v3_no_head.urdf")
 pytestmark = pytest.mark.skipif(not URDF.exists(), reason="dart-doc's Atlas URDF is not installed")
 
 
-def run_script(name, *args):
+def script_output(name, *args):
+    """A script of scripts/ run with the build's appell: its standard output."""
     appell = build_program("appell")
     if appell is None:
         pytest.skip("no appell in the build tree")
-    subprocess.run([sys.executable, str(SOURCE / "scripts" / name), str(appell), *map(str, args)],
-                   check=True, capture_output=True, text=True)
+    return subprocess.run([sys.executable, str(SOURCE / "scripts" / name), str(appell), *map(str, args)],
+                          check=True, capture_output=True, text=True).stdout
+
+
+def run_script(name, *args):
+    script_output(name, *args)
 
 
 def load(path):
@@ -71,14 +76,6 @@ def test_the_held_scene_is_the_script_s(tmp_path):
         assert w.group(3) == s.group(3) and w.group(4) == s.group(4)
         gain = float(s.group(2))
         assert gain > 0 and close(w.group(2), gain, 2e-5), joint
-
-
-def script_output(name, *args):
-    appell = build_program("appell")
-    if appell is None:
-        pytest.skip("no appell in the build tree")
-    return subprocess.run([sys.executable, str(SOURCE / "scripts" / name), str(appell), *map(str, args)],
-                          check=True, capture_output=True, text=True).stdout
 
 
 REST = re.compile(r"^rest: (\d+) modes; largest real part (\S+) per s( \(unstable: (\d+) of them)?.*?"
