@@ -179,7 +179,15 @@ class memo_op {
       } else {
         const std::vector<T>& stored = e_->in[operands_.size()];
         const int a = std::min(len, keep_), b = std::min(static_cast<int>(stored.size()), keep_);
-        if (a != b || !identical_prefix(data, stored.data(), a)) keep_ = 0;
+        if (a == b && a > 0 && !identical_prefix(data + (a - 1), stored.data() + (a - 1), 1)) {
+          // The last differs: the first keep_ - 1 may still be taken where the rest agree (a pass
+          // after one that changed the last coefficient alone: ode::taylor_series_split's pass at
+          // x_k = 0 before the whole one).  Compared last first, so that such a pass scans each
+          // operand once.
+          keep_ = a == keep_ && keep_ > 1 && identical_prefix(data, stored.data(), a - 1) ? keep_ - 1 : 0;
+        } else if (a != b || !identical_prefix(data, stored.data(), a - 1)) {
+          keep_ = 0;
+        }
       }
     }
     operands_.emplace_back(data, len);
