@@ -515,10 +515,21 @@ namespace detail {
 /// On a step whose series take their linear part apart (enclose, taylor_series_split): a
 /// component's remainder may also be split_remainder_share of its width (the step adds at most
 /// that share of the width it has; 1e-4 took 16% fewer steps than the tolerance alone on the held
-/// humanoid to t = 0.2, its width 6% more), and the variational part's spread split_spread_share
-/// of the state's largest width.
+/// humanoid to t = 0.2, its width 6% more), and the variational part's spread the step's share
+/// of the horizon, h / T, times split_spread_run_share of the state's largest width: over the whole
+/// run the spreads taken so multiply the width by at most e^split_spread_run_share (the held
+/// humanoid's steps of 5 to 30 ms to T = 1: 0.5% to 3% a step; a fixed 1% a step let the WAM's
+/// thousands of short steps multiply it by 2e3 to t = 0.48).
 inline constexpr double split_remainder_share = 1e-4;
-inline constexpr double split_spread_share = 1e-2;
+inline constexpr double split_spread_run_share = 3.0;
+/// A split step is near rest where its a priori box B is at most this many times as wide as the
+/// state (the held humanoid's: 30 to 600 times; the WAM's, an arm that moves, 1e9): only there
+/// is the spread's allowance the run's share, and a step refused by it taken again, shorter.
+inline constexpr double split_near_rest = 1e5;
+/// On those steps the variational part's Jacobian is the product of the flow's over this many
+/// equal pieces of the step, each from the right-hand side's Jacobian over the piece's own box
+/// (enclose's step end).
+inline constexpr int split_variational_pieces = 4;
 
 /// The least order of a step's slopes at series order p: 6, or p - 1 below it.
 inline int lowest_slope_order(int p) { return std::min(6, p - 1); }
@@ -752,6 +763,11 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
   if constexpr (std::is_same_v<I, interval>)
     if (enclose_threads > 1) side.emplace();
   double h_last = 0, used_last = 0;  // the last whole step's length and share of the remainder's tolerance
+  // On the steps with the series split, near rest (see the step end): a step whose variational
+  // part spread more than allowed is taken again, shorter (h_retry), and the next steps grow no
+  // faster than the spread allows (h_spread_cap).
+  double h_retry = 0, h_spread_cap = std::numeric_limits<double>::infinity();
+  int spread_retries = 0;
   detail::linear_part_choice linear_part;  // a problem of run-time size: the variational part or the slopes
   const I zero_h = I(0);
   // Where the right-hand side is not smooth in t (a table's breakpoints: expr/expression.hpp):
@@ -818,6 +834,11 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // over 2.5 times the last step by the series to order 2, inflated by its own width (one
     // Jacobian a step).  A series over a box Bg does not hold takes the Jacobian over its own box.
     const bool split_series = try_variational;
+    auto jacobian_over = [&](const vector_t<I>& box) {  // the slopes about the box itself
+      std::vector<matrix_t<I>> D;
+      taylor_series_slopes(prob, box, box, 1, D, true, static_cast<series<I>*>(nullptr), 0, n);
+      return std::move(D[1]);
+    };
     vector_t<I> Bg;
     matrix_t<I> Ag;
     if constexpr (P::dim == runtime_slopes) {
@@ -830,9 +851,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
             const I moved = Xs(i) + reach * (c2[1](i) + reach * c2[2](i));
             Bg(i) = detail::inflate(detail::hull2(Xs(i), moved), 1.0, 1e-12 * std::max(1.0, std::fabs(approx_double(Xs(i)))));
           }
-          std::vector<matrix_t<I>> D;
-          taylor_series_slopes(prob, Bg, Bg, 1, D, true, static_cast<series<I>*>(nullptr), 0, n);
-          Ag = std::move(D[1]);
+          Ag = jacobian_over(Bg);
         } catch (const std::exception& e) {
           if (!motion_refusal(e)) throw;
           Bg.resize(0);  // each series the Jacobian over its own box
@@ -842,11 +861,7 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     auto series_over = [&](const vector_t<I>& box, int order) -> series<I> {
       if (split_series) {
         if (Bg.size() == n && detail::subset(box, Bg)) return taylor_series_split(prob, box, order, Ag);
-        if constexpr (P::dim == runtime_slopes) {
-          std::vector<matrix_t<I>> D;
-          taylor_series_slopes(prob, box, box, 1, D, true, static_cast<series<I>*>(nullptr), 0, n);
-          return taylor_series_split(prob, box, order, D[1]);
-        }
+        if constexpr (P::dim == runtime_slopes) return taylor_series_split(prob, box, order, jacobian_over(box));
       }
       return taylor_series(prob, box, order);
     };
@@ -869,6 +884,9 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // and give the steps a separate series at xh would).
     double hd = step_from_coefficients(cX, tol);
     if (h_last > 0) hd = std::min(hd, h_last * detail::step_growth(used_last, p));
+    if (split_series) hd = std::min(hd, h_spread_cap);
+    if (h_retry > 0) hd = std::min(hd, h_retry);
+    h_retry = 0;
     // Where the series ends (constant acceleration: the coefficients vanish past order 2) the
     // tolerance allows any step: no step grows a component more than 2^10 times its size, and
     // none is longer than the horizon (the sphere on a plane to t = 1e300 tried one step of
@@ -1023,12 +1041,9 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
             for (int i = 0; i < n; ++i) cpB(i) = appell::detail::intersect(cpB(i), tight(i));
         }
         ok = remainder_within();
-        over_share = ok ? 0 : largest_share();
-        if (ok) {
-          used = 0;
-          for (int i = 0; i < n; ++i)
-            used = std::max(used, remainder_width(i) / remainder_tol[static_cast<std::size_t>(i)]);
-        }
+        const double share = largest_share();
+        if (ok) used = share;
+        else over_share = share;
       }
       if (ok) {
         accepted = true;
@@ -1052,35 +1067,84 @@ enclose_stats enclose(const P& prob, const vector_t<I>& x0, const I& t_end, int 
     // detail::flow_jacobian; kept if it widens the image of X by no more than the slopes'
     // omitted terms may (slope_order's allowance), else the slopes below.
     bool variational = false;
+    double spread_share = 0;  // the variational part's spread over its allowance (split steps near rest)
+    bool near_rest = false;
     matrix_t<I> Jv;
     if (try_variational) {
       std::exception_ptr centre_error = centre->finish();
       if (accepted && !search_error && !centre_error) {
         try {
-          const int half = side ? n / 2 : n;
-          std::vector<matrix_t<I>> DA, DB;
-          std::optional<detail::side_job> part;
-          if (half < n)
-            part.emplace(&*side, [&] { taylor_series_slopes(prob, B, B, 1, DB, false, static_cast<series<I>*>(nullptr), half, n - half); });
-          taylor_series_slopes(prob, B, B, 1, DA, false, static_cast<series<I>*>(nullptr), 0, half);
-          if (part)
-            if (std::exception_ptr e = part->finish()) std::rethrow_exception(e);
-          matrix_t<I> A(n, n);
-          A.leftCols(half) = DA[1];
-          if (half < n) A.rightCols(n - half) = DB[1];
+          auto jacobian_over_box = [&](const vector_t<I>& box) {  // the columns in two parts, on two threads
+            const int half = side ? n / 2 : n;
+            std::vector<matrix_t<I>> DA, DB;
+            std::optional<detail::side_job> part;
+            if (half < n)
+              part.emplace(&*side, [&] { taylor_series_slopes(prob, box, box, 1, DB, false, static_cast<series<I>*>(nullptr), half, n - half); });
+            taylor_series_slopes(prob, box, box, 1, DA, false, static_cast<series<I>*>(nullptr), 0, half);
+            if (part)
+              if (std::exception_ptr e = part->finish()) std::rethrow_exception(e);
+            matrix_t<I> A(n, n);
+            A.leftCols(half) = DA[1];
+            if (half < n) A.rightCols(n - half) = DB[1];
+            return A;
+          };
           const double allowed = detail::slope_allowance(X, remainder_tol, slope_share);
           // With the series' linear part separated the steps are 3 to 4 times longer and the
-          // spread (of width(A) ~ h width(B) ~ h^2) exceeds that allowance, where the slopes over
-          // such a step are far wider (their Jacobian's entries 0.3 to 0.5 wide against 0.02 on
-          // the held humanoid): up to 1e-2 of the state's width is taken (docs/motion.md).
-          const double spread_allowed = split_series ? std::max(allowed, detail::split_spread_share * detail::max_width(X)) : allowed;
-          variational = detail::flow_jacobian(A, h, Jv) && detail::jacobian_spread(Jv, Xs, xh) <= spread_allowed;
+          // spread exceeds that allowance, where the slopes over such a step are far wider (their
+          // Jacobian's entries 0.3 to 0.5 wide against 0.02 on the held humanoid): near rest (B
+          // within split_near_rest times X's width) the step's share of the run's allowance is
+          // taken (detail::split_spread_run_share; docs/motion.md).  A robot arm that moves spans
+          // its motion with B, and the slopes serve it better: the allowance is theirs.
+          near_rest = split_series && detail::max_width(B) <= detail::split_near_rest * detail::max_width(X);
+          const double spread_allowed =
+              near_rest ? std::max(allowed, detail::split_spread_run_share * approx_double(h) / horizon * detail::max_width(X))
+                        : allowed;
+          // With the series split, B is far wider than X (the motion over the step: 1e3 times on the
+          // held humanoid), and so is the Jacobian over it: the flow's Jacobian is the product of
+          // the flow's over split_variational_pieces pieces, each from the Jacobian over the piece's
+          // box B_i (the series over X to p - 1 and x_p(B) over the piece's times, within B: the
+          // remainder's pieces above).  The states at the piece's start lie in B_i and stay there
+          // over the piece, so the flow from piece start to end lies in flow_jacobian(A(B_i), h / m);
+          // their product holds the whole step's (the chain rule along each motion).
+          const int m = split_series ? detail::split_variational_pieces : 1;
+          bool held = true;
+          for (int piece = 0; piece < m && held; ++piece) {
+            vector_t<I> Bi = B;
+            if (m > 1) {
+              const I tau_i = scalar_traits<I>::hull(h * I(piece) / I(m), h * I(piece + 1) / I(m));
+              const vector_t<I> base_i = horner(cX, tau_i, 0, p - 1);
+              const I taup_i = pown(tau_i, p);
+              for (int i = 0; i < n; ++i) Bi(i) = appell::detail::intersect(I(base_i(i) + cpB(i) * taup_i), B(i));
+            }
+            matrix_t<I> Ji;
+            held = detail::flow_jacobian(jacobian_over_box(Bi), m > 1 ? I(h / I(m)) : h, Ji);
+            if (held) Jv = piece == 0 ? std::move(Ji) : matrix_t<I>(appell::detail::product(Ji, Jv));
+          }
+          const double spread = held ? detail::jacobian_spread(Jv, Xs, xh) : std::numeric_limits<double>::quiet_NaN();
+          variational = held && spread <= spread_allowed;
+          if (held && near_rest) spread_share = spread / spread_allowed;
         } catch (const std::exception& e) {
           // the Jacobian over B not enclosed, or outside a domain: the slopes, which are over Xs
           if (!motion_refusal(e)) throw;
           variational = false;
         }
       }
+      // A step near rest whose spread is up to 4 times its allowance, its Jacobians held: the
+      // same step again, shorter (the spread grows about as h^3, the pieces' Jacobians each about
+      // h wide over boxes about h wide; its allowance as h), rather than the slopes, which over
+      // such a step are far wider and cost ten steps' time (the held humanoid's: 2e3 times wider
+      // in one).  Further over it, the slopes, as on any other step.
+      if (near_rest && !variational && spread_share > 1 && spread_share <= 4 && !centre_error && spread_retries < 8) {
+        ++spread_retries;
+        ++st.rejected;
+        h_retry = approx_double(h) * std::clamp(std::sqrt(0.7 / spread_share), 0.25, 0.8);
+        continue;
+      }
+      spread_retries = 0;
+      // and the next steps no longer than the spread allows (twice this one at most)
+      h_spread_cap = variational && near_rest && spread_share > 0
+                         ? approx_double(h) * std::clamp(std::sqrt(0.8 / spread_share), 0.5, 2.0)
+                         : std::numeric_limits<double>::infinity();
       linear_part.step_taken(true, variational);
       // A centre that failed as the motion may (a domain, a solve, an expression's branch point):
       // the slopes compute it again and say why; anything else is a bug and leaves the run.
